@@ -44,6 +44,7 @@ import xarray as xr
 
 from contact.utca.conjugate_map import flank_nodes
 from geometry.case import Case
+from geometry.core.caches import Carried, Same, memoised
 from geometry.core.conventions import assigned
 from geometry.core.errors import InputError, LTCAError, ModelUnavailableError
 from geometry.machine.flank import DEFAULT_GRID, flank_dataset
@@ -321,9 +322,14 @@ def _rating_of(state: ChainState, method: str):
     (:attr:`contact.load_capacity.RatingMethod.missing`: ISO 10300 without a ``[design]`` or
     ``[rating]`` table) or a run without a pinion speed gives None and the reason; a table
     that is there but wrong is refused (InputError)."""
+    return _rating_for(state.case, state.torque, state.flank, method, state.groups)
+
+
+def _rating_for(c: Case, torque, flank, method: str, groups):
+    """:func:`_rating_of` of the case ``c`` as run, the torques, flank and the analysis'
+    ``groups`` so far."""
     from contact.load_capacity.methods import METHODS, rate
 
-    c = state.case
     entry = METHODS.get(method)
     why = "" if entry is None or entry.missing is None else entry.missing(c)
     if why:
@@ -332,8 +338,34 @@ def _rating_of(state: ChainState, method: str):
     if not speed > 0.0:
         return None, (f"{method} rating not computed: no pinion speed (the case's "
                       "[operating] pinion_speed is 0; give --speed)")
-    return rate(c, state.torque, speed, method=method, flank=state.flank,
-                analysis=state.groups), ""
+    return rate(c, torque, speed, method=method, flank=flank, analysis=groups), ""
+
+
+def _nominal_rating_of(state: ChainState, method: str, entry):
+    """:func:`_rating_of` of a method that rates the nominal geometry from the case's
+    tables alone (:attr:`contact.load_capacity.RatingMethod.nominal`, before any work), the
+    same for the same case object, torques, pinion speed, flank and registered method: kept
+    per process (:func:`_memo_nominal_rating`; ISO 10300's ~6 ms of a warm analysis, issue
+    75) and handed out as a shallow copy (its own attributes and variables, the arrays
+    shared), which the step may annotate."""
+    c = state.case
+    key = (Same(c), tuple(float(t) for t in np.atleast_1d(state.torque)),
+           float(c.operating.pinion_speed), method, state.flank, Same(entry))
+    try:
+        hash(key)
+    except TypeError:  # (a flank or method name that is not a plain value: as before)
+        return _rating_of(state, method)
+    rating, why = _memo_nominal_rating(*key, Carried(state.torque))
+    return (None if rating is None else rating.copy(deep=False)), why
+
+
+@memoised(maxsize=16)
+def _memo_nominal_rating(case: Same, torque: tuple, speed: float, method: str, flank,
+                         entry: Same, given: Carried):
+    """(``/rating`` or None, why not) of :func:`_rating_for` before any work (no analysis
+    dataset), by the case object, torques (``given``: as the caller gave them), speed,
+    flank and method entry."""
+    return _rating_for(case.obj, given.value, flank, method, {})
 
 
 def _rating_step(method: str) -> Callable[[ChainState], None]:
@@ -378,7 +410,7 @@ def _rating_step(method: str) -> Callable[[ChainState], None]:
 
         entry = METHODS.get(method)
         if entry is not None and entry.nominal:
-            state.prepared["load_capacity"] = _rating_of(state, method)
+            state.prepared["load_capacity"] = _nominal_rating_of(state, method, entry)
 
     rating_step.__name__ = rating_step.__qualname__ = f"rating_{method}"
     rating_step.before_work = inputs  # type: ignore[attr-defined]

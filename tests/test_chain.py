@@ -230,3 +230,32 @@ def test_a_bad_rating_table_is_refused_before_the_ltca():
         run_analysis(bad, [TORQUE], options=SMALL, geometry=False, root_stress=False,
                      mesh_interface=False, steps={"ltca": lambda state: calls.append(state)})
     assert calls == []
+
+
+def test_a_repeated_analysis_rates_the_nominal_geometry_once():
+    """A method that rates the nominal geometry (ISO 10300) is rated once per case object
+    as run, torques, speed and flank (issue 75): the analysis of the same case object
+    repeated gets the same ``/rating``, value for value and attribute for attribute, as a
+    fresh process's (the memo emptied), and each tree its own attributes (annotating one
+    leaves the other and the kept rating alone); another torque is rated anew."""
+    from contact.catalogue import resolve_case
+    from geometry.core.caches import cache_sizes, clear_caches
+
+    case = resolve_case(None)
+
+    def run(torque=TORQUE):
+        return run_analysis(case, [torque], options=SMALL, geometry=False,
+                            root_stress=False, mesh_interface=False)
+
+    clear_caches()
+    fresh = run()["/rating"].to_dataset()
+    key = "contact.chain._memo_nominal_rating"
+    assert cache_sizes()[key] == 1
+    first = run()
+    first["/rating"].attrs["side"] = "changed"
+    second = run()["/rating"].to_dataset()
+    assert cache_sizes()[key] == 1
+    assert second.identical(fresh) and second.attrs["side"] != "changed"
+    other = run(1.2 * TORQUE)["/rating"].to_dataset()
+    assert cache_sizes()[key] == 2
+    assert not np.array_equal(other["pitting_safety"].values, fresh["pitting_safety"].values)

@@ -68,6 +68,36 @@ def test_dataset_is_xarrays_dataset(data, coords, attrs):
     _same(dataset(data, coords, attrs), xr.Dataset(data, coords=coords, attrs=attrs))
 
 
+def test_kept_index_is_xarrays_and_each_dataset_its_own():
+    """A coordinate's pandas index is kept per process by its values (issue 75): the
+    dataset made again of the same values is xarray's, the same index, name and dtype as
+    the first, and each holds a pandas index object of its own (renaming one dataset's
+    index leaves the other's and the kept one alone); other values, dtypes or names make
+    their own index, and clear_caches empties the memo."""
+    from geometry.core.caches import cache_sizes, clear_caches
+
+    clear_caches()
+    key = "geometry.core.conventions._memo_pandas_index"
+    first = dataset(DATA, COORDS)
+    kept = cache_sizes()[key]
+    assert kept >= 3  # torque, roll, member, pair (kind is of objects: not kept)
+    second = dataset(DATA, COORDS)
+    assert cache_sizes()[key] == kept
+    for ds in (first, second):
+        _same(ds, xr.Dataset(DATA, coords=COORDS))
+    for name in ("torque", "roll", "member", "pair"):
+        assert first.xindexes[name].index is not second.xindexes[name].index
+    first.xindexes["member"].index.name = "changed"
+    assert second.xindexes["member"].index.name == "member"
+    _same(dataset(DATA, COORDS), xr.Dataset(DATA, coords=COORDS))
+    other = dataset({}, {"torque": ("torque", np.array([50, 250]))})
+    assert other.xindexes["torque"].coord_dtype == np.dtype(int)
+    _same(other, xr.Dataset(coords={"torque": ("torque", np.array([50, 250]))}))
+    renamed = dataset({}, {"roll2": ("roll2", COORDS["roll"][1])})
+    assert renamed.xindexes["roll2"].index.name == "roll2"
+    assert key in clear_caches() and cache_sizes()[key] == 0
+
+
 def test_dataset_leaves_what_it_does_not_take_to_xarray():
     """A DataArray among the values, a data variable named as its dimension and sizes
     that disagree go to xarray: the same Dataset, or xarray's own error."""

@@ -248,3 +248,30 @@ def test_edge_contact_flags_the_clipped_pinion_tip_end():
             if idx.size and idx[-1] < valid.shape[2] - 1 and loaded[j, k, idx[-1]]:
                 clipped_tip += int(v[j, k, idx[-1]] < 0.6)
     assert clipped_tip > 0
+
+
+def test_segment_geometry_repeated_is_the_computed_one():
+    """The segment geometry with edge segments is kept per process by its inputs (issue
+    75): the same call again gives every field bit for bit as computed afresh (the memo
+    emptied), each call its own per-segment arrays; another edge limit is worked out
+    anew."""
+    from contact.ltca.segments import clear_segment_memo
+
+    case, eo = _case(), _easeoff()
+    m1, _ = transitions(eo)
+    roll = m1 + np.arange(8) * eo.pitch / 4  # two mesh cycles: rolls repeat
+    args = (case, eo, roll, (-1, 0, 1), 8, "cosine", (1.0, 0.5))
+    clear_segment_memo()
+    fresh = segment_geometry(*args, edge_limit=0.05)
+    again = segment_geometry(*args, edge_limit=0.05)
+    clear_segment_memo()
+    recomputed = segment_geometry(*args, edge_limit=0.05)
+    assert fresh.shape[2] > 8  # edge segments among them
+    for name in (*fresh.per_segment(), "kind", "ute", "pinion_rotation", "gear_rotation",
+                 "source"):
+        a, b, c = (getattr(s, name) for s in (fresh, again, recomputed))
+        assert a.tobytes() == b.tobytes() == c.tobytes(), name
+    assert fresh.edge_arm_max == again.edge_arm_max == recomputed.edge_arm_max
+    assert again.length is not fresh.length and again.length.flags.writeable
+    wider = segment_geometry(*args, edge_limit=0.5)
+    assert np.isfinite(wider.r_eq).sum() >= np.isfinite(fresh.r_eq).sum()

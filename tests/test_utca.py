@@ -450,3 +450,23 @@ def test_transitions_found_where_the_lowest_node_is_not_in_mesh():
     mid = 0.5 * (m1 + m2)
     u = pair_transmission_error(eo, np.array([mid, mid + p, mid - p]))
     assert np.all(~(u[1:] < u[0]))  # a neighbour out of mesh (NaN) is not lower
+
+
+def test_unloaded_tca_repeated_hands_out_its_own_datasets():
+    """The ``/easeoff`` and ``/utca`` datasets of the same case object and memoised
+    ease-off are assembled once per process (issue 75): the call repeated gives datasets
+    identical to those assembled afresh (the memos emptied), each call its own (a variable
+    or attribute added to one is not in the next)."""
+    from contact.utca.datasets import clear_cycle_memo
+
+    case = _crowned()
+    clear_cycle_memo()
+    eo_a, ut_a = unloaded_tca(case, rolls_per_cycle=8)
+    eo_a["added"] = eo_a["ease_off"] * 2.0
+    ut_a.attrs["added"] = 1
+    eo_b, ut_b = unloaded_tca(case, rolls_per_cycle=8)
+    assert "added" not in eo_b and "added" not in ut_b.attrs
+    clear_cycle_memo()
+    eo_c, ut_c = unloaded_tca(case, rolls_per_cycle=8)
+    assert eo_b.identical(eo_c) and ut_b.identical(ut_c)
+    assert eo_b is not eo_c and ut_b is not ut_c

@@ -153,8 +153,8 @@ def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], 
     # rolls whole mesh cycles apart have the same curves (their targets differ by
     # round-off): they are computed once, from the first such roll ("source")
     first = np.flatnonzero(source == np.arange(target.shape[0]))
-    geo = _segment_geometry(case, eo, target[first], rp[first], segments, spacing, edges,
-                            edge_limit)
+    geo = _kept_segment_geometry(case, eo, target[first], rp[first], segments, spacing,
+                                 edges, edge_limit)
     return geo.rolls(np.searchsorted(first, source), source)
 
 
@@ -266,10 +266,47 @@ def _memo_curve_part(eo: Same, teeth, case: Carried, shape: tuple[int, int], tar
     return part
 
 
+def _kept_segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray,
+                           segments: int, spacing: str, edges, edge_limit) -> Segments:
+    """:func:`_segment_geometry`, memoised per process (:func:`_memo_segment_geometry`) by
+    the ease-off object, the teeth, the targets and pinion rotations to the last bit, the
+    segment count, spacing, edge step and radii and the edge limit: an analysis repeated
+    at one misalignment and torque (whose edge limit is the same) works out its edge
+    segments once (~13 ms of a warm analysis, issue 75), as its curve segments
+    (:func:`_curve_part`). Its arrays read-only: :meth:`Segments.rolls` copies what the
+    analysis takes. Not memoised inside a development's trial (as :func:`_curve_part`)."""
+    if warm_seeds_active():
+        return _segment_geometry(case, eo, target, rp, segments, spacing, edges, edge_limit)
+    target = np.ascontiguousarray(target, dtype=float)
+    rp = np.ascontiguousarray(rp, dtype=float)
+    edge_key = None if edges is None else (
+        float(edges[0]), tuple(np.asarray(edges[1], dtype=float).ravel().tolist()))
+    return _memo_segment_geometry(
+        Same(eo), case.teeth_key(), Carried((case, target, rp, edges)), target.shape,
+        target.tobytes(), rp.tobytes(), int(segments), str(spacing), edge_key,
+        None if edge_limit is None else float(edge_limit))
+
+
+@memoised(maxsize=4)
+def _memo_segment_geometry(eo: Same, teeth, given: Carried, shape: tuple[int, int],
+                           target: bytes, rp: bytes, segments: int, spacing: str, edges,
+                           edge_limit: float | None) -> Segments:
+    """:func:`_segment_geometry` memoised (:func:`_kept_segment_geometry`), its arrays
+    read-only."""
+    case, t, r, e = given.value
+    geo = _segment_geometry(case, eo.obj, t.copy(), r.copy(), segments, spacing, e,
+                            edge_limit)
+    for a in (*geo.per_segment().values(), geo.kind, geo.ute, geo.pinion_rotation,
+              geo.gear_rotation, geo.source):
+        a.flags.writeable = False
+    return geo
+
+
 def clear_segment_memo() -> None:
     """Forget the curve segments memoised per process by :func:`segment_geometry` (frees
     memory; the next analysis computes them afresh)."""
     _memo_curve_part.cache_clear()
+    _memo_segment_geometry.cache_clear()
 
 
 def _curve_part_of(case, eo: EaseOff, target: np.ndarray, segments: int, spacing: str,

@@ -15,6 +15,8 @@ from typing import Any
 
 import numpy as np
 
+from geometry.core.caches import Carried, memoised
+
 __all__ = ["assigned", "binary_flag", "coords_along", "data_var", "dataset"]
 
 
@@ -139,7 +141,7 @@ def _direct_dataset(xr, data: Mapping, coords: Mapping, attrs: Mapping | None):
         if var.dims == (name,):
             # the index of the plain variable: the same pandas index (and dtype) as of its
             # index variable, whose own pandas index (~30 us) create_variables replaces
-            index = PandasIndex.from_variables({name: var}, options={})
+            index = _index_of(PandasIndex, name, var)
             made = index.create_variables({name: var})
             coord_vars.update(made)
             indexes.update(dict.fromkeys(made, index))
@@ -165,6 +167,43 @@ def _direct_dataset(xr, data: Mapping, coords: Mapping, attrs: Mapping | None):
                          indexes=indexes)
     except TypeError:  # another xarray's private signature: its public constructor
         return None
+
+
+#: the largest coordinate [bytes] whose pandas index :func:`_index_of` keeps
+_INDEX_KEPT_BYTES = 1 << 16
+
+
+def _index_of(pandas_index, name: str, var):
+    """``PandasIndex.from_variables({name: var}, options={})`` of a plain 1-D variable
+    along the dimension ``name``, its pandas index made once per process for the same
+    values.
+
+    An analysis makes ~60 index coordinates (torque, member, xyz, u, v, roll …) of ~20
+    distinct values, and pandas builds each index anew: 45 us a float one, 120 us a text
+    one (pandas' string array), ~6 ms of a warm analysis (issue 75). For a coordinate of
+    numbers or text (up to 64 kB) the index is kept by its name, dtype, shape and bytes
+    (:func:`_memo_pandas_index`), and each dataset gets a shallow copy of it (its own
+    ``pandas.Index`` object over the same immutable values, as ``from_variables`` makes
+    its own copy), ~5 us: the same index, name and dtype.
+    """
+    data = var._data
+    if type(data) is not np.ndarray or data.dtype.kind not in "biufU" \
+            or data.nbytes > _INDEX_KEPT_BYTES:
+        return pandas_index.from_variables({name: var}, options={})
+    held = _memo_pandas_index(name, data.dtype.str, data.shape, data.tobytes(),
+                              Carried(var))
+    return pandas_index(held.index.copy(), name, coord_dtype=held.coord_dtype,
+                        fastpath=True)
+
+
+@memoised(maxsize=256)
+def _memo_pandas_index(name: str, dtype: str, shape: tuple, values: bytes,
+                       var: Carried):
+    """The PandasIndex of ``var.value`` (its name, dtype, shape and bytes the key); the
+    caller copies its ``pandas.Index``, never hands this one out."""
+    from xarray.indexes import PandasIndex
+
+    return PandasIndex.from_variables({name: var.value}, options={})
 
 
 def assigned(ds, data: Mapping[str, Any], coords: Mapping[str, Any] | None = None):
@@ -233,7 +272,7 @@ def _direct_assigned(xr, ds, data: Mapping, coords: Mapping):
                 return None  # (a DataArray, or an index variable as a data variable)
             if group is coords:
                 if var.dims == (name,):
-                    index = PandasIndex.from_variables({name: var}, options={})
+                    index = _index_of(PandasIndex, name, var)
                     var = index.create_variables({name: var})[name]
                     indexes[name] = index
                 elif name in var.dims:
