@@ -589,3 +589,53 @@ def test_coast_flank_of_the_large_offset_pair_maps_onto_the_gear_flank():
     assert np.isfinite(eo.ease_off).sum() > 500
     assert 0.0 < np.nanmax(eo.ease_off) < 0.1
     assert np.nanmax(eo.roll_angle) > 2 * math.pi / 12
+
+
+def test_case_source_names_the_given_spiral_angle_and_diameter():
+    """The case's source names the basic data as given: ``design.beta_m`` is the gear's
+    β_m2 for Methods 2 and 3 and Method 2 is given d_m2 (the source said "beta_m1" and
+    "de2" for every method: "beta_m1 30 deg" for a Method 2 hypoid whose pinion has 57°;
+    issue 71, round 14). The pitch cone is the independent check of the label: β_m2 equals
+    the given angle, β_m1 does not."""
+    from geometry.synthesis.case_synthesis import _given_data, _spiral_angles
+
+    data = Path(__file__).parent / "data" / "designs"
+    m2 = load_basic(data / "fh_hypoid_10x37_m2.toml").blank()
+    assert m2.design.method == 2 and m2.design.dm2 is not None
+    assert math.degrees(m2.pitch.beta_m2) == pytest.approx(math.degrees(m2.design.beta_m))
+    assert abs(math.degrees(m2.pitch.beta_m1 - m2.design.beta_m)) > 5.0
+    text = _given_data(m2)
+    assert f"beta_m2 {math.degrees(m2.design.beta_m):.5g} deg" in text
+    assert f"dm2 {m2.design.dm2:.6g} mm" in text
+    assert "beta_m1" not in text and "de2" not in text
+    said = _spiral_angles(m2)
+    assert f"pinion beta_m1 {math.degrees(m2.pitch.beta_m1):.1f} deg" in said
+    assert "is the gear's beta_m2 for ISO 23509 Method 2" in said
+    m1 = load_basic(data.parent / "limits" / "hypoid_8x41_b22.toml").blank()
+    assert m1.design.method == 1
+    assert f"beta_m1 {math.degrees(m1.design.beta_m):.5g} deg" in _given_data(m1)
+    assert "is the pinion's beta_m1 for ISO 23509 Method 1" in _spiral_angles(m1)
+
+
+def test_a_contact_not_followed_names_the_flank_and_the_spiral_angles(monkeypatch):
+    """Where the contact cannot be followed from M at any of the rolls tried (a Method 2
+    hypoid 7x47 of a 45 mm typed with the pinion's 48° as the gear's beta_m: β_m1 62.1°;
+    issue 71, round 14), the error names the flank, the rolls tried and both members'
+    spiral angles, with the one the basic file gave; before, only "the contact near the
+    mean point could not be followed to roll 0.0561 rad (residual 0.0837)"."""
+    from geometry.synthesis import case_synthesis as cs
+
+    def stalls(*a, **k):
+        raise InputError("synthesis: the contact near the mean point could not be followed "
+                         "to roll 0.0561 rad (residual 0.0837)")
+
+    monkeypatch.setattr(cs, "tune_roll", stalls)
+    basic = load_basic(Path(__file__).parent / "data" / "limits" / "hypoid_8x41_b22.toml")
+    pc = basic.blank().pitch
+    with pytest.raises(InputError) as info:
+        synthesize(basic)
+    msg = str(info.value)
+    assert msg.startswith("synthesis: the contact near the mean point could not be followed")
+    assert "on the pinion concave flank, nor nearer M (+/-pitch/6, +/-pitch/8)" in msg
+    assert f"pinion beta_m1 {math.degrees(pc.beta_m1):.1f} deg" in msg
+    assert f"gear beta_m2 {math.degrees(pc.beta_m2):.1f} deg" in msg

@@ -771,7 +771,38 @@ def _unrelieved_flank(pair: _PairData, pf: str, fo: FlankOptions,
             continue
         return FlankSynthesis(pf, fo, a21, mp, ls, tuned, roll_fraction=fraction)
     assert first is not None
-    raise first
+    raise InputError(f"{first}, on the pinion {pf} flank, nor nearer M (+/-pitch/6, "
+                     f"+/-pitch/8); {_spiral_angles(pair.geom)}") from first
+
+
+def _spiral_angles(geom: BlankGeometry) -> str:
+    """The pitch cone's mean spiral angles of both members and which one the basic file's
+    ``design.beta_m`` gave (ISO 23509: the pinion's β_m1 for Method 1, the gear's β_m2 for
+    Methods 0, 2 and 3), for a message on a synthesis that failed (a Method 2 hypoid 7x47
+    of a 45 mm typed with the pinion's 48° as ``beta_m`` has β_m1 62.1°, and its contact
+    could not be followed from M; issue 71, docs/own_gear_set.md "Round 14")."""
+    d, pc = geom.design, geom.pitch
+    given = "pinion's beta_m1" if d.method == 1 else "gear's beta_m2"
+    return (f"this design's mean spiral angles: pinion beta_m1 "
+            f"{math.degrees(pc.beta_m1):.1f} deg, gear beta_m2 "
+            f"{math.degrees(pc.beta_m2):.1f} deg (design.beta_m "
+            f"{math.degrees(d.beta_m):.4g} deg is the {given} for ISO 23509 Method "
+            f"{d.method})")
+
+
+def _given_data(geom: BlankGeometry) -> str:
+    """The basic data of the case's source, each under its own name: the gear's outer
+    pitch diameter d_e2, or for Method 2 its mean d_m2 (which that method is given), and
+    the spiral angle ``design.beta_m`` as the pinion's β_m1 (Method 1) or the gear's β_m2
+    (Methods 0, 2, 3; ISO 23509 input data). The source said ``beta_m1`` for every method
+    (the gear's 34° of a Method 2 hypoid whose pinion has 48.2°; issue 71, round 14)."""
+    d = geom.design
+    dia = (f"dm2 {_fmt(d.dm2, 6)} mm" if d.de2 is None and d.dm2 is not None
+           else f"de2 {_fmt(geom.gear.de if d.de2 is None else d.de2, 6)} mm")
+    beta = "beta_m1" if d.method == 1 else "beta_m2"
+    return (f"z {d.z1}/{d.z2}, Sigma {_fmt(math.degrees(d.Sigma))} deg, a {_fmt(d.a)} mm, "
+            f"{dia}, b2 {_fmt(d.b2, 5)} mm, {beta} {_fmt(math.degrees(d.beta_m), 5)} deg, "
+            f"rc0 {_fmt(d.rc0, 5)} mm")
 
 
 def _generating_tools(pair: _PairData, pf: str, gblade: Blade, gp: FlankPoint,
@@ -1030,10 +1061,7 @@ def _source(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
              + basic.source.strip().rstrip(".") + "."]
     parts.append(
         f"Blank: ISO 23509:2016 Method {d.method} (geometry.iso23509.blank) from the basic data "
-        f"(z {d.z1}/{d.z2}, Sigma {_fmt(math.degrees(d.Sigma))} deg, a {_fmt(d.a)} mm, "
-        f"de2 {_fmt(geom.gear.de if d.de2 is None else d.de2, 6)} mm, b2 {_fmt(d.b2, 5)} mm, "
-        f"beta_m1 "
-        f"{_fmt(math.degrees(d.beta_m), 5)} deg, rc0 {_fmt(d.rc0, 5)} mm).")
+        f"({_given_data(geom)}).")
     if basic.targets:
         ach = ", ".join(
             f"{k} {_fmt(TARGETS[k][1](geom), 6)} (target {_fmt(v, 6)}, diff "
