@@ -182,6 +182,9 @@ def test_the_loaded_contact_ratio_is_the_mean_of_the_pairs_in_contact():
                     "carrying load, one pair alone over 75 % of the mesh cycle)")
     assert "eps_vb 1.14 (below 1.25)" in loaded_ratio_text(1.11, 1.14, [2, 3])
     assert loaded_ratio_text(math.nan, math.nan, [2, 2]).startswith("loaded contact ratio 2.00")
+    # never one pair alone: said so, not "one pair alone over 0 %" (round 14's 10x31)
+    assert loaded_ratio_text(math.nan, math.nan, [2, 3]).endswith(
+        "two pairs or more at every roll of the mesh cycle)")
 
 
 def test_an_lte_finding_names_the_contact_ratios_and_the_remedy():

@@ -175,3 +175,16 @@ def test_one_of():
         one_of("flank", "left", ("drive", "coast"))
     with pytest.raises(InputError, match=r"^flank: must be one of"):
         one_of("flank", ["unhashable"], {"drive", "coast"})
+
+
+def test_a_computed_value_out_of_range_is_said_short_but_never_inside():
+    """A computed float (round 14: the standard's eps_alpha 0.9881414345523601 in the
+    scuffing line) is said with the fewest digits that still read outside the range
+    ("0.9881" against >= 1); a value just past its bound keeps the digits that show it
+    (1.0000000123 against <= 1, not "1"); short values as typed."""
+    with pytest.raises(InputError, match=r"got 0\.9881$"):
+        real("eps_alpha", 0.9881414345523601, unit="1", low=1.0)
+    with pytest.raises(InputError, match=r"got 1\.0000000123$"):
+        real("x", np.float64(1.0000000123), high=1.0)
+    with pytest.raises(InputError, match=r"got 0\.0$"):
+        real("x", 0.0, low=0.0, low_open=True)

@@ -108,11 +108,27 @@ def real(name: str, value: Any, *, unit: str = "", low: float | None = None,
                          f"{_accepted(low, high, low_open, high_open, scale)}{_unit(unit)}, "
                          f"got {value!r}") from None
     if not _inside(v, low, high, low_open, high_open):
-        got = repr(value) if scale == 1.0 else f"{v / scale:g}"
+        got = (_shortest_outside(v, low, high, low_open, high_open)
+               if scale == 1.0 and isinstance(value, (float, np.floating)) else
+               repr(value) if scale == 1.0 else f"{v / scale:g}")
         raise InputError(f"{name}: must be "
                          f"{_accepted(low, high, low_open, high_open, scale)}{_unit(unit)}, "
                          f"got {got}")
     return v
+
+
+def _shortest_outside(v: float, low, high, low_open: bool, high_open: bool) -> str:
+    """``v`` as its repr where that is short, else with the fewest significant digits (4,
+    6, 8, 12, 17) that still read outside the accepted range: "got 0.9881", not "got
+    0.9881414345523601" (a computed value, round 14's flash-temperature note), never a
+    rounding that reads inside the range."""
+    if len(repr(v)) <= 10:  # as typed: "got 0.0", "got 1e+12"
+        return repr(v)
+    for digits in (4, 6, 8, 12):
+        text = f"{v:.{digits}g}"
+        if not _inside(float(text), low, high, low_open, high_open):
+            return text
+    return repr(v)
 
 
 def positive(name: str, value: Any, unit: str = "", *, high: float | None = None) -> float:

@@ -430,7 +430,8 @@ def loaded_ratio_text(eps_va: float, eps_vb: float, pairs) -> str:
     str
         E.g. "contact ratios eps_va 1.11, eps_vb 1.14 (below 1.25), total 2.25 (ISO
         10300-1); loaded contact ratio 2.15 (the mean of the tooth pairs carrying load,
-        one pair alone over 0 % of the mesh cycle)".
+        two pairs or more at every roll of the mesh cycle)"; where one pair carries the
+        load alone at some rolls, "one pair alone over 30 % of the mesh cycle".
 
     Notes
     -----
@@ -453,7 +454,9 @@ def loaded_ratio_text(eps_va: float, eps_vb: float, pairs) -> str:
         out.append(f"contact ratios eps_va {eps_va:.2f}{low_a}, eps_vb {eps_vb:.2f}{low_b}, "
                    f"total {eps_va + eps_vb:.2f} (ISO 10300-1)")
     if n.size:
+        alone = float(np.mean(n <= 1))
+        share = (f"one pair alone over {100 * alone:.0f} % of the mesh cycle" if alone > 0.0
+                 else "two pairs or more at every roll of the mesh cycle")
         out.append(f"loaded contact ratio {n.mean():.2f} (the mean of the tooth pairs "
-                   f"carrying load, one pair alone over {100 * np.mean(n <= 1):.0f} % of "
-                   "the mesh cycle)")
+                   f"carrying load, {share})")
     return "; ".join(out)
