@@ -139,3 +139,50 @@ def test_no_less_tolerant(after, kept):
     got = {"dP+0.05": excursion(edge, missed), "dE+0.05": excursion(0.01, {})}
     assert lte.no_less_tolerant(before, got) is kept
     assert lte.no_less_tolerant(before, {"dP+0.05": got["dP+0.05"]}) is False
+
+
+def _twenty_five_by_36(case, torques, misalignment=None, options=None, teeth=None,
+                       pinion_key=(), flank="drive"):
+    """The spiral bevel 25x36 at Σ 75° at 150.4 / 1003 N m (path −80°, root relief from
+    0.2): LTE p-p (light, design) [µrad] 21 / 61 at 60 µm and the ellipse 0.675, 21 / 58 at
+    50 µm and 0.7, both tolerant; 23 / 54 at 40 µm and 0.7, 0.2 % of the design torque
+    plastic at ΔP +0.05 mm (as measured at 45 µm); the pattern 0.575 long."""
+    lte_pp = {60.0: (20.9, 61.3), 50.0: (21.1, 58.2), 40.0: (22.6, 54.0)}[
+        round(case["root_relief"], 6)]
+    plastic = 0.0
+    if (misalignment is not None and misalignment.delta_P > 0.0
+            and case["root_relief"] < 45.0):
+        plastic = 0.002
+    return (_metrics(pattern_toe_u=[0.2, 0.0], pattern_heel_u=[0.775, 1.0],
+                     pattern_centre_u=[0.49, 0.47], edge_load_share=[0.0, 0.004],
+                     plastic_share=[0.0, plastic], lte_peak_to_peak=list(lte_pp)),
+            (0.0, 1.0, 0.0, 1.0, 2400.0))
+
+
+def test_the_root_relief_a_sixth_shallower_with_the_longer_ellipse(monkeypatch):
+    """The 25x36: 60 µm and the ellipse 0.675 (61 µrad at the design torque, tolerant):
+    50 µm with the ellipse 0.7 (58 µrad, tolerant) kept, then 40 µm (plastic at ΔP +0.05
+    mm) not; a design within 60 µrad, or whose light torque's LTE is the larger, gets
+    nothing analysed."""
+    seen = []
+
+    def counted(case, torques, misalignment=None, **kw):
+        seen.append((case["root_relief"], case["ellipse_length"], misalignment))
+        return _twenty_five_by_36(case, torques, misalignment, **kw)
+
+    values = {"path_angle": -80.0, "ellipse_length": 0.675, "root_relief": 60.0,
+              "relief_start": 0.2, "te_level": 45.0}
+    targets, setup, chosen = stand_in(monkeypatch, counted, [150.4, 1003.0])
+    start = dataclasses.replace(chosen(values), case=dict(values))
+    seen.clear()
+    lines = []
+    got = lte.checked_relief_ellipse_lte(start, targets, setup, None, lines.append,
+                                         lambda v: dict(v))
+    assert got.values == values | {"root_relief": 50.0, "ellipse_length": 0.7}
+    assert [(r, e) for r, e, m in seen if m is None] == [(50.0, 0.7), (40.0, 0.7)]
+    assert any("not kept: the shallower relief with the longer ellipse is less tolerant"
+               in s for s in lines)
+    seen.clear()
+    assert lte.checked_relief_ellipse_lte(got, targets, setup, None, lambda s: None,
+                                          lambda v: dict(v)) is got
+    assert seen == []
