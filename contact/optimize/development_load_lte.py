@@ -293,9 +293,11 @@ def checked_relief_ellipse_lte(best: DevelopmentEvaluation, targets: Development
     met (the pattern length included) and is no less tolerant than it
     (:func:`no_less_tolerant`; for a tolerant design: tolerant); at most two designs.
     ``lte_limit`` [µrad]: the verdict's ``lte`` limit (default
-    :data:`contact.study.verdicts.LTE_LIMIT`, 60 µrad). A design within it, or whose
-    light torque's LTE is the larger, or without a root relief, is returned as it is
-    without an analysis.
+    :data:`contact.study.verdicts.LTE_LIMIT`, 60 µrad). A design within it, whose light
+    torque's LTE is the larger, that misses another target at the check, or without a
+    root relief, is returned as it is without an analysis; one with plastic segments or
+    its pattern on toe or heel at a mounting excursion (:data:`ELASTIC_MISSES`) after its
+    excursions.
 
     Parameters and returns as :func:`checked_load_lte`.
 
@@ -319,7 +321,8 @@ def checked_relief_ellipse_lte(best: DevelopmentEvaluation, targets: Development
     limit = LTE_LIMIT if lte_limit is None else float(lte_limit)
     name = "root_relief"
     if (best.full is None or not best.checked or best.metrics is None or best.case is None
-            or name not in targets.variables or not float(best.values.get(name, 0.0)) > 0.0):
+            or name not in targets.variables or not float(best.values.get(name, 0.0)) > 0.0
+            or any(v > 0.0 for k, v in best.full[1].items() if k != "lte")):
         return best
     light, design = (float(x) for x in np.asarray(best.metrics["lte_peak_to_peak"])[[0, -1]])
     if not (design > limit and design > light):
@@ -332,6 +335,9 @@ def checked_relief_ellipse_lte(best: DevelopmentEvaluation, targets: Development
         longer = {"ellipse_length": round(float(np.clip(
             float(best.values["ellipse_length"]) + RELIEF_ELLIPSE_STEP, e_lo, e_hi)), 4)}
     own = tolerance_checks(best.case, targets, setup, teeth, best.values)
+    if {k for _, short in own.values() for k in TOLERANCE_KEYS
+            if short[k] > 0.0} - set(ELASTIC_MISSES):
+        return best
     start = best
     for fraction in RELIEF_ELLIPSE_FRACTIONS:
         values = dict(start.values) | longer | {name: float(np.clip(fraction * now, lo, hi))}
