@@ -312,7 +312,12 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     still misses a target (:func:`checked_te_back`); M placed again where those steps
     moved the centre u off its band (:func:`checked_centre_u`); where it still misses the
     development's own LTE target, a longer, flatter bearing with M placed again
-    (:func:`checked_overlap_lte`); last, where it misses its
+    (:func:`checked_overlap_lte`), and where the design is not tolerant itself, the path
+    turned towards the profile judged against its own tolerance
+    (:func:`contact.optimize.development_load_lte.checked_load_lte`), and where its
+    design torque's LTE still exceeds 60 µrad, a little less root relief with a longer
+    ellipse (:func:`contact.optimize.development_load_lte.checked_relief_ellipse_lte`);
+    last, where it misses its
     light-load
     centre v and nothing by more than a small margin, a small blade-angle step with the TE level
     lowered (:func:`checked_near_miss`; ``slopes``: the height stage's measured
@@ -343,6 +348,9 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     # 0.49 → 0.54 by the root relief 20 µm and the TE level raised back)
     best = checked_centre_u(best, targets, setup, teeth, say, placed)
     best = checked_overlap_lte(best, targets, setup, teeth, say, placed)
+    from contact.optimize import development_load_lte as load_lte  # imports this module
+    best = load_lte.checked_load_lte(best, targets, setup, teeth, say, placed)
+    best = load_lte.checked_relief_ellipse_lte(best, targets, setup, teeth, say, placed)
     return checked_near_miss(best, targets, setup, teeth, say, placed, level,
                              slope=(slopes or {}).get(bearing_key(best.values)))
 
