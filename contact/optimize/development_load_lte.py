@@ -18,7 +18,6 @@ the verdict's 60 µrad a little less root relief with a longer ellipse
 
 from __future__ import annotations
 
-import dataclasses
 import logging
 from collections.abc import Callable, Mapping
 from typing import Any
@@ -28,12 +27,13 @@ import numpy as np
 from contact.optimize.development_check import (
     ELLIPSE_STEP,
     PATH_STEPS,
-    checked_analysis,
     tolerance_checks,
 )
-from contact.optimize.development_evaluate import KeptTeeth, bearing_key, evaluation_line
+from contact.optimize.development_evaluate import KeptTeeth, evaluation_line
+from contact.optimize.development_keep import lost_targets
 from contact.optimize.development_result import TOLERANCE_KEYS, DevelopmentEvaluation
-from contact.optimize.development_targets import DevelopmentTargets, development_score
+from contact.optimize.development_targets import DevelopmentTargets
+from contact.optimize.development_variant import check_rank, checked_variant
 from geometry.case import Case
 
 log = logging.getLogger("contact.optimize.development")
@@ -115,17 +115,6 @@ def no_less_tolerant(before: Mapping[str, tuple[dict, dict[str, float]]],
                 <= float(ms_b["edge_load_share"][-1]) + slack):
             return False
     return True
-
-
-def _rank(e: DevelopmentEvaluation) -> tuple[bool, float]:
-    """A checked design's rank: every target met first, then the least objective (the
-    check's rank)."""
-    return (not e.full[2], e.full[0])
-
-
-def _lost(best: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:
-    """The targets ``best`` met and ``e`` misses, sorted."""
-    return sorted(k for k, v in e.full[1].items() if v > 0.0 and not best.full[1][k] > 0.0)
 
 
 def _tolerance_missed(tolerance: Mapping[str, tuple[dict, dict[str, float]]]) -> list[str]:
@@ -228,16 +217,9 @@ def _variant(best: DevelopmentEvaluation, values: dict[str, float],
              why: str) -> DevelopmentEvaluation | None:
     """``best`` with the prescriptions ``values`` placed and checked at ``ltca run``'s
     sampling (the check's memo), scored, one line said; None where it failed (logged)."""
-    try:
-        case, ms, grid = checked_analysis(setup, placed, values, teeth, bearing_key(values))
-    except Exception as exc:  # reported, never fatal: the design kept stands
-        log.info("development load lte check of %s failed: %s", dict(values), exc)
+    e = checked_variant(best, values, "load lte", targets, setup, teeth, placed)
+    if e is None:
         return None
-    full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
-                             pressure_limit=grid[4])
-    e = dataclasses.replace(best, values=values, metrics=ms, objective=full[0],
-                            shortfalls=full[1], met=full[2], full=full, case=case,
-                            checked=True, stage="load lte")
     changed = ", ".join(f"{k} {float(v):.3g}" for k, v in values.items()
                         if float(v) != float(best.values.get(k, np.nan)))
     say(f"  design {best.index + 1} with {changed} {why}, at the default sampling: "
@@ -252,9 +234,9 @@ def _kept(best: DevelopmentEvaluation, e: DevelopmentEvaluation | None,
     """The mounting excursions of ``e`` where it replaces ``best`` (ranks better, misses no
     target ``best`` met, no less tolerant than ``best``'s excursions ``own``), else
     None (the reason said)."""
-    if e is None or not _rank(e) < _rank(best):
+    if e is None or not check_rank(e) < check_rank(best):
         return None
-    if lost := _lost(best, e):
+    if lost := lost_targets(best, e):
         say(f"  not kept: {what} misses {', '.join(lost)}")
         return None
     theirs = tolerance_checks(e.case, targets, setup, teeth, e.values)
