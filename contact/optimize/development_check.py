@@ -301,7 +301,10 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     blade-angle change, the height by the root relief instead (:func:`_checked_blade`);
     then, where its light-load pattern is above its depth centre's tolerance, a shorter tip relief
     (:func:`_checked_tip`) and, where that did not centre it, the root relief with a
-    longer ellipse (:func:`_checked_root`); last, where the LTE is still missed, the
+    longer ellipse (:func:`_checked_root`); where it is still high with plastic segments
+    and not tolerant itself, both reliefs with the bearing turned, judged against its own
+    tolerance (:func:`contact.optimize.development_height_relief.checked_height_relief`);
+    last, where the LTE is still missed, the
     ellipse a step longer (:func:`checked_ellipse`), then the long bearing
     (:func:`checked_long`), on a pair of profile contact ratio below 1 the long bearing
     on a path at its profile bound (:func:`contact.optimize.development_profile_ratio.
@@ -337,6 +340,8 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     best = _checked_blade(best, targets, setup, teeth, say, placed)
     best = _checked_tip(best, targets, setup, teeth, say, placed)
     best = _checked_root(best, targets, setup, teeth, say, placed)
+    from contact.optimize.development_height_relief import checked_height_relief
+    best = checked_height_relief(best, targets, setup, teeth, say, placed)
     best = checked_ellipse(best, targets, setup, teeth, say, placed)
     best = checked_long(best, targets, setup, teeth, say, placed)
     best = checked_profile_ratio(best, targets, setup, teeth, say, placed)
