@@ -204,6 +204,54 @@ def test_the_coast_flank_is_developed_again_only_where_its_torque_fell_far(monke
     assert again(142.6, outcome=better_first) is None and calls == []
 
 
+def test_the_coast_flank_is_developed_again_where_the_drive_cut_its_torque(monkeypatch):
+    """The drive's root-stress or pitting capacity cuts the design torque after the coast
+    flank is developed; the coast capacity check then starts at the cut torque and holds
+    there (not lowered), yet the coast flank was developed at a torque 1.57 × it (the
+    face-hobbed hypoid 13x29 by Method 2: developed at 436.6 N m, written at 277.6 N m,
+    LTE p-p 50 / 64.5 µrad where the long bearing of a design of its own search gave
+    27 / 40). It is developed again there as where its own capacity lowered it: below
+    0.9 of the torque it was developed at, whatever lowered it; kept only where better."""
+    from contact.optimize import development as dev
+    from contact.optimize.development_coast import CoastCapacity
+    from contact.optimize.development_result import DevelopmentEvaluation
+    from contact.optimize.development_targets import DevelopmentTargets
+
+    assert dcoast.redeveloped_at(277.6, 436.6) and not dcoast.redeveloped_at(400.0, 436.6)
+    assert not dcoast.redeveloped_at(math.nan, 436.6)
+    assert not dcoast.redeveloped_at(277.6, math.nan)
+
+    def ev(objective: float) -> DevelopmentEvaluation:
+        return DevelopmentEvaluation(0, {}, {}, objective, {}, False, "", 0.0,
+                                     full=(objective, {}, False), checked=True)
+
+    calls, found = [], [0.0]
+
+    def search(pre, drive, targets, setup, *args):
+        calls.append(tuple(setup["torques"]))
+        return dcoast._CoastOutcome("again", ev(found[0]), [], "developed", None)
+
+    monkeypatch.setattr("contact.optimize.development_coast_flank.coast_development", search)
+    basic = load_basic(DESIGNS / "hypoid_12x41_s85.toml")
+    first = dcoast._CoastOutcome("first", ev(11.7), [], "developed", None)
+    setup = {"torques": [41.6, 277.6]}
+    held = CoastCapacity(277.6, 277.6, (), "", True)  # not lowered: the drive's cut
+    assert not held.lowered
+    for objective, kept in ((5.5, "again"), (12.0, None)):
+        calls.clear()
+        found[0] = objective
+        got = dev.coast_at_its_torque(basic, ev(0.0), DevelopmentTargets(), setup, None, {},
+                                      lambda line: None, None, first, held, 436.6)
+        assert calls == [(41.6, 277.6)]
+        assert (got.basic if got is not None else None) == kept
+    # at the torque it was developed at (no cut, not lowered): no search
+    calls.clear()
+    same = CoastCapacity(436.6, 436.6, (), "", True)
+    assert dev.coast_at_its_torque(basic, ev(0.0), DevelopmentTargets(), setup, None, {},
+                                   lambda line: None, None, first, same, 436.6) is None
+    assert calls == []
+
+
 def test_the_coast_flank_developed_again_must_carry_its_torque(monkeypatch):
     """The coast flank developed again at its lowered design torque is scored with its
     flank peak pressure bounded by what that torque allows: p · S_H,loc / S_Hmin of the

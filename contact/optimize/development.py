@@ -490,7 +490,10 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                                                  not (given or given_coast), say)
             coast_cap = first if second is None else CoastCapacity(
                 second.torque, first.start, first.checks + second.checks,
-                f"{first.reason}; the coast flank developed again at {first.torque:.4g} N m"
+                (f"{first.reason}; the coast flank developed again at {first.torque:.4g} N m"
+                 if first.reason else f"the coast flank developed again at its design "
+                 f"torque {first.torque:.4g} N m (developed at "
+                 f"{coast_setup['torques'][1]:.4g} N m before the design torque was cut)")
                 + (f", then {second.reason}" if second.lowered else ", where it holds"),
                 second.holds)
         else:

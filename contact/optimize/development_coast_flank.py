@@ -344,15 +344,38 @@ def pitting_pressure(cap: CoastCapacity) -> float:
     return p * s / s_min
 
 
+def redeveloped_at(torque: float, developed_at: float) -> bool:
+    """Whether the coast flank is developed again at its design torque ``torque`` [N·m]
+    (:func:`coast_at_its_torque`): where it is below :data:`COAST_REDEVELOP` ×
+    ``developed_at`` [N·m], the torque the coast flank was developed at, whatever lowered
+    it — the coast flank's own capacity (:func:`coast_flank_capacity`) or the drive's
+    root-stress or pitting capacity, which cuts the design torque after the coast flank
+    is developed (the coast design torque is no higher than the drive's).
+
+    Why the drive's cut too: the coast search scores its designs at the torques it runs
+    at, and a bearing whose relief keeps its edges elastic there is not the best at a
+    torque 0.6 of it. The face-hobbed hypoid 13x29 by Method 2 (benchmarks/data/
+    unseen_designs; issue 71): its coast flank developed at 68.3 / 436.6 N m and written
+    at 41.6 / 277.6 N m (the drive's root-stress capacity) had LTE p-p 50 / 64.5 µrad,
+    objective 11.7 there; the long bearing of a design of its own search (ellipse 0.75,
+    root relief 37.5 µm from 0.5, no crowning) 27 / 40 µrad, objective 5.5 at 277.6 N m,
+    but 31.5 against 25.8 at 436.6 N m, where the search had ranked it
+    (``benchmarks/development_levers.py --flank coast --from-case --check``,
+    2026-11-27)."""
+    return (math.isfinite(torque) and math.isfinite(developed_at)
+            and torque < COAST_REDEVELOP * developed_at)
+
+
 def coast_at_its_torque(pre_coast: BasicDesign, drive: DevelopmentEvaluation,
                         targets: DevelopmentTargets, setup: dict[str, Any],
                         teeth: KeptTeeth, memo: dict, say: Callable[[str], None],
                         make: Callable[[BasicDesign], Case], coast: _CoastOutcome,
                         cap: CoastCapacity | None, developed_at: float
                         ) -> _CoastOutcome | None:
-    """The coast flank developed again where its design torque was lowered well below the
-    torque it was developed at (below :data:`COAST_REDEVELOP` × ``developed_at``: its own
-    static, plastic, root-stress or local pitting capacity, :func:`coast_flank_capacity`), now at
+    """The coast flank developed again where its design torque is well below the
+    torque it was developed at (below :data:`COAST_REDEVELOP` × ``developed_at``,
+    :func:`redeveloped_at`: its own static, plastic, root-stress or local pitting
+    capacity, :func:`coast_flank_capacity`, or the drive's capacity cut), now at
     the torques ``ltca run --flank coast`` analyses (the case's light torque and the new
     coast design torque): :func:`coast_development` from the coast flank as synthesised
     (``pre_coast`` with the drive flank of ``drive``, and the basic file's coast
@@ -366,8 +389,7 @@ def coast_at_its_torque(pre_coast: BasicDesign, drive: DevelopmentEvaluation,
     costs LTE at the torque it can (issue 71, the e-axle 11×39 at Σ 80°: developed at
     292.9 N·m with 30 µm tip relief and a −0.3° blade-angle change, its coast LTE p-p was
     72 µrad at its root-stress capacity 143.8 N·m)."""
-    if (cap is None or not cap.lowered or coast.best is None
-            or cap.torque >= COAST_REDEVELOP * developed_at
+    if (cap is None or coast.best is None or not redeveloped_at(cap.torque, developed_at)
             or targets.coast_max_evaluations == 0):
         return None
     if coast.best.full is not None and coast.best.full[2]:
