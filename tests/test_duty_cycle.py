@@ -331,3 +331,17 @@ def test_edge_note_counts_the_bins_the_verdict_counts():
                                     "in 1 of 5 bins (up to 0.02 %")
     ds["edge_load_share"][:] = 0.0
     assert edge_note(ds) is None
+
+
+def test_a_local_cluster_is_announced_before_the_first_bin():
+    """Round 14: `ltca duty-cycle` printed nothing for 53 s between its spectrum line and
+    its first bin while the local cluster started; it now says where the bins run, on how
+    many processes, for a local cluster only (an address or 'synchronous': no line)."""
+    from contact.commands.duty_cycle import where_line
+
+    line = where_line(None, 2, 7)
+    assert line.startswith("running the 7 bins on a local Dask cluster of 2 worker processes")
+    assert "before the first bin" in line
+    assert "1 worker process " in where_line(None, 1, 3)
+    assert where_line("synchronous", None, 7) is None
+    assert where_line("tcp://host:8786", 4, 7) is None
