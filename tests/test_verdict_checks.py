@@ -199,3 +199,26 @@ def test_a_rating_made_outside_the_chain_is_said_so_not_blamed_on_its_method():
     v = verdict(_tree({"/ltca": _ltca([50.0], [[1.0, 1.0]]), "/rating": rt,
                        "/friction": xr.Dataset()}))
     assert dict(v.unchecked)["scuffing_standard"].endswith("gives no virtual gears for it")
+
+
+def test_a_variant_with_the_standards_numbers_is_not_printed_twice():
+    """Round 14: a spiral bevel (no offset) printed the lengthwise-sliding variant of the
+    standard's flash temperature method with the standard's numbers, line for line; the
+    second line now says so, a hypoid's different numbers are printed."""
+    import xarray as xr
+
+    from contact.commands.run import _standard_lines
+
+    def iso(second):
+        values = {"contact_temperature_max": [180.0, second],
+                  "flash_temperature_max": [80.0, second - 100.0],
+                  "mean_friction_coefficient": [0.05, 0.05],
+                  "scuffing_safety": [1.5, 1.5 if second == 180.0 else 1.2]}
+        return xr.Dataset({k: ("variant", v) for k, v in values.items()},
+                          coords={"variant": ["standard", "lengthwise_sliding"]})
+
+    same = _standard_lines(iso(180.0))
+    assert same[0].endswith("180 degC (flash 80 K, mu_m 0.050), S_B 1.50")
+    assert same[1].endswith("(not a standard): the same numbers as the line above")
+    other = _standard_lines(iso(210.0))
+    assert other[1].endswith("210 degC (flash 110 K, mu_m 0.050), S_B 1.20")

@@ -752,7 +752,7 @@ def _standard_lines(iso) -> list[str]:
         return [f"  the standard's flash temperature method on the virtual cylindrical gears: "
                 f"{float(iso['contact_temperature_max']):.0f} degC, S_B "
                 f"{_number(float(iso['scuffing_safety']))}"]
-    out = []
+    out, said = [], []
     for v in iso["variant"].values:
         one = iso.sel(variant=v)
         spread = ""
@@ -760,11 +760,15 @@ def _standard_lines(iso) -> list[str]:
             spread = (f" ({_number(float(one['scuffing_safety_low']))}-"
                       f"{_number(float(one['scuffing_safety_high']))} over the uncertain "
                       "constants)")
-        out.append(f"  {STANDARD_VARIANT_LABELS.get(str(v), str(v))}: "
-                   f"{float(one['contact_temperature_max']):.0f} degC (flash "
+        numbers = (f"{float(one['contact_temperature_max']):.0f} degC (flash "
                    f"{float(one['flash_temperature_max']):.0f} K, mu_m "
                    f"{float(one['mean_friction_coefficient']):.3f}), S_B "
                    f"{_number(float(one['scuffing_safety']))}{spread}")
+        # a pair without offset (a spiral bevel): the variant's numbers are the line
+        # above's; said once (round 14: the same numbers printed twice)
+        out.append(f"  {STANDARD_VARIANT_LABELS.get(str(v), str(v))}: "
+                   + ("the same numbers as the line above" if numbers in said else numbers))
+        said.append(numbers)
     return out
 
 
