@@ -28,12 +28,11 @@ from typing import Any
 import numpy as np
 
 from contact.optimize.development_check import TIP_FRACTIONS, tolerance_checks
-from contact.optimize.development_evaluate import KeptTeeth, evaluation_line
-from contact.optimize.development_keep import lost_targets
-from contact.optimize.development_load_lte import load_lte_designs, no_less_tolerant
+from contact.optimize.development_evaluate import KeptTeeth
+from contact.optimize.development_load_lte import load_lte_designs, replacement
 from contact.optimize.development_result import TOLERANCE_KEYS, DevelopmentEvaluation
 from contact.optimize.development_targets import DevelopmentTargets
-from contact.optimize.development_variant import check_rank, checked_variant
+from contact.optimize.development_variant import changed_values, pattern_length, said_variant
 from geometry.case import Case
 
 log = logging.getLogger("contact.optimize.development")
@@ -162,19 +161,14 @@ def checked_height_relief(best: DevelopmentEvaluation, targets: DevelopmentTarge
     own = tolerance_checks(best.case, targets, setup, teeth, best.values)
     if not any(short[k] > 0.0 for _, short in own.values() for k in TOLERANCE_KEYS):
         return best
-    length = float(best.metrics["pattern_heel_u"][0] - best.metrics["pattern_toe_u"][0])
     start = best
-    for group in height_relief_designs(best.values, length, targets):
+    for group in height_relief_designs(best.values, pattern_length(best), targets):
         for values in group:
-            e = checked_variant(start, values, "height relief", targets, setup, teeth,
-                                placed)
+            e = said_variant(start, values, "height relief",
+                             f"with {changed_values(values, start.values)} (its pattern "
+                             "high, plastic)", targets, setup, teeth, say, placed)
             if e is None:
                 continue
-            changed = ", ".join(f"{k} {float(v):.3g}" for k, v in values.items()
-                                if float(v) != float(start.values.get(k, np.nan)))
-            say(f"  design {start.index + 1} with {changed} (its pattern high, plastic), "
-                "at the default sampling: "
-                + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1])
             why, theirs = _refused(best, e, own, targets, setup, teeth)
             if why:
                 say(f"  not kept: both reliefs {why}")
@@ -192,15 +186,15 @@ def _refused(best: DevelopmentEvaluation, e: DevelopmentEvaluation,
              setup: Mapping[str, Any], teeth: KeptTeeth | None
              ) -> tuple[str, Mapping[str, tuple[dict, dict[str, float]]] | None]:
     """Why ``e`` does not replace ``best`` (whose excursions are ``own``), empty where it
-    does (then with ``e``'s excursions): it ranks no better, misses a target ``best``
-    met, or is less tolerant."""
-    if not check_rank(e) < check_rank(best):
+    does (then with ``e``'s excursions): :func:`~contact.optimize.development_load_lte.
+    replacement`'s reason in this step's words."""
+    why, found = replacement(best, e, own, targets, setup, teeth)
+    if why == "rank":
         return "score no better", None
-    if lost := lost_targets(best, e):
-        return f"miss {', '.join(lost)}", None
-    theirs = tolerance_checks(e.case, targets, setup, teeth, e.values)
-    if not no_less_tolerant(own, theirs):
-        missed = sorted({k for _, s in theirs.values() for k in TOLERANCE_KEYS
+    if why == "lost":
+        return f"miss {', '.join(found)}", None
+    if why == "tolerance":
+        missed = sorted({k for _, s in found.values() for k in TOLERANCE_KEYS
                          if s[k] > 0.0})
         return f"are less tolerant (they miss {', '.join(missed)})", None
-    return "", theirs
+    return "", found

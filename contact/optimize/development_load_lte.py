@@ -29,11 +29,16 @@ from contact.optimize.development_check import (
     PATH_STEPS,
     tolerance_checks,
 )
-from contact.optimize.development_evaluate import KeptTeeth, evaluation_line
+from contact.optimize.development_evaluate import KeptTeeth
 from contact.optimize.development_keep import lost_targets
 from contact.optimize.development_result import TOLERANCE_KEYS, DevelopmentEvaluation
 from contact.optimize.development_targets import DevelopmentTargets
-from contact.optimize.development_variant import check_rank, checked_variant
+from contact.optimize.development_variant import (
+    changed_values,
+    check_rank,
+    pattern_length,
+    said_variant,
+)
 from geometry.case import Case
 
 log = logging.getLogger("contact.optimize.development")
@@ -189,10 +194,11 @@ def checked_load_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     missed = {k for _, short in own.values() for k in TOLERANCE_KEYS if short[k] > 0.0}
     if not missed or missed - set(ELASTIC_MISSES):
         return best
-    length = _length(best)
+    length = pattern_length(best)
     for values in load_lte_designs(best.values, length, targets):
-        e = _variant(best, values, targets, setup, teeth, say, placed,
-                     "(its LTE missed, not tolerant)")
+        e = said_variant(best, values, "load lte",
+                         f"with {changed_values(values, best.values)} (its LTE missed, "
+                         "not tolerant)", targets, setup, teeth, say, placed)
         if e is not None and not (float(e.metrics["pressure_max_flank"][-1])
                                   <= float(best.metrics["pressure_max_flank"][-1])):
             say("  not kept: the bearing nearer the profile raises the flank peak at the "
@@ -206,45 +212,60 @@ def checked_load_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     return best
 
 
-def _length(e: DevelopmentEvaluation) -> float:
-    """[1 of the face] A checked design's light-load pattern length."""
-    return float(e.metrics["pattern_heel_u"][0] - e.metrics["pattern_toe_u"][0])
+def replacement(best: DevelopmentEvaluation, e: DevelopmentEvaluation,
+                own: Mapping[str, tuple[dict, dict[str, float]]], targets: DevelopmentTargets,
+                setup: Mapping[str, Any], teeth: KeptTeeth | None
+                ) -> tuple[str, Any]:
+    """Whether the checked variant ``e`` replaces the design ``best`` that is not tolerant
+    itself (its mounting excursions ``own``): it ranks better
+    (:func:`~contact.optimize.development_variant.check_rank`), misses no target ``best``
+    met (:func:`~contact.optimize.development_keep.lost_targets`) and is no less tolerant
+    (:func:`no_less_tolerant` of its own excursions,
+    :func:`~contact.optimize.development_tolerance.tolerance_checks`).
 
+    Parameters
+    ----------
+    best, e : DevelopmentEvaluation
+        The design kept and its variant, both checked and scored.
+    own : mapping
+        ``best``'s excursions (:func:`tolerance_checks`: label → (metrics, shortfalls)).
+    targets, setup, teeth
+        The development's (as :func:`checked_load_lte`'s).
 
-def _variant(best: DevelopmentEvaluation, values: dict[str, float],
-             targets: DevelopmentTargets, setup: Mapping[str, Any], teeth: KeptTeeth | None,
-             say: Callable[[str], None], placed: Callable[[Mapping[str, float]], Case],
-             why: str) -> DevelopmentEvaluation | None:
-    """``best`` with the prescriptions ``values`` placed and checked at ``ltca run``'s
-    sampling (the check's memo), scored, one line said; None where it failed (logged)."""
-    e = checked_variant(best, values, "load lte", targets, setup, teeth, placed)
-    if e is None:
-        return None
-    changed = ", ".join(f"{k} {float(v):.3g}" for k, v in values.items()
-                        if float(v) != float(best.values.get(k, np.nan)))
-    say(f"  design {best.index + 1} with {changed} {why}, at the default sampling: "
-        + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1])
-    return e
+    Returns
+    -------
+    (str, object)
+        ``("", e's excursions)`` where ``e`` replaces ``best``; else ``("rank", None)``,
+        ``("lost", the targets lost)`` or ``("tolerance", e's excursions)``.
+
+    Notes
+    -----
+    Source: the issue-71 development's keep rule for a design not tolerant itself
+    (docs/synthesis.md, "The design torque's LTE where the design is not tolerant").
+    """
+    if not check_rank(e) < check_rank(best):
+        return "rank", None
+    if lost := lost_targets(best, e):
+        return "lost", lost
+    theirs = tolerance_checks(e.case, targets, setup, teeth, e.values)
+    return ("" if no_less_tolerant(own, theirs) else "tolerance"), theirs
 
 
 def _kept(best: DevelopmentEvaluation, e: DevelopmentEvaluation | None,
           own: Mapping[str, tuple[dict, dict[str, float]]], targets: DevelopmentTargets,
           setup: Mapping[str, Any], teeth: KeptTeeth | None, say: Callable[[str], None],
           what: str) -> dict | None:
-    """The mounting excursions of ``e`` where it replaces ``best`` (ranks better, misses no
-    target ``best`` met, no less tolerant than ``best``'s excursions ``own``), else
-    None (the reason said)."""
-    if e is None or not check_rank(e) < check_rank(best):
+    """The mounting excursions of ``e`` where it replaces ``best`` (:func:`replacement`),
+    else None (the reason said)."""
+    if e is None:
         return None
-    if lost := lost_targets(best, e):
-        say(f"  not kept: {what} misses {', '.join(lost)}")
-        return None
-    theirs = tolerance_checks(e.case, targets, setup, teeth, e.values)
-    if not no_less_tolerant(own, theirs):
+    why, found = replacement(best, e, own, targets, setup, teeth)
+    if why == "lost":
+        say(f"  not kept: {what} misses {', '.join(found)}")
+    elif why == "tolerance":
         say(f"  not kept: {what} is less tolerant "
-            f"(it misses {', '.join(_tolerance_missed(theirs))})")
-        return None
-    return theirs
+            f"(it misses {', '.join(_tolerance_missed(found))})")
+    return None if why else found
 
 
 #: the root relief of :func:`checked_relief_ellipse_lte`'s designs, as fractions of the
@@ -325,8 +346,10 @@ def checked_relief_ellipse_lte(best: DevelopmentEvaluation, targets: Development
         values = dict(start.values) | longer | {name: float(np.clip(fraction * now, lo, hi))}
         if values == best.values:
             continue
-        e = _variant(best, values, targets, setup, teeth, say, placed,
-                     f"(its LTE above {limit:g} urad at the design torque)")
+        e = said_variant(best, values, "load lte",
+                         f"with {changed_values(values, best.values)} (its LTE above "
+                         f"{limit:g} urad at the design torque)", targets, setup, teeth, say,
+                         placed)
         kept = _kept(best, e, own, targets, setup, teeth, say,
                      "the shallower relief with the longer ellipse")
         if kept is not None:

@@ -28,6 +28,7 @@ from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_stages import footprint_centre_v
 from contact.optimize.development_targets import HEIGHT_NAME, TE_NAME, DevelopmentTargets
 from contact.optimize.development_tolerance import LENGTH_PER_ELLIPSE, SHORTER_ELLIPSE_STEP
+from contact.optimize.development_variant import pattern_length
 from contact.optimize.development_variant import said_variant as _said_variant
 from geometry.case import Case
 
@@ -55,11 +56,6 @@ LENGTH_AIM_MARGIN = 0.0125
 #: :data:`NEAR_MISS` of its unit (5 µrad): measured 2.3-2.4 µrad less LTE at both torques
 #: for ``te_level`` 25 → 15 on the 7x39 (:func:`checked_length`)
 LENGTH_TE_STEP = 10.0
-
-
-def _pattern_length(e: DevelopmentEvaluation) -> float:
-    """[1 of the face] A checked design's light-load pattern length."""
-    return float(e.metrics["pattern_heel_u"][0] - e.metrics["pattern_toe_u"][0])
 
 
 def length_aim(length: float, targets: DevelopmentTargets) -> float:
@@ -113,7 +109,7 @@ def checked_length(best: DevelopmentEvaluation, targets: DevelopmentTargets,
             or name not in targets.variables or name not in best.values):
         return best
     lo, hi = (float(x) for x in targets.variables[name])
-    x0, length0 = float(best.values[name]), _pattern_length(best)
+    x0, length0 = float(best.values[name]), pattern_length(best)
     band_hi = targets.pattern_length + targets.pattern_length_tolerance
     too_long = length0 > band_hi
     aim = length_aim(length0, targets)
@@ -139,7 +135,7 @@ def checked_length(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                           targets, setup, teeth, say, placed)
         if e is None:
             break
-        length = _pattern_length(e)
+        length = pattern_length(e)
         if e.full[1]["length"] > 0.0 and (length > band_hi) == too_long:
             far.append((x, length))
             continue

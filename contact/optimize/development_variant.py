@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import dataclasses
 import logging
+import math
 from collections.abc import Callable, Mapping
 from typing import Any
 
@@ -88,6 +89,49 @@ def check_rank(e: DevelopmentEvaluation) -> tuple[bool, float]:
     Source: the issue-71 development's check (docs/synthesis.md, "Development bearing").
     """
     return (not e.full[2], e.full[0])
+
+
+def pattern_length(e: DevelopmentEvaluation) -> float:
+    """A checked design's light-load pattern length [1 of the face].
+
+    Parameters
+    ----------
+    e : DevelopmentEvaluation
+        A design with ``metrics`` (``pattern_toe_u``, ``pattern_heel_u`` [1], light torque
+        first).
+
+    Returns
+    -------
+    float
+        ``pattern_heel_u - pattern_toe_u`` at the light torque [1].
+
+    Notes
+    -----
+    Source: the issue-71 development's pattern targets (docs/synthesis.md, "Development
+    bearing").
+    """
+    return float(e.metrics["pattern_heel_u"][0] - e.metrics["pattern_toe_u"][0])
+
+
+def changed_values(values: Mapping[str, float], base: Mapping[str, float]) -> str:
+    """The prescriptions of ``values`` that differ from ``base``'s, as said in a check
+    step's line ("path_angle -75, ellipse_length 0.35").
+
+    Parameters
+    ----------
+    values, base : mapping str → float
+        The variant's and the design's prescriptions [file units].
+
+    Returns
+    -------
+    str
+
+    Notes
+    -----
+    Source: the issue-71 development's check lines (docs/synthesis.md).
+    """
+    return ", ".join(f"{k} {float(v):.3g}" for k, v in values.items()
+                     if float(v) != float(base.get(k, math.nan)))
 
 
 def checked_variant(base: DevelopmentEvaluation, values: Mapping[str, float], stage: str,
