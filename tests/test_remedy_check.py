@@ -171,6 +171,27 @@ def test_the_lte_diagnosis_names_the_unloaded_te_where_it_sets_the_lte():
     assert "only higher contact ratios are left" in reach_text(dev, 60.0, (45.0, 80.0))
 
 
+def test_the_remedies_are_synthesised_with_the_written_cases_gear_process():
+    """_prescribed: the development's basic data (its prescriptions) where there is one, the
+    file's own without; a gear process left to "auto" set to the written case's, so a
+    remedy's synthesis makes the gear the written case has (a low-ratio face-milled pair's
+    "auto" tries the Formate gear first); a process the file names kept."""
+    import dataclasses
+
+    from contact.commands.synthesize import _prescribed
+
+    basic = load_basic(EIGHT)
+    case = types.SimpleNamespace(gear=types.SimpleNamespace(process="Generate"))
+    assert basic.options.gear_process == "auto"
+    got = _prescribed(basic, case, None)
+    assert got.options.gear_process == "Generate" and got.design == basic.design
+    developed = dataclasses.replace(basic, name="developed")
+    assert _prescribed(basic, case, types.SimpleNamespace(basic=developed)).name == "developed"
+    named = dataclasses.replace(basic, options=dataclasses.replace(basic.options,
+                                                                   gear_process="Formate"))
+    assert _prescribed(named, case, None).options.gear_process == "Formate"
+
+
 #: the drive (concave) and coast prescriptions the development of the 8x35 at Σ 85° wrote
 #: (`ltca synthesize benchmarks/data/unseen_designs/fh_hypoid_8x35_s85_m3_z011.toml`,
 #: 2026-11-27, the case's [development] table; rounded to 4 digits)

@@ -344,8 +344,8 @@ def _lte_notes(basic, case, development, ratios) -> None:
         from contact.load_capacity.iso10300.face_contact import low_ratio_text
 
         written = _written_ute(case, development, ratios)
-        judge = (_remedy_judge(basic if development is None else development.basic,
-                               written) if ratios[0] < PROFILE_CONTACT_RATIO_NOTE else None)
+        judge = (_remedy_judge(_prescribed(basic, case, development), written)
+                 if ratios[0] < PROFILE_CONTACT_RATIO_NOTE else None)
         said = low_ratio_text(basic.design, FACE_CONTACT_RATIO_NOTE,
                               PROFILE_CONTACT_RATIO_NOTE, judge=judge)
         print("note: " + (said if said is not None else
@@ -389,6 +389,21 @@ def _written_ute(case, development, ratios) -> tuple[float, float] | None:
                                          exc)
         return None
     return ute, span
+
+
+def _prescribed(basic, case, development):
+    """The basic data at the written case's prescriptions: the development's ``basic``
+    (both flanks as written), the file's own without a development; its gear process the
+    written case's where the file leaves it to ``"auto"`` (the remedies' syntheses then
+    make the gear the written case has, not the first process that succeeds)."""
+    import dataclasses
+
+    prescribed = basic if development is None else development.basic
+    process = getattr(case.gear, "process", None)
+    if prescribed.options.gear_process == "auto" and process in ("Formate", "Generate"):
+        prescribed = dataclasses.replace(prescribed, options=dataclasses.replace(
+            prescribed.options, gear_process=process))
+    return prescribed
 
 
 def _remedy_judge(prescribed, written):
