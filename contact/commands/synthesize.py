@@ -169,7 +169,7 @@ def _contact_ratios(case) -> tuple[float, float] | None:
     return float(ds["eps_va"]), float(ds["eps_vb"])
 
 
-def low_overlap_lte(development) -> str:
+def low_overlap_lte(development, written_ute: tuple[float, float] | None = None) -> str:
     """What the development's bearing did for the LTE of a design whose face contact ratio
     is below :data:`FACE_CONTACT_RATIO_NOTE`, in numbers (``ltca synthesize``'s note): the
     LTE p-p of the written drive flank and, where checked, coast flank at their light and
@@ -179,6 +179,9 @@ def low_overlap_lte(development) -> str:
     Parameters
     ----------
     development : contact.optimize.development.DevelopmentResult
+    written_ute : (float, float), optional
+        The written drive flank's unloaded TE p-p [µrad] and ease-off span [µm]
+        (:func:`contact.optimize.remedy_check.unloaded_te_pp`), for :func:`reach_text`.
 
     Returns
     -------
@@ -209,10 +212,11 @@ def low_overlap_lte(development) -> str:
     return (f"the developed bearing's LTE p-p: {', '.join(parts)} (light/design), the "
             f"development's target {target:g} urad " + said
             + (f", above the verdict's {LTE_LIMIT:g} urad" if worst > LTE_LIMIT else "")
-            + reach_text(development, LTE_LIMIT))
+            + reach_text(development, LTE_LIMIT, written_ute))
 
 
-def reach_text(development, limit: float) -> str:
+def reach_text(development, limit: float,
+               written_ute: tuple[float, float] | None = None) -> str:
     """What the development's drive designs reached where the written drive flank's LTE
     p-p exceeds ``limit`` [µrad] (the verdict's): the least LTE p-p its check's last LTE
     step saw (``development.lte_reach``,
@@ -228,6 +232,13 @@ def reach_text(development, limit: float) -> str:
     ----------
     development : contact.optimize.development.DevelopmentResult
     limit : float — [µrad]
+    written_ute : (float, float), optional
+        The written drive flank's unloaded TE p-p [µrad] and ease-off span [µm]; where
+        that unloaded TE is what the LTE is
+        (:func:`contact.optimize.remedy_check.ute_sets_lte`), the statement says so
+        instead of naming the contact ratios (the 8x35 at Sigma 85 deg and k_d 2.16 of
+        benchmarks/data/unseen_designs: unloaded TE p-p 609 urad, LTE 605/600 urad).
+        Also said where the step did not run.
 
     Returns
     -------
@@ -240,14 +251,26 @@ def reach_text(development, limit: float) -> str:
         19x23 at beta_m 46 deg of benchmarks/data/unseen_designs;
         the change is no promise of 60 urad: its k_d 2.06, eps_va 1.00, gave 75/107 urad).
     """
+    from contact.optimize.remedy_check import ute_lte_text, ute_sets_lte
+
     reach = getattr(development, "lte_reach", None)
     lte = development.best.metrics["lte_peak_to_peak"]
-    if not reach or not max(float(lte[0]), float(lte[-1])) > limit:
+    if not max(float(lte[0]), float(lte[-1])) > limit:
+        return ""
+    said = ""
+    if reach:
+        why = f", not written: {reach['why']}" if reach.get("why") else ""
+        said = (f"; the development's least drive LTE p-p {reach['light']:.0f}/"
+                f"{reach['design']:.0f} urad ({reach['what']}{why})")
+    if written_ute is not None and ute_sets_lte(written_ute[0], lte, limit):
+        values = getattr(development.best, "values", None) or {}
+        written = ", ".join(f"{k} {float(values[k]):.3g}" for k in
+                            ("path_angle", "ellipse_length", "te_level") if k in values)
+        return said + "; " + ute_lte_text(written_ute[0], written_ute[1], lte, limit,
+                                          written)
+    if not reach:
         return ""
     least = max(reach["light"], reach["design"])
-    why = f", not written: {reach['why']}" if reach.get("why") else ""
-    said = (f"; the development's least drive LTE p-p {reach['light']:.0f}/"
-            f"{reach['design']:.0f} urad ({reach['what']}{why})")
     tried = " and ".join(reach.get("tried", ()))
     tried = (f"{tried} tried" if tried else "no flatter profile or deeper TE parabola "
              "left to try")
@@ -315,24 +338,89 @@ def _lte_notes(basic, case, development, ratios) -> None:
                                  or ratios[0] < PROFILE_CONTACT_RATIO_NOTE):
         # the cause and the remedy in numbers: the face width and the spiral angle that
         # reach the least face contact ratio, the depth factor and the pressure angle that
-        # reach the least profile contact ratio (contact.load_capacity.iso10300.face_contact)
+        # reach the least profile contact ratio (contact.load_capacity.iso10300.face_contact),
+        # the latter each checked by a synthesis before it is offered; the written case's
+        # unloaded TE, where it is what the LTE is, named instead of the contact ratios
         from contact.load_capacity.iso10300.face_contact import low_ratio_text
 
+        written = _written_ute(case, development, ratios)
+        judge = (_remedy_judge(_prescribed(basic, case, development), written)
+                 if ratios[0] < PROFILE_CONTACT_RATIO_NOTE else None)
         said = low_ratio_text(basic.design, FACE_CONTACT_RATIO_NOTE,
-                              PROFILE_CONTACT_RATIO_NOTE)
+                              PROFILE_CONTACT_RATIO_NOTE, judge=judge)
         print("note: " + (said if said is not None else
                           f"contact ratios eps_va {ratios[0]:.2f}, eps_vb {ratios[1]:.2f}: "
                           f"below {PROFILE_CONTACT_RATIO_NOTE:g} / {FACE_CONTACT_RATIO_NOTE:g}"
                           ", the least bevel-gear design practice asks for (AGMA 2005-D03); "
                           "a wider face (b2) or a larger spiral angle (beta_m) raises eps_vb, "
                           "a deeper tooth (k_d) or a smaller pressure angle (alpha_dD) eps_va")
-              + (f"; {low_overlap_lte(development)}" if development is not None else ""))
+              + (f"; {low_overlap_lte(development, written)}" if development is not None
+                 else ""))
     if misjudged is not None:
         print("note: " + misjudged)
     if far is None and development is not None:
         said = _deflection_note(case, development)
         if said is not None:
             print("note: " + said)
+
+
+def _written_ute(case, development, ratios) -> tuple[float, float] | None:
+    """The written drive flank's unloaded TE p-p [µrad] and ease-off span [µm]
+    (:func:`contact.optimize.remedy_check.unloaded_te_pp`, < 1 s: the ease-off is the one
+    the conjugacy check made), where the note needs it: a profile contact ratio below
+    :data:`PROFILE_CONTACT_RATIO_NOTE` (the remedies' reference) or a drive LTE above the
+    verdict's limit (its diagnosis); None otherwise or where it cannot be measured (said in
+    the log)."""
+    from contact.study.verdicts import LTE_LIMIT
+    from geometry.core.errors import InputError, ModelUnavailableError
+
+    high = (development is not None
+            and float(max(development.best.metrics["lte_peak_to_peak"])) > LTE_LIMIT)
+    if not (high or ratios[0] < PROFILE_CONTACT_RATIO_NOTE):
+        return None
+    from contact.optimize.remedy_check import unloaded_te_pp
+
+    try:
+        ute, span, _ = unloaded_te_pp(case)
+    except (InputError, ModelUnavailableError, ValueError) as exc:
+        import logging
+
+        logging.getLogger(__name__).info("the written case's unloaded TE not measured: %s",
+                                         exc)
+        return None
+    return ute, span
+
+
+def _prescribed(basic, case, development):
+    """The basic data at the written case's prescriptions: the development's ``basic``
+    (both flanks as written), the file's own without a development; its gear process the
+    written case's where the file leaves it to ``"auto"`` (the remedies' syntheses then
+    make the gear the written case has, not the first process that succeeds)."""
+    import dataclasses
+
+    prescribed = basic if development is None else development.basic
+    process = getattr(case.gear, "process", None)
+    if prescribed.options.gear_process == "auto" and process in ("Formate", "Generate"):
+        prescribed = dataclasses.replace(prescribed, options=dataclasses.replace(
+            prescribed.options, gear_process=process))
+    return prescribed
+
+
+def _remedy_judge(prescribed, written):
+    """The check of each profile-ratio remedy before the note offers it
+    (:func:`contact.optimize.remedy_check.checked_remedy_text`): a synthesis of the changed
+    basic data at ``prescribed``'s prescriptions (the written case's) each, measured
+    against the written case's unloaded TE p-p (``written``: (µrad, µm) or None)."""
+    from contact.optimize.remedy_check import check_change, checked_remedy_text
+    from contact.study.verdicts import LTE_LIMIT
+
+    reference = written[0] if written is not None else math.nan
+
+    def judge(changes, target, none):
+        checks = [check_change(prescribed, c) for c in changes]
+        return checked_remedy_text(checks, target, none, reference, LTE_LIMIT)
+
+    return judge
 
 
 def _deflection_note(case, development) -> str | None:

@@ -31,6 +31,7 @@ Public functions
 overlap_remedy     ε_vβ of a design and the b2, β_m that reach the target
 overlap_text       that as a sentence, or None where ε_vβ meets the target
 profile_remedy     ε_vα of a design and the k_d, α_dD that reach the target
+profile_changes    those as basic-file changes (RatioChange), as the note prints them
 low_ratio_text     the sentence of every contact ratio below its limit, or None
 loaded_ratio_text  the contact ratios and the loaded contact ratio of an analysis
 """
@@ -42,8 +43,9 @@ import math
 from dataclasses import dataclass
 
 __all__ = ["FACE_CONTACT_RATIO_MIN", "FACE_WIDTH_LIMIT", "PROFILE_CONTACT_RATIO_MIN",
-           "OverlapRemedy", "ProfileRemedy", "loaded_ratio_text", "low_ratio_text",
-           "overlap_remedy", "overlap_text", "profile_remedy"]
+           "OverlapRemedy", "ProfileRemedy", "RatioChange", "loaded_ratio_text",
+           "low_ratio_text", "overlap_remedy", "overlap_text", "profile_changes",
+           "profile_remedy"]
 
 #: the least face contact ratio ε_vβ bevel-gear design practice asks for (AGMA 2005-D03,
 #: face contact ratio m_F); below it ``ltca synthesize`` adds a note and the LTE-spread
@@ -357,19 +359,69 @@ def _either(ways: list[str], target: float, none: str) -> str:
             + f" reaches {target:g}")
 
 
-def _profile_text(r: ProfileRemedy) -> str:
-    """The remedy sentence of a low ε_vα (:func:`low_ratio_text`)."""
+@dataclass(frozen=True)
+class RatioChange:
+    """One basic-file change that raises a contact ratio to its target (a remedy the
+    note offers), as the basic file gives it and as the design data takes it.
+
+    Attributes
+    ----------
+    field : str
+        The ``[design]`` field changed (``"k_d"``, ``"alpha_dD"``).
+    value : float — [file unit: 1, deg]
+        Its new value as the basic file gives it (rounded as the note prints it).
+    design : dict of str to float
+        The same change as :class:`~geometry.iso23509.design_data.BevelGearDesign`
+        fields take it (angles [rad]), for ``dataclasses.replace``.
+    text : str
+        The phrase the note prints, e.g. "a depth factor k_d of 2.16, above the usual 2
+        (now 2)".
+    """
+
+    field: str
+    value: float
+    design: dict
+    text: str
+
+
+def profile_changes(r: ProfileRemedy) -> list[RatioChange]:
+    """The basic-file changes of a :class:`ProfileRemedy` that reach its target, as the
+    note prints them: the depth factor rounded up to 0.01, the drive pressure angle down to
+    0.1° (each then reaches the target).
+
+    Parameters
+    ----------
+    r : ProfileRemedy
+
+    Returns
+    -------
+    list of RatioChange
+        The depth factor's change first, then the pressure angle's; a change that no
+        value within the tried range makes is left out (empty where neither).
+    """
     ways = []
     if math.isfinite(r.k_d_needed):
+        k_d = math.ceil(r.k_d_needed * 100) / 100
         over = (f", above the usual {DEPTH_FACTOR_USUAL:g}"
                 if r.k_d_needed > DEPTH_FACTOR_USUAL + 1e-9 else "")
-        ways.append(f"a depth factor k_d of {math.ceil(r.k_d_needed * 100) / 100:.2f}"
-                    f"{over} (now {r.k_d:g})")
+        ways.append(RatioChange("k_d", k_d, {"k_d": k_d},
+                                f"a depth factor k_d of {k_d:.2f}{over} (now {r.k_d:g})"))
     if math.isfinite(r.alpha_d_needed):
-        ways.append(f"a drive pressure angle alpha_dD of "
-                    f"{math.floor(r.alpha_d_needed * 10) / 10:.1f} deg (now {r.alpha_d:g})")
-    remedy = _either(ways, r.target, f"no depth factor up to {_DEPTH_FACTOR_MAX:g} nor "
-                     f"pressure angle down to {_PRESSURE_ANGLE_MIN:g} deg")
+        alpha = math.floor(r.alpha_d_needed * 10) / 10
+        ways.append(RatioChange("alpha_dD", alpha, {"alpha_dD": math.radians(alpha)},
+                                f"a drive pressure angle alpha_dD of {alpha:.1f} deg (now "
+                                f"{r.alpha_d:g})"))
+    return ways
+
+
+def _profile_text(r: ProfileRemedy, judge=None) -> str:
+    """The remedy sentence of a low ε_vα (:func:`low_ratio_text`); ``judge``, where given,
+    says the remedies (:func:`low_ratio_text`)."""
+    none = (f"no depth factor up to {_DEPTH_FACTOR_MAX:g} nor pressure angle down to "
+            f"{_PRESSURE_ANGLE_MIN:g} deg")
+    changes = profile_changes(r)
+    remedy = (judge(changes, r.target, none) if judge is not None and changes
+              else _either([c.text for c in changes], r.target, none))
     return (f"profile contact ratio eps_va {_below(r.eps_va, r.target)} is below "
             f"{r.target:g}: the "
             "transverse section has, once per pitch, no pair in mesh and the load passes "
@@ -378,7 +430,8 @@ def _profile_text(r: ProfileRemedy) -> str:
 
 
 def low_ratio_text(design, face_target: float = FACE_CONTACT_RATIO_MIN,
-                   profile_target: float = PROFILE_CONTACT_RATIO_MIN) -> str | None:
+                   profile_target: float = PROFILE_CONTACT_RATIO_MIN,
+                   judge=None) -> str | None:
     """The cause and the remedy, in basic-file fields, of every contact ratio of a design
     below its limit: the face contact ratio (:func:`overlap_text`) and the profile contact
     ratio (:func:`profile_remedy`: the depth factor ``k_d``, the pressure angle
@@ -389,6 +442,12 @@ def low_ratio_text(design, face_target: float = FACE_CONTACT_RATIO_MIN,
     design : geometry.iso23509.design_data.BevelGearDesign
     face_target, profile_target : float — [1]
         Defaults :data:`FACE_CONTACT_RATIO_MIN`, :data:`PROFILE_CONTACT_RATIO_MIN`.
+    judge : callable, optional
+        ``judge(changes, target, none) -> str``: the end of the profile remedy's sentence
+        from its :class:`RatioChange` list (:func:`profile_changes`), the target and the
+        phrase for none, where each change is checked before it is offered (``ltca
+        synthesize``: :func:`contact.optimize.remedy_check.checked_remedy_text`); by
+        default the changes are offered as equals ("… or …, the other kept, reaches 1").
 
     Returns
     -------
@@ -408,7 +467,7 @@ def low_ratio_text(design, face_target: float = FACE_CONTACT_RATIO_MIN,
     except (InputError, ValueError, ZeroDivisionError, AttributeError):
         r = None
     if r is not None and r.eps_va < r.target:
-        parts.append(_profile_text(r))
+        parts.append(_profile_text(r, judge))
     return "; and the ".join(parts) if parts else None
 
 

@@ -1,0 +1,342 @@
+"""Whether a contact-ratio remedy ``ltca synthesize`` prints keeps the pair near conjugate,
+and whether the unloaded TE of a written case, not its contact ratios, sets its LTE
+(issue 71, round 15: "the printed remedy is not honest").
+
+The note on a profile contact ratio ε_vα below 1 offers basic-file changes that each reach
+it on the ISO 10300 virtual gears (:func:`contact.load_capacity.iso10300.face_contact.
+profile_remedy`: a deeper tooth k_d, a smaller drive pressure angle α_dD). The virtual gears
+do not see what the change does to the synthesis. On the face-hobbed hypoid 8×35 at Σ 85°
+of benchmarks/data/unseen_designs (ε_vα 0.94; docs/own_gear_set.md, "Round 15") both
+reach ε_vα 1.00, but at k_d 2.16 the generated pinion departs from the gear's conjugate
+(the written case's unloaded TE p-p 609 µrad, its ease-off 859 µm; 137 µrad and 86 µm at
+k_d 2.0; ``ltca run`` FAIL on an LTE of 600 µrad, the design torque cut to 14 %) while
+α_dD 18.6° meets every criterion (unloaded TE p-p 28 µrad, ease-off 60 µm, drive LTE
+11/15 µrad).
+
+:func:`check_change` measures each change the cheapest way that tells them apart: one
+synthesis of the changed basic data at the prescriptions of the written case (no tip-plane
+placement, no development, no LTCA), its drive flank's ease-off (seed §4.2) and unloaded TE
+over a mesh cycle (seed §2.3.2.2). :func:`refusal` refuses a change whose synthesis fails,
+whose flanks are far from conjugate
+(:data:`~contact.optimize.development_conjugacy.VALID_NODE_FRACTION_MIN`) or whose unloaded
+TE p-p exceeds both the verdict's LTE limit and :data:`UTE_GROWTH_MAX` times the written
+case's: a change of the blank that should only lengthen the path of contact has then
+moved the synthesis' TE itself, which sets the LTE at light load.
+:func:`checked_remedy_text` offers the changes that pass, the lowest unloaded TE first,
+and says why each refused one is refused, with its numbers.
+
+:func:`unloaded_te_pp` and :func:`ute_sets_lte` tell, for the LTE diagnosis, where the
+written case's own unloaded TE is what its LTE is: its p-p above the verdict's limit and
+kept by the load at the light torque (:data:`UTE_KEPT_SHARE`).
+
+Public names
+------------
+UTE_GROWTH_MAX, UTE_KEPT_SHARE, ChangeCheck, check_change, unloaded_te_pp, refusal,
+ranked_changes, checked_remedy_text, ute_sets_lte, ute_lte_text
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import logging
+import math
+import time
+from collections.abc import Sequence
+from typing import Any, NamedTuple
+
+import numpy as np
+
+from contact.optimize.development_conjugacy import VALID_NODE_FRACTION_MIN
+
+__all__ = ["UTE_GROWTH_MAX", "UTE_KEPT_SHARE", "ChangeCheck", "check_change",
+           "checked_remedy_text", "ranked_changes", "refusal", "unloaded_te_pp",
+           "ute_lte_text", "ute_sets_lte"]
+
+log = logging.getLogger(__name__)
+
+#: the largest ratio [1] of a remedy's unloaded TE p-p to the written case's that the
+#: remedy is taken to leave the synthesis as it was (a change of the blank alone, at the
+#: same prescriptions, moves the TE parabola the modified roll sets by little; the 8×35 at
+#: Σ 85°: see docs/synthesis.md, "Contact-ratio remedies checked before they are offered")
+UTE_GROWTH_MAX = 2.0
+
+#: the least share [1] of its unloaded TE p-p that the LTE p-p at the light torque keeps
+#: where the unloaded TE is what the LTE is (the 8×35 at k_d 2.16: 605 of 609 µrad, 0.99;
+#: where the load spreads over more pairs, the light torque's LTE falls well below it)
+UTE_KEPT_SHARE = 0.5
+
+
+class ChangeCheck(NamedTuple):
+    """One remedy as measured by :func:`check_change`."""
+
+    change: Any  # contact.load_capacity.iso10300.face_contact.RatioChange
+    ute: float  # [µrad] unloaded TE p-p of the drive flank (NaN: not measured)
+    span: float  # [µm] the drive flank's ease-off over its valid nodes (NaN: not measured)
+    valid: float  # [1] share of valid ease-off nodes (0: not measured)
+    failed: str  # why the synthesis or its measure failed; "" where it did not
+    seconds: float  # [s] the check's CPU
+
+
+def unloaded_te_pp(case, flank: str = "drive") -> tuple[float, float, float]:
+    """A case's unloaded TE p-p over one mesh cycle and its ease-off's extent.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    flank : str
+        ``"drive"`` (default) or ``"coast"``.
+
+    Returns
+    -------
+    (ute, span, valid) : (float, float, float)
+        The unloaded TE peak-to-peak [µrad] (the ``/utca`` dataset's
+        ``peak_to_peak_transmission_error``), the ease-off's largest value over its valid
+        nodes [µm] and the share of valid nodes [1], at the case's own misalignment.
+
+    Raises
+    ------
+    InputError
+        No pair in contact over the cycle, or too few valid ease-off nodes (the ease-off's
+        message).
+    ModelUnavailableError
+        A roll-angle surface that cannot be contoured.
+
+    Notes
+    -----
+    Seed §4.2 (ease-off, :func:`contact.utca.easeoff.ease_off`, memoised per case) and
+    §2.3.2.2 (the lower envelope of the pairs' unloaded TE,
+    :func:`contact.utca.datasets.unloaded_cycle`, 30 rolls).
+    """
+    from contact.utca.datasets import unloaded_cycle
+    from contact.utca.easeoff import ease_off
+
+    eo = ease_off(case, flank=flank)
+    cycle = unloaded_cycle(eo)
+    valid = eo.valid
+    span = 1e3 * float(np.max(eo.ease_off[valid])) if valid.any() else math.nan
+    return (1e6 * float(cycle.te_range[1] - cycle.te_range[0]), span,
+            float(np.count_nonzero(valid)) / valid.size)
+
+
+def check_change(basic, change) -> ChangeCheck:
+    """One basic-file change synthesised and measured (:func:`unloaded_te_pp`).
+
+    Parameters
+    ----------
+    basic : geometry.synthesis.basic_design.BasicDesign
+        The basic data at the written case's prescriptions (the development's
+        ``basic``; the file's own without a development).
+    change : contact.load_capacity.iso10300.face_contact.RatioChange
+        The change of ``basic.design`` (its ``design`` fields).
+
+    Returns
+    -------
+    ChangeCheck
+        Its drive flank's unloaded TE p-p [µrad], ease-off span [µm] and share of valid
+        nodes; ``failed`` the message where the synthesis or the measure has no solution;
+        the CPU it took [s] (one synthesis without tip-plane placement: 5-15 s on the
+        2-core machine, docs/synthesis.md).
+
+    Notes
+    -----
+    :func:`geometry.synthesis.case_synthesis.synthesize` with ``tip_planes=False``: the
+    flanks are the written ones' (the placement moves only fillets and root lines).
+    """
+    from geometry.core.errors import InputError, ModelUnavailableError
+    from geometry.synthesis.case_synthesis import synthesize
+
+    t0 = time.process_time()
+    try:
+        changed = dataclasses.replace(basic, design=dataclasses.replace(basic.design,
+                                                                        **change.design))
+        case = synthesize(changed, tip_planes=False)[0]
+        ute, span, valid = unloaded_te_pp(case)
+    except (InputError, ModelUnavailableError, ValueError) as exc:
+        log.info("remedy %s not checked: %s", change.text, exc)
+        return ChangeCheck(change, math.nan, math.nan, 0.0, str(exc),
+                           time.process_time() - t0)
+    return ChangeCheck(change, ute, span, valid, "", time.process_time() - t0)
+
+
+def refusal(check: ChangeCheck, reference_ute: float, limit: float) -> str | None:
+    """Why a checked remedy is not offered, or None where it passes.
+
+    Parameters
+    ----------
+    check : ChangeCheck
+    reference_ute : float — [µrad]
+        The written case's unloaded TE p-p (NaN where not known: the limit alone).
+    limit : float — [µrad]
+        The verdict's LTE p-p limit (:data:`contact.study.verdicts.LTE_LIMIT`).
+
+    Returns
+    -------
+    str or None
+        The reason with its numbers: the synthesis has no solution; its flanks are far
+        from conjugate (fewer than
+        :data:`~contact.optimize.development_conjugacy.VALID_NODE_FRACTION_MIN` valid
+        ease-off nodes); its unloaded TE p-p above ``limit`` and above
+        :data:`UTE_GROWTH_MAX` × ``reference_ute``.
+    """
+    if check.failed:
+        first = check.failed.split(";")[0]
+        return f"its synthesis has no solution ({first})"
+    if check.valid < VALID_NODE_FRACTION_MIN:
+        return (f"its synthesis is far from conjugate ({100 * check.valid:.0f} % valid "
+                f"ease-off nodes, at least {100 * VALID_NODE_FRACTION_MIN:.0f} % on "
+                "near-conjugate flanks)")
+    bound = (max(limit, UTE_GROWTH_MAX * reference_ute) if math.isfinite(reference_ute)
+             else limit)
+    if check.ute > bound:
+        times = (f", {check.ute / reference_ute:.1f} x the written case's "
+                 f"{reference_ute:.0f} urad" if math.isfinite(reference_ute)
+                 and reference_ute > 0.0 else "")
+        span = (f", its ease-off {check.span:.0f} um" if math.isfinite(check.span) else "")
+        return (f"its generated pinion departs from the gear's conjugate: unloaded TE p-p "
+                f"{check.ute:.0f} urad{times}{span}, above the verdict's {limit:g} urad "
+                "LTE before any load")
+    return None
+
+
+def ranked_changes(checks: Sequence[ChangeCheck], reference_ute: float, limit: float
+                   ) -> tuple[list[ChangeCheck], list[tuple[ChangeCheck, str]]]:
+    """The remedies that pass :func:`refusal`, the lowest unloaded TE p-p first (then the
+    smaller ease-off), and the refused ones with their reasons, in the given order.
+
+    Parameters
+    ----------
+    checks : sequence of ChangeCheck
+    reference_ute, limit : float — [µrad]
+        As :func:`refusal`.
+
+    Returns
+    -------
+    (passed, refused) : (list of ChangeCheck, list of (ChangeCheck, str))
+    """
+    passed, refused = [], []
+    for c in checks:
+        why = refusal(c, reference_ute, limit)
+        if why is None:
+            passed.append(c)
+        else:
+            refused.append((c, why))
+    passed.sort(key=lambda c: (c.ute, c.span if math.isfinite(c.span) else math.inf))
+    return passed, refused
+
+
+def _measured(c: ChangeCheck, reference_ute: float) -> str:
+    """A passing remedy's numbers in a parenthesis, against the written case's."""
+    span = f", ease-off {c.span:.0f} um" if math.isfinite(c.span) else ""
+    now = (f" ({'lower than' if c.ute < reference_ute - 0.5 else 'no lower than'} the "
+           f"written case's {reference_ute:.0f})" if math.isfinite(reference_ute) else "")
+    return f" (checked: unloaded TE p-p {c.ute:.0f} urad{now}{span})"
+
+
+def checked_remedy_text(checks: Sequence[ChangeCheck], target: float, none: str,
+                        reference_ute: float, limit: float) -> str:
+    """The end of the note's remedy sentence from checked remedies: those that pass, best
+    first, each with its numbers, and each refused one with why.
+
+    Parameters
+    ----------
+    checks : sequence of ChangeCheck
+        :func:`check_change` of each change, in the order the note would print them.
+    target : float — [1]
+        The contact ratio the changes reach.
+    none : str
+        What no change is (e.g. "no depth factor up to 2.5 nor pressure angle down to
+        14.5 deg"), where none is left.
+    reference_ute, limit : float — [µrad]
+        As :func:`refusal`.
+
+    Returns
+    -------
+    str
+        E.g. (the 8x35 at Σ 85°, measured) "a drive pressure angle alpha_dD of 18.6 deg
+        (now 22.5) (checked: unloaded TE p-p 114 urad (lower than the written case's 137),
+        ease-off 79 um), or, next best, a depth factor k_d of 2.16, above the usual 2 (now
+        2) (checked: unloaded TE p-p 138 urad (no lower than the written case's 137),
+        ease-off 90 um), the other kept, reaches 1 (each change checked by a synthesis at
+        the written case's prescriptions, 5 s of CPU; ...)"; a refused change: "; not
+        <change>, which reaches 1 too: <why>" (:func:`refusal`).
+    """
+    passed, refused = ranked_changes(checks, reference_ute, limit)
+    if passed:
+        ways = [c.change.text + _measured(c, reference_ute) for c in passed]
+        head = (ways[0] if len(ways) == 1 else
+                ways[0] + ", or, next best, " + ", or ".join(ways[1:]) + ", the other kept,")
+        out = f"{head} reaches {target:g}"
+    else:
+        out = f"{none}, nor a change that keeps the synthesis near conjugate, reaches {target:g}"
+    for c, why in refused:
+        out += f"; not {c.change.text}, which reaches {target:g} too: {why}"
+    cpu = sum(c.seconds for c in checks)
+    return (out + f" (each change checked by a synthesis at the written case's prescriptions"
+            f", {cpu:.0f} s of CPU; docs/synthesis.md, 'Contact-ratio remedies checked "
+            "before they are offered')")
+
+
+def ute_sets_lte(ute: float, lte: Sequence[float], limit: float) -> bool:
+    """Whether a written flank's unloaded TE is what its LTE is.
+
+    Parameters
+    ----------
+    ute : float — [µrad]
+        The flank's unloaded TE p-p (:func:`unloaded_te_pp`).
+    lte : sequence of float — [µrad]
+        Its LTE p-p at (light, design) torque.
+    limit : float — [µrad]
+        The verdict's LTE limit.
+
+    Returns
+    -------
+    bool
+        True where ``ute`` exceeds ``limit`` and the light torque's LTE p-p keeps at least
+        :data:`UTE_KEPT_SHARE` of it: no contact ratio brings the LTE within the limit
+        while the unloaded TE alone exceeds it.
+    """
+    light = float(lte[0])
+    return (math.isfinite(ute) and ute > limit and math.isfinite(light)
+            and light >= UTE_KEPT_SHARE * ute)
+
+
+def ute_lte_text(ute: float, span: float, lte: Sequence[float], limit: float,
+                 prescriptions: str = "") -> str:
+    """The LTE diagnosis where :func:`ute_sets_lte`: the written case's unloaded TE sets it.
+
+    Parameters
+    ----------
+    ute : float — [µrad]
+    span : float — [µm]
+        The ease-off's extent (NaN: not said).
+    lte : sequence of float — [µrad]
+        LTE p-p at (light, design) torque.
+    limit : float — [µrad]
+    prescriptions : str
+        The written drive prescriptions that set that TE, as said (e.g. "path_angle
+        -58.8, ellipse_length 0.25, te_level 10"); empty: not named.
+
+    Returns
+    -------
+    str
+        E.g. "the written drive flank's unloaded TE p-p is 609 urad (ease-off 859 um),
+        above the verdict's 60 urad before any load: that, not the contact ratios, sets
+        its LTE p-p 605/599 urad (light/design) ...".
+
+    Notes
+    -----
+    Measured on the 8x35 at Σ 85° and k_d 2.16 (docs/synthesis.md, 'Contact-ratio
+    remedies checked before they are offered'): its written prescriptions give an
+    unloaded TE p-p of 609 µrad at k_d 2.16 and 666 µrad at k_d 2.0 (the contact ratios
+    not the cause), 138 µrad at the prescriptions the k_d 2.0 development wrote.
+    """
+    span_said = f" (ease-off {span:.0f} um)" if math.isfinite(span) else ""
+    named = f" ({prescriptions})" if prescriptions else ""
+    return (f"the written drive flank's unloaded TE p-p is {ute:.0f} urad{span_said}, above "
+            f"the verdict's {limit:g} urad before any load: that, not the contact ratios, "
+            f"sets its LTE p-p {float(lte[0]):.0f}/{float(lte[-1]):.0f} urad (light/design), "
+            "and a higher contact ratio does not lower it; the unloaded TE follows the drive "
+            f"prescriptions the development wrote{named}: other [synthesis] prescriptions "
+            "(a path angle or an ellipse length of a design whose LTE the development's "
+            "lines show lower) are the lever (docs/synthesis.md, 'Contact-ratio remedies "
+            "checked before they are offered')")
