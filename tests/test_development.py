@@ -1043,14 +1043,14 @@ def test_the_te_stage_runs_again_at_the_check_where_the_lte_is_missed(monkeypatc
                         _metrics(lte_peak_to_peak=[lte[level]] * 2), targets, 0.6)
 
     lines = []
-    got = dcheck._checked_te(chosen(45.0), targets, setup, None, lines.append,
-                          lambda values: dict(values), 45.0)
+    got = dcheck.checked_te(chosen(45.0), targets, setup, None, lines.append,
+                         lambda values: dict(values), 45.0)
     # 45 → 25 meets the LTE (39 µrad): kept, and no design at 10
     assert got.values["te_level"] == 25.0 and got.met and got.stage == "te"
     assert len(lines) == 1 and "te_level 25" in lines[0]
     met = chosen(25.0)
-    assert dcheck._checked_te(met, targets, setup, None, lines.append, lambda v: dict(v),
-                           45.0) is met
+    assert dcheck.checked_te(met, targets, setup, None, lines.append, lambda v: dict(v),
+                          45.0) is met
 
 
 def test_the_check_turns_a_long_bearing_towards_the_profile(monkeypatch):

@@ -40,7 +40,7 @@ positions, 12 segments per curve, shell compliance with the teeth kept across de
 :class:`KeptTeeth`; no root stress) at the light and the design torque, summarised by
 :func:`contact.study.summary.point_summary`. The best designs are then checked at
 ``ltca run``'s sampling (:data:`CHECK_LTCA`), the chosen one given the TE stage's steps
-again (:func:`_checked_te`) and its path turned towards the profile where it misses its
+again (:func:`checked_te`) and its path turned towards the profile where it misses its
 length or LTE there (:func:`_checked_path`), and where the chosen one's flank peak
 pressure at the rating's capacity exceeds the static strength the design torque is
 lowered to what the bearing carries (:func:`static_capacity`): a design never fails its

@@ -5,7 +5,7 @@ tolerance.
 
 :func:`checked_best` checks the best designs in turn until one meets every target (one
 Newton step of the blade angle where it misses the centre v); :func:`check_steps` then
-gives the chosen design the TE stage again (:func:`_checked_te`), its path turned towards
+gives the chosen design the TE stage again (:func:`checked_te`), its path turned towards
 the profile (:func:`_checked_path`, :data:`PATH_STEPS`), a shorter tip relief
 (:func:`_checked_tip`, :data:`TIP_FRACTIONS`) and the root relief with a longer ellipse
 (:func:`_checked_root`) for a pattern high on the flank, each kept where it scores better
@@ -39,12 +39,13 @@ name.
 
 This module keeps the check's core — the designs checked (:func:`checked_best`,
 :func:`cut_variant`, :func:`placed_case`), the chosen design's steps in order
-(:func:`check_steps`, :func:`steps_on_each`) with its own TE, path, blade, tip and root
+(:func:`check_steps`, :func:`steps_on_each`) with its own path, blade, tip and root
 steps, and the design torque capped (:func:`static_capacity`,
 :func:`checked_root_capacity`, :func:`rescored`); the rest is split by concern (issue 71,
 Deliver 5), each public name re-exported here: a step's design placed, analysed and
 scored in :mod:`contact.optimize.development_variant`, the keep rule in
-:mod:`contact.optimize.development_keep`, the mounting tolerance in
+:mod:`contact.optimize.development_keep`, the TE step in
+:mod:`contact.optimize.development_te_steps`, the mounting tolerance in
 :mod:`contact.optimize.development_tolerance`, the pattern's length and place in
 :mod:`contact.optimize.development_pattern_steps`, the drive LTE steps in
 :mod:`contact.optimize.development_lte_steps`, the coast flank's steps in
@@ -138,11 +139,11 @@ from contact.optimize.development_result import (
 from contact.optimize.development_stages import footprint_centre_v
 from contact.optimize.development_targets import (
     HEIGHT_NAME,
-    TE_NAME,
     VARIABLES,
     DevelopmentTargets,
     development_score,
 )
+from contact.optimize.development_te_steps import checked_te
 from contact.optimize.development_tolerance import (  # noqa: F401  (re-exported)
     LENGTH_PER_ELLIPSE,
     SHORTER_ELLIPSE_STEP,
@@ -260,41 +261,12 @@ def cut_variant(placed: Callable[[Mapping[str, float]], Case], values: Mapping[s
     return best[1], values | {"root_relief": best[0]}
 
 
-def _checked_te(best: DevelopmentEvaluation, targets: DevelopmentTargets,
-                setup: Mapping[str, Any], teeth: KeptTeeth, say: Callable[[str], None],
-                placed: Callable[[Mapping[str, float]], Case], level: float
-                ) -> DevelopmentEvaluation:
-    """The TE stage again at the check: where the chosen design misses the LTE target at
-    ``ltca run``'s sampling (the coarse LTCA's LTE is a few µrad low: 38 against 43 µrad
-    on the face-hobbed hypoid 11x43 of tests/data/designs, whose search stopped at its
-    fifth design, every target met coarsely), its ``te_level`` lowered by 20 µrad, then
-    to the lower bound, each design placed and checked at :data:`CHECK_LTCA` and kept
-    where it scores better (:func:`_te_stage`'s steps; at most 2 designs). ``level``: the
-    flank's own TE level [µrad], where the design's values do not give one."""
-    if (TE_NAME not in targets.variables or best.full is None or not best.checked
-            or best.full[1]["lte"] == 0.0):
-        return best
-    lo, hi = targets.variables[TE_NAME]
-    current = float(best.values.get(TE_NAME, level))
-    for x in (max(lo, min(hi, current) - 20.0), lo):
-        if best.full[1]["lte"] == 0.0 or x >= current - 1e-9:
-            break
-        e = _said_variant(best, best.values | {TE_NAME: float(x)}, "te",
-                          f"at {TE_NAME} {x:.3g} urad", targets, setup, teeth, say, placed)
-        if e is None:
-            break
-        if _check_rank(e) >= _check_rank(best):
-            break
-        best, current = e, float(x)
-    return best
-
-
 def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
                 setup: Mapping[str, Any], teeth: KeptTeeth, say: Callable[[str], None],
                 placed: Callable[[Mapping[str, float]], Case], level: float,
                 slopes: Mapping[tuple, float] | None = None) -> DevelopmentEvaluation:
     """The check's steps on the chosen design at the development's torques
-    (``setup["torques"]``): the TE stage again (:func:`_checked_te`), then the path turned
+    (``setup["torques"]``): the TE stage again (:func:`checked_te`), then the path turned
     towards the profile (:func:`_checked_path`), each only where the design misses its LTE
     or length there; where it misses its light-load centre u, M placed off the mean cone
     distance (:func:`checked_centre_u`); where it still misses a target with a
@@ -334,7 +306,7 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     scored better)."""
     from contact.optimize.development_profile_ratio import checked_profile_ratio
 
-    best = _checked_te(best, targets, setup, teeth, say, placed, level)
+    best = checked_te(best, targets, setup, teeth, say, placed, level)
     best = _checked_path(best, targets, setup, teeth, say, placed)
     best = checked_centre_u(best, targets, setup, teeth, say, placed)
     best = _checked_blade(best, targets, setup, teeth, say, placed)

@@ -174,7 +174,7 @@ NEAR_MISS = 0.5
 #: the centre on it, a node of the check's grid off)
 NEAR_MISS_AIM = 0.25
 #: [µrad] how far the near-miss step lowers ``te_level`` with its blade-angle step (the TE
-#: stage's step at the check, :func:`_checked_te`)
+#: stage's step at the check, :func:`checked_te`)
 NEAR_MISS_TE_STEP = 20.0
 #: most designs of the near-miss step (:func:`checked_near_miss`)
 NEAR_MISS_DESIGNS = 3
