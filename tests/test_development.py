@@ -1079,16 +1079,16 @@ def test_the_check_turns_a_long_bearing_towards_the_profile(monkeypatch):
     lines = []
     start = chosen({"path_angle": -58.75, "ellipse_length": 0.55})  # 0.71 long
     assert start.full[1]["length"] > 0.0
-    got = dcheck._checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
+    got = dcheck.checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
     # -73.75 deg / 0.5: 0.58 long, every target met: no second design
     assert got.values == {"path_angle": -73.75, "ellipse_length": 0.5} and got.met
     assert len(lines) == 1 and got.stage == "path"
     # the second step is clipped to the bound (-80 deg) and the ellipse's lower bound
     far = chosen({"path_angle": -70.0, "ellipse_length": 0.75})
-    got = dcheck._checked_path(far, targets, setup, None, lines.append, lambda v: dict(v))
+    got = dcheck.checked_path(far, targets, setup, None, lines.append, lambda v: dict(v))
     assert got.values["path_angle"] == -80.0
     ok = chosen({"path_angle": -80.0, "ellipse_length": 0.45})
-    assert dcheck._checked_path(ok, targets, setup, None, lines.append, lambda v: dict(v)) is ok
+    assert dcheck.checked_path(ok, targets, setup, None, lines.append, lambda v: dict(v)) is ok
 
 
 def test_the_check_lengthens_the_ellipse_where_only_the_lte_is_missed(monkeypatch):
@@ -1112,7 +1112,7 @@ def test_the_check_lengthens_the_ellipse_where_only_the_lte_is_missed(monkeypatc
     lines = []
     start = chosen({"path_angle": -51.9, "ellipse_length": 0.65})  # 0.53 long, 50 µrad
     assert start.full[1]["length"] == 0.0 and start.full[1]["lte"] > 0.0
-    got = dcheck._checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
+    got = dcheck.checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
     # -66.9 deg with 0.70 (0.53 + 0.05 <= 0.6): 44 µrad; then -80 deg (clipped) with 0.75:
     # 0.53 + 0.1 > 0.6, the ellipse kept at 0.65 -> 50 µrad, not better
     assert got.values["path_angle"] == -66.9
@@ -1130,7 +1130,7 @@ def test_the_check_lengthens_a_generated_gears_short_bearing_along_the_profile(m
     and its path clipped at −80°. Stand-in analyses: length = ellipse − 0.1, the LTE
     falls as the path turns towards the profile (130 µrad + the path angle in degrees;
     the test is the decisions, the numbers of the generated 20x30 are
-    development_check._checked_path's)."""
+    development_path_steps.checked_path's)."""
     from types import SimpleNamespace
 
     from contact.optimize import development as dev
@@ -1149,14 +1149,14 @@ def test_the_check_lengthens_a_generated_gears_short_bearing_along_the_profile(m
     lines = []
     generated = dataclasses.replace(start, case=SimpleNamespace(
         gear=SimpleNamespace(process="Generate")))
-    got = dcheck._checked_path(generated, targets, setup, None, lines.append,
-                               lambda v: dict(v))
+    got = dcheck.checked_path(generated, targets, setup, None, lines.append,
+                              lambda v: dict(v))
     assert [re.search(r"path_angle ([-\d.]+), ellipse_length ([\d.]+)", s).groups()
             for s in lines] == [("-73.8", "0.44"), ("-88", "0.4"), ("-88", "0.44")]
     assert got.values["path_angle"] == dcheck.GENERATED_PATH_LIMIT == -88.0
     assert got.values["ellipse_length"] == pytest.approx(0.44, abs=1e-12)
     lines.clear()
-    got = dcheck._checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
+    got = dcheck.checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
     assert [re.search(r"path_angle ([-\d.]+), ellipse_length ([\d.]+)", s).groups()
             for s in lines] == [("-73.8", "0.4"), ("-80", "0.4")]
     assert got.values == {"path_angle": -80.0, "ellipse_length": 0.4}
@@ -1183,7 +1183,7 @@ def test_the_check_lengthens_a_short_formate_bearing_whose_path_is_at_its_bound(
     start = _checked(values, fake(values, [], options=dev.CHECK_LTCA)[0], targets, 0.6)
     assert start.full[1]["length"] > 0.0
     lines = []
-    got = dcheck._checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
+    got = dcheck.checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
     # 0.675: 0.395 long, still short but better; 0.725: 0.445, every target met
     assert [re.search(r"path_angle ([-\d.]+), ellipse_length ([\d.]+)", s).groups()
             for s in lines] == [("-80", "0.675"), ("-80", "0.725")]
@@ -1194,7 +1194,7 @@ def test_the_check_lengthens_a_short_formate_bearing_whose_path_is_at_its_bound(
     lines.clear()
     values = {"path_angle": -65.6, "ellipse_length": 0.625}
     start = _checked(values, fake(values, [], options=dev.CHECK_LTCA)[0], targets, 0.6)
-    got = dcheck._checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
+    got = dcheck.checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
     assert [re.search(r"path_angle ([-\d.]+), ellipse_length ([\d.]+)", s).groups()
             for s in lines] == [("-80", "0.625"), ("-80", "0.725")]
     assert got.values == {"path_angle": -80.0, "ellipse_length": pytest.approx(0.725)}
@@ -1399,7 +1399,7 @@ def test_a_check_step_keeps_no_design_that_loses_the_mounting_tolerance(monkeypa
                                       full[0], full[1], full[2], "", 0.0, full=full,
                                       checked=True)
     lines = []
-    got = dcheck._checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
+    got = dcheck.checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
     assert got is start
     assert sum("not kept" in line and "plastic" in line for line in lines) == 2
 

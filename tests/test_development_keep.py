@@ -94,8 +94,8 @@ def test_the_path_step_of_a_height_design_asks_no_tolerance_it_cannot_use(monkey
                    _metrics(lte_peak_to_peak=[45.0, 45.0]))
     lines = []
     # without the bar: the path design is kept over the height design (asked its tolerance)
-    alone = dcheck._checked_path(height, targets, setup, None, lines.append,
-                                 lambda v: dict(v))
+    alone = dcheck.checked_path(height, targets, setup, None, lines.append,
+                                lambda v: dict(v))
     assert alone is not height and excursions
     assert math.isclose(float(alone.metrics["lte_peak_to_peak"][1]), 70.0)
     # the height step: the outcome is the kept design either way, no excursion asked

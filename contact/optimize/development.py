@@ -41,7 +41,7 @@ positions, 12 segments per curve, shell compliance with the teeth kept across de
 :func:`contact.study.summary.point_summary`. The best designs are then checked at
 ``ltca run``'s sampling (:data:`CHECK_LTCA`), the chosen one given the TE stage's steps
 again (:func:`checked_te`) and its path turned towards the profile where it misses its
-length or LTE there (:func:`_checked_path`), and where the chosen one's flank peak
+length or LTE there (:func:`checked_path`), and where the chosen one's flank peak
 pressure at the rating's capacity exceeds the static strength the design torque is
 lowered to what the bearing carries (:func:`static_capacity`): a design never fails its
 own check at its own design torque; where it exceeds the local pitting limit, a longer

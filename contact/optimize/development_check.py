@@ -6,7 +6,7 @@ tolerance.
 :func:`checked_best` checks the best designs in turn until one meets every target (one
 Newton step of the blade angle where it misses the centre v); :func:`check_steps` then
 gives the chosen design the TE stage again (:func:`checked_te`), its path turned towards
-the profile (:func:`_checked_path`, :data:`PATH_STEPS`), a shorter tip relief
+the profile (:func:`checked_path`, :data:`PATH_STEPS`), a shorter tip relief
 (:func:`_checked_tip`, :data:`TIP_FRACTIONS`) and the root relief with a longer ellipse
 (:func:`_checked_root`) for a pattern high on the flank, each kept where it scores better
 and stays tolerant (:func:`_tolerant_variant`); :func:`steps_on_each` gives them to the
@@ -39,13 +39,14 @@ name.
 
 This module keeps the check's core — the designs checked (:func:`checked_best`,
 :func:`cut_variant`, :func:`placed_case`), the chosen design's steps in order
-(:func:`check_steps`, :func:`steps_on_each`) with its own path, blade, tip and root
-steps, and the design torque capped (:func:`static_capacity`,
+(:func:`check_steps`, :func:`steps_on_each`) with its own blade, tip and root steps,
+and the design torque capped (:func:`static_capacity`,
 :func:`checked_root_capacity`, :func:`rescored`); the rest is split by concern (issue 71,
 Deliver 5), each public name re-exported here: a step's design placed, analysed and
 scored in :mod:`contact.optimize.development_variant`, the keep rule in
 :mod:`contact.optimize.development_keep`, the TE step in
-:mod:`contact.optimize.development_te_steps`, the mounting tolerance in
+:mod:`contact.optimize.development_te_steps`, the path step in
+:mod:`contact.optimize.development_path_steps`, the mounting tolerance in
 :mod:`contact.optimize.development_tolerance`, the pattern's length and place in
 :mod:`contact.optimize.development_pattern_steps`, the drive LTE steps in
 :mod:`contact.optimize.development_lte_steps`, the coast flank's steps in
@@ -92,7 +93,6 @@ from contact.optimize.development_keep import (  # noqa: F401  (re-exported)
     pressure_raised,
     ranks_better,
 )
-from contact.optimize.development_keep import ranks_better as _ranks_better
 from contact.optimize.development_lte_steps import (  # noqa: F401  (re-exported)
     CROWNING_LTE_FRACTIONS,
     ELLIPSE_STEP,
@@ -106,6 +106,12 @@ from contact.optimize.development_lte_steps import (  # noqa: F401  (re-exported
     crossing_level,
     long_bearing,
     shallower_root_relief,
+)
+from contact.optimize.development_path_steps import (  # noqa: F401  (re-exported)
+    GENERATED_PATH_LIMIT,
+    GENERATED_PATH_STEPS,
+    PATH_STEPS,
+    checked_path,
 )
 from contact.optimize.development_pattern_steps import (  # noqa: F401  (re-exported)
     CENTRE_U_AIM,
@@ -139,7 +145,6 @@ from contact.optimize.development_result import (
 from contact.optimize.development_stages import footprint_centre_v
 from contact.optimize.development_targets import (
     HEIGHT_NAME,
-    VARIABLES,
     DevelopmentTargets,
     development_score,
 )
@@ -267,7 +272,7 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
                 slopes: Mapping[tuple, float] | None = None) -> DevelopmentEvaluation:
     """The check's steps on the chosen design at the development's torques
     (``setup["torques"]``): the TE stage again (:func:`checked_te`), then the path turned
-    towards the profile (:func:`_checked_path`), each only where the design misses its LTE
+    towards the profile (:func:`checked_path`), each only where the design misses its LTE
     or length there; where it misses its light-load centre u, M placed off the mean cone
     distance (:func:`checked_centre_u`); where it still misses a target with a
     blade-angle change, the height by the root relief instead (:func:`_checked_blade`);
@@ -307,7 +312,7 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     from contact.optimize.development_profile_ratio import checked_profile_ratio
 
     best = checked_te(best, targets, setup, teeth, say, placed, level)
-    best = _checked_path(best, targets, setup, teeth, say, placed)
+    best = checked_path(best, targets, setup, teeth, say, placed)
     best = checked_centre_u(best, targets, setup, teeth, say, placed)
     best = _checked_blade(best, targets, setup, teeth, say, placed)
     best = _checked_tip(best, targets, setup, teeth, say, placed)
@@ -388,7 +393,7 @@ def _checked_tip(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     relief shortened to each of :data:`TIP_FRACTIONS` of the design's and started at the
     upper bound of ``tip_relief_start``, in turn; each design placed and checked at
     :data:`CHECK_LTCA`, then, where it misses the pattern length or the LTE, given the
-    path step (:func:`_checked_path`); kept where it scores better and is tolerant,
+    path step (:func:`checked_path`); kept where it scores better and is tolerant,
     until one meets every target (at most 3 designs, each with its path step's 2).
 
     Why: the pinion's tip meets the gear's flank low in its working depth, so the tip
@@ -436,13 +441,13 @@ def _kept_step(e: DevelopmentEvaluation, best: DevelopmentEvaluation,
                say: Callable[[str], None],
                placed: Callable[[Mapping[str, float]], Case]) -> DevelopmentEvaluation:
     """A height step's design ``e`` (:func:`_checked_tip`, :func:`_checked_root`) given
-    the path step (:func:`_checked_path`, only where it misses the pattern length or the
+    the path step (:func:`checked_path`, only where it misses the pattern length or the
     LTE), then kept over ``best`` where it scores better and is tolerant
     (:func:`_tolerant_variant`; a design the path step kept is already); the better of
     the two returned. The tip edge a shorter tip relief uncovers must stay elastic at the
     mounting excursions (the 13x39's 7.5 µm from 0.9: 0.3–1.6 % of the design torque
     plastic at ΔE +0.05 mm)."""
-    turned = _checked_path(e, targets, setup, teeth, say, placed, bar=best)
+    turned = checked_path(e, targets, setup, teeth, say, placed, bar=best)
     if _check_rank(turned) >= _check_rank(best):
         return best
     if turned is not e or _tolerant_variant(turned, targets, setup, teeth, say):
@@ -536,138 +541,6 @@ def _checked_root(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     if e is None:
         return best
     return _kept_step(e, best, targets, setup, teeth, say, placed)
-
-
-#: the check's steps of the path angle towards the profile [deg] and of the ellipse
-#: [1] (:func:`_checked_path`): one design each
-PATH_STEPS = ((-15.0, -0.05), (-30.0, -0.1))
-
-
-#: the check's steps of the path angle towards the profile [deg] and of the ellipse [1]
-#: where a **generated** gear's light-load pattern is too short (:func:`_checked_path`):
-#: the turns of :data:`PATH_STEPS` with the ellipse lengthened by 0.04 (0.05 and more
-#: ran the 20x30's pattern onto the heel at the mounting excursions) and the far turn
-#: without it (at the ISO capacity the longer ellipse loads the heel edge; after the
-#: design torque is lowered the steps run again, and there it does not)
-GENERATED_PATH_STEPS = ((-15.0, 0.04), (-30.0, 0.0), (-30.0, 0.04))
-
-
-#: [deg] how far :data:`GENERATED_PATH_STEPS` turn the path where the development's
-#: ``path_angle`` bounds are the defaults (:data:`~contact.optimize.development_targets.
-#: VARIABLES`, whose −80° the Formate designs' steps keep): nearly along the profile,
-#: where the light-load pattern is the ellipse alone and the most tooth pairs share the
-#: transfer (the 20x30's numbers in :func:`_checked_path`)
-GENERATED_PATH_LIMIT = -88.0
-
-
-def _checked_path(best: DevelopmentEvaluation, targets: DevelopmentTargets,
-                  setup: Mapping[str, Any], teeth: KeptTeeth, say: Callable[[str], None],
-                  placed: Callable[[Mapping[str, float]], Case], *,
-                  bar: DevelopmentEvaluation | None = None) -> DevelopmentEvaluation:
-    """The chosen design's bearing turned towards the profile at the check: where it
-    misses the pattern length or the LTE at ``ltca run``'s sampling, the path angle turned
-    by :data:`PATH_STEPS` towards the profile direction (clipped to its bound) and, where
-    the pattern is too long (beyond its tolerance), the ellipse shortened with it; where
-    the LTE alone is missed, the ellipse lengthened by as much where the pattern stays
-    within its length tolerance by that; each design placed and checked at
-    :data:`CHECK_LTCA` and kept where it scores better (at most 2 designs, each a
-    synthesis of steps 3-6). ``bar``: where given (a height step's design, :func:`_kept_step`),
-    a design is kept only where it also ranks before ``bar``, the design the step's
-    outcome must beat: one that does not is not asked for its tolerance (the mounting
-    excursions, up to four coarse analyses), which could not change the outcome.
-
-    Why: the light-load pattern is the ellipse plus the path's lengthwise travel over the
-    roll of one tooth pair, and a path nearer the profile both shortens that travel and
-    keeps more tooth pairs in contact. Measured on the truck hypoid 9x37 of
-    tests/data/designs (its developed design, ``ltca run``'s sampling at 312 / 2082 N m):
-    path −58.75° / ellipse 0.55: pattern 0.62 long, LTE 39 / 38 µrad, 1.55 pairs in
-    contact at light load; −70° / 0.55: 0.62, 18 / 20 µrad, 1.70; −80° / 0.45: 0.58, 25 /
-    23 µrad, 1.65 pairs, every target met; the ellipse alone 0.55 → 0.45 at −58.75°:
-    0.53 long but 71 / 64 µrad (docs/synthesis.md, "What sets the pattern and the
-    LTE"). A longer ellipse (less lengthwise crowning) lowers the LTE at the design
-    torque, where a spiral bevel's LTE is made: on the spiral bevel 13x39 (its developed
-    design, path −66.9°, ellipse 0.7, ``ltca run``'s sampling at 36.98 / 246.5 N m; LTE
-    19 / 50 µrad, pattern 0.53 long) the ellipse 0.75 gave 17 / 44 µrad, 0.55 long, as
-    the path −75° did; the earlier rule, the ellipse shortened wherever the pattern was
-    longer than its target's middle, had taken it from 0.75 to 0.7 (2026-11-25).
-
-    A **generated** gear's pattern too short (below the target's middle, beyond its
-    tolerance) takes :data:`GENERATED_PATH_STEPS` instead: the ellipse lengthened with the
-    turn, the path turned as far as :data:`GENERATED_PATH_LIMIT` where its bounds are the
-    defaults (at most 3 designs). The generated spiral bevel 20x30 of
-    tests/data/generated_gear (ε_vβ 1.26; its developed relief, ``te_level`` 10 µrad,
-    ``ltca run``'s sampling at 25.65 / 171 N m): path −80° / ellipse 0.4 (the −80° bound
-    reached): pattern 0.35–0.73, LTE 45 / 92 µrad; −88° / 0.45: 0.35–0.80, 31 / 53 µrad,
-    edge 0.5 %, no plastic segment; the pattern's heel end jumps to the heel at 0.47 (its
-    ease-off falls towards the heel at the tip), so 0.04 per step. At the ISO capacity
-    (41.5 / 276.7 N m) −88° / 0.4 gives 30 / 62 µrad, no plastic, and −88° / 0.45 2.1 % of
-    the torque plastic at the heel. With steps of 0.05 its development wrote −88° / 0.4
-    (``ltca run`` at 26.3 / 175.6 N m: 38.7 / 81.7 µrad, against 43.3 / 92.4 at −80°): the
-    0.45 reaches the heel at the mounting excursions, not kept; at those torques −88° /
-    0.44 gives 0.35–0.78, 32 / 58 µrad and stays clear of toe and heel at every
-    excursion (docs/synthesis.md, "Why the pattern is short and the LTE high"). Formate
-    designs keep :data:`PATH_STEPS` (their developed
-    cases unchanged); where their pattern is too short and no turn is left (the path at
-    its bound already, or the step's turn clipped to a path tried), the step lengthens the
-    ellipse by its amount instead (a face-hobbed hypoid 5x45 at a 50 mm offset,
-    benchmarks/data/unseen_designs: −65.6° → −80°, ellipse 0.625, pattern 0.35 long at
-    4.6 N m, where nothing more was tried)."""
-    names = ("path_angle", "ellipse_length")
-    if (best.full is None or not best.checked
-            or not all(n in targets.variables and n in best.values for n in names)):
-        return best
-    short = best.full[1]
-    if short["length"] == 0.0 and short["lte"] == 0.0:
-        return best
-    (p_lo, p_hi), (e_lo, e_hi) = (targets.variables[n] for n in names)
-    length = best.metrics["pattern_heel_u"][0] - best.metrics["pattern_toe_u"][0]
-    longest = targets.pattern_length + targets.pattern_length_tolerance
-    base, tried = best, []
-    # a generated gear's pattern too short: the ellipse lengthened at each turn, the path
-    # turned nearly along the profile where the bounds are the defaults
-    lengthen = (getattr(getattr(best.case, "gear", None), "process", None) == "Generate"
-                and short["length"] > 0.0 and length < targets.pattern_length)
-    if lengthen and tuple(targets.variables["path_angle"]) == tuple(VARIABLES["path_angle"]):
-        p_lo = min(p_lo, GENERATED_PATH_LIMIT)
-    for turn, shorter in GENERATED_PATH_STEPS if lengthen else PATH_STEPS:
-        # the ellipse shortened where the pattern is too long; lengthened where the LTE
-        # alone is missed and the pattern has room for it (the lengthwise crowning
-        # lowered: more of the face carries the transfer at the design torque)
-        change = (shorter if lengthen
-                  else shorter if short["length"] > 0.0 and length > targets.pattern_length
-                  else -shorter if short["length"] == 0.0 and length - shorter <= longest
-                  else 0.0)
-        path = float(np.clip(base.values["path_angle"] + turn, p_lo, p_hi))
-        if (not lengthen and short["length"] > 0.0 and length < targets.pattern_length
-                and (path == base.values["path_angle"]
-                     or any(t["path_angle"] == path for t in tried))):
-            # a Formate design's pattern too short with no turn left (the path at its
-            # bound already, or the turn clipped to a path tried): the ellipse lengthened
-            # by as much instead (less lengthwise crowning) — the face-hobbed 5x45 of
-            # unseen round 10 (−65.6° → −80°, ellipse 0.625: pattern 0.35 long at its
-            # light torque 4.6 N m) tried nothing more
-            change = -shorter
-            log.info("check: the pattern %.3g long with the path at its bound %.3g deg: "
-                     "the ellipse %.3g longer", length, path, change)
-        values = base.values | {
-            "path_angle": path,
-            "ellipse_length": float(np.clip(base.values["ellipse_length"] + change,
-                                            e_lo, e_hi))}
-        if values in tried or all(values[n] == base.values[n] for n in names):
-            continue
-        tried.append(values)
-        e = _said_variant(best, values, "path",
-                          f"with path_angle {values['path_angle']:.3g}, ellipse_length "
-                          f"{values['ellipse_length']:.3g}", targets, setup, teeth, say,
-                          placed)
-        if e is not None and not kept_why(
-                best, e, targets, setup, teeth, say,
-                better=lambda b, x: _ranks_better(b, x) and (bar is None
-                                                             or _ranks_better(bar, x))):
-            best = e
-            if e.met:
-                break
-    return best
 
 
 def checked_root_capacity(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTargets,
