@@ -1223,17 +1223,17 @@ def test_a_high_pattern_at_the_check_gets_a_shorter_tip_relief(monkeypatch):
     lines = []
     high = chosen({"tip_relief": 15.0, "tip_relief_start": 0.85})  # v 0.64, edge 0.1 %
     assert high.full[1]["centre_v"] > 0.0
-    got = dcheck._checked_tip(high, targets, setup, None, lines.append, lambda v: dict(v))
+    got = dcheck.checked_tip(high, targets, setup, None, lines.append, lambda v: dict(v))
     assert got.values == {"tip_relief": pytest.approx(12.0, abs=1e-12),
                           "tip_relief_start": 0.9} and got.met
     assert got.stage == "tip" and len(lines) == 1
     # no room on the edges (1.2 % > half of 2 %), or at its height: nothing analysed
     tight = chosen({"tip_relief": 4.0, "tip_relief_start": 0.85})
-    assert dcheck._checked_tip(dataclasses.replace(
+    assert dcheck.checked_tip(dataclasses.replace(
         tight, full=(1.0, high.full[1], False)), targets, setup, None, lines.append,
         lambda v: dict(v)).values == tight.values
-    assert dcheck._checked_tip(got, targets, setup, None, lines.append,
-                               lambda v: dict(v)) is got
+    assert dcheck.checked_tip(got, targets, setup, None, lines.append,
+                              lambda v: dict(v)) is got
     assert len(lines) == 1
 
     # plastic at a mounting excursion below 13 µm (the uncovered tip edge): none of the
@@ -1246,8 +1246,8 @@ def test_a_high_pattern_at_the_check_gets_a_shorter_tip_relief(monkeypatch):
 
     monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", misaligned)
     lines.clear()
-    assert dcheck._checked_tip(high, targets, setup, None, lines.append,
-                               lambda v: dict(v)) is high
+    assert dcheck.checked_tip(high, targets, setup, None, lines.append,
+                              lambda v: dict(v)) is high
     assert [ln.split(" from ")[0].split("with ")[1] for ln in lines
             if "tip_relief" in ln] == ["tip_relief 12", "tip_relief 10", "tip_relief 7.5"]
     assert "not kept" in lines[-1] and "plastic" in lines[-1]
@@ -1280,19 +1280,19 @@ def test_a_high_pattern_left_after_the_tip_step_gets_the_root_relief(monkeypatch
     high = chosen({"root_relief": 40.0, "relief_start": 0.3, "ellipse_length": 0.55,
                    "path_angle": -58.8})  # v 0.64, 0.5 long, 38 µrad
     assert high.full[1]["centre_v"] > 0.0 and high.full[1]["lte"] == 0.0
-    got = dcheck._checked_root(high, targets, setup, None, lines.append, lambda v: dict(v))
+    got = dcheck.checked_root(high, targets, setup, None, lines.append, lambda v: dict(v))
     # 60 µm from 0.2 with the ellipse 0.65 (0.5 + 0.1 <= 0.6): v 0.61, 29 µrad
     assert got.values["root_relief"] == 60.0 and got.values["relief_start"] == 0.2
     assert got.values["ellipse_length"] == pytest.approx(0.65, abs=1e-12)
     assert got.met and got.stage == "root" and len(lines) == 1
-    assert dcheck._checked_root(got, targets, setup, None, lines.append,
-                                lambda v: dict(v)) is got  # at its height: nothing
+    assert dcheck.checked_root(got, targets, setup, None, lines.append,
+                               lambda v: dict(v)) is got  # at its height: nothing
     # a pattern with no room for a longer ellipse (0.58 long): the root relief alone,
     # 44 µrad at the design torque, which the path step (LTE missed) then turns
     lines.clear()
     long_ = chosen({"root_relief": 40.0, "relief_start": 0.3, "ellipse_length": 0.65,
                     "path_angle": -58.8})
-    dcheck._checked_root(long_, targets, setup, None, lines.append, lambda v: dict(v))
+    dcheck.checked_root(long_, targets, setup, None, lines.append, lambda v: dict(v))
     assert "ellipse_length 0.65" in lines[0] and "root_relief 60" in lines[0]
 
 
@@ -1323,18 +1323,18 @@ def test_a_design_missing_a_target_with_a_blade_angle_gets_the_root_relief_inste
     tilted = chosen({"blade_angle_change": -0.177, "root_relief": 39.0,
                      "relief_start": 0.25})
     assert tilted.full[1]["length"] > 0.0 and not tilted.met
-    got = dcheck._checked_blade(tilted, targets, setup, None, lines.append,
-                                lambda v: dict(v))
+    got = dcheck.checked_blade(tilted, targets, setup, None, lines.append,
+                               lambda v: dict(v))
     assert got.values == {"blade_angle_change": 0.0, "root_relief": 60.0,
                           "relief_start": 0.2}
     assert got.met and len(lines) == 1 and "without its blade-angle change" in lines[0]
     # no blade-angle change, or every target met: nothing analysed
     flat = chosen({"blade_angle_change": 0.0, "root_relief": 40.0, "relief_start": 0.25})
     assert not flat.met
-    assert dcheck._checked_blade(flat, targets, setup, None, lines.append,
-                                 lambda v: dict(v)) is flat
-    assert dcheck._checked_blade(got, targets, setup, None, lines.append,
-                                 lambda v: dict(v)) is got
+    assert dcheck.checked_blade(flat, targets, setup, None, lines.append,
+                                lambda v: dict(v)) is flat
+    assert dcheck.checked_blade(got, targets, setup, None, lines.append,
+                                lambda v: dict(v)) is got
     assert len(lines) == 1
 
 

@@ -339,7 +339,7 @@ def checked_centre_u(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     the design's bearing, as :func:`checked_coast_lte`'s). The centre
     v may be lost: M is centred in roll within the working depth at its new cone
     distance, which moves the pattern's height a little, and the height steps after this
-    one (:func:`_checked_tip`, :func:`_checked_root`, :func:`checked_near_miss`) take a
+    one (:func:`checked_tip`, :func:`checked_root`, :func:`checked_near_miss`) take a
     pattern off its depth band back (a blade-angle step with it was tried and cost more
     than it gave: below). A design that meets its centre u is returned as it is, without
     an analysis.
