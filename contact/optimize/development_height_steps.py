@@ -24,7 +24,7 @@ from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_stages import footprint_centre_v
 from contact.optimize.development_targets import HEIGHT_NAME, DevelopmentTargets
 from contact.optimize.development_tolerance import tolerant_variant
-from contact.optimize.development_variant import check_rank, said_variant
+from contact.optimize.development_variant import check_rank, pattern_length, said_variant
 from geometry.case import Case
 
 #: the check's shorter tip reliefs (:func:`checked_tip`), fractions of the chosen
@@ -297,7 +297,7 @@ def checked_root(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     if not pattern_high(best, targets, setup, names):
         return best
     (_, r_hi), (s_lo, _), (e_lo, e_hi) = (targets.variables[n] for n in names)
-    length = best.metrics["pattern_heel_u"][0] - best.metrics["pattern_toe_u"][0]
+    length = pattern_length(best)
     room = (length + ROOT_STEP_ELLIPSE
             <= targets.pattern_length + targets.pattern_length_tolerance + 1e-9)
     values = best.values | {

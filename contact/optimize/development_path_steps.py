@@ -20,7 +20,7 @@ from contact.optimize.development_evaluate import KeptTeeth
 from contact.optimize.development_keep import kept_why, ranks_better
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import VARIABLES, DevelopmentTargets
-from contact.optimize.development_variant import said_variant
+from contact.optimize.development_variant import pattern_length, said_variant
 from geometry.case import Case
 
 #: the development's one logger, whichever of its modules logs
@@ -145,7 +145,7 @@ def checked_path(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     if short["length"] == 0.0 and short["lte"] == 0.0:
         return best
     (p_lo, p_hi), (e_lo, e_hi) = (targets.variables[n] for n in names)
-    length = best.metrics["pattern_heel_u"][0] - best.metrics["pattern_toe_u"][0]
+    length = pattern_length(best)
     longest = targets.pattern_length + targets.pattern_length_tolerance
     base, tried = best, []
     # a generated gear's pattern too short: the ellipse lengthened at each turn, the path
