@@ -19,12 +19,12 @@ from typing import Any
 import numpy as np
 
 from contact.optimize.development_evaluate import KeptTeeth
+from contact.optimize.development_keep import kept_why
 from contact.optimize.development_path_steps import checked_path
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_stages import footprint_centre_v
 from contact.optimize.development_targets import HEIGHT_NAME, DevelopmentTargets
-from contact.optimize.development_tolerance import tolerant_variant
-from contact.optimize.development_variant import check_rank, pattern_length, said_variant
+from contact.optimize.development_variant import pattern_length, said_variant
 from geometry.case import Case
 
 #: the check's shorter tip reliefs (:func:`checked_tip`), fractions of the chosen
@@ -165,8 +165,9 @@ def kept_height_step(e: DevelopmentEvaluation, best: DevelopmentEvaluation,
     :func:`checked_blade`) given the path step (:func:`~contact.optimize.
     development_path_steps.checked_path`, only where it misses the pattern length or the
     LTE; its designs must rank before ``best`` too), then kept over ``best`` where it
-    scores better and is tolerant (:func:`~contact.optimize.development_tolerance.
-    tolerant_variant`; a design the path step kept is already).
+    scores better and is tolerant (the one keep rule, :func:`~contact.optimize.
+    development_keep.kept_why`, which asks no lost target here; a design the path step
+    kept is tolerant already).
 
     Parameters
     ----------
@@ -190,11 +191,9 @@ def kept_height_step(e: DevelopmentEvaluation, best: DevelopmentEvaluation,
     torque plastic at ΔE +0.05 mm; docs/own_gear_set.md, "The pattern's height").
     """
     turned = checked_path(e, targets, setup, teeth, say, placed, bar=best)
-    if check_rank(turned) >= check_rank(best):
-        return best
-    if turned is not e or tolerant_variant(turned, targets, setup, teeth, say):
-        return turned
-    return best
+    # a design the path step kept is tolerant already: asked only of the step's own
+    return best if kept_why(best, turned, targets, setup, teeth, say,
+                            tolerant=turned is e) else turned
 
 
 def checked_blade(best: DevelopmentEvaluation, targets: DevelopmentTargets,

@@ -11,9 +11,10 @@ from collections.abc import Callable, Mapping
 from typing import Any
 
 from contact.optimize.development_evaluate import KeptTeeth
+from contact.optimize.development_keep import kept_why
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import TE_NAME, DevelopmentTargets
-from contact.optimize.development_variant import check_rank, said_variant
+from contact.optimize.development_variant import said_variant
 from geometry.case import Case
 
 
@@ -24,7 +25,9 @@ def checked_te(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     """The TE stage again at the check: where the chosen design misses the LTE target at
     ``ltca run``'s sampling, its ``te_level`` lowered by 20 µrad, then to the lower bound,
     each design placed and checked at :data:`~contact.optimize.development_evaluate.
-    CHECK_LTCA` and kept where it scores better (the TE stage's steps; at most 2 designs).
+    CHECK_LTCA` and kept where it scores better (the TE stage's steps, by the one keep
+    rule :func:`~contact.optimize.development_keep.kept_why` without its tolerance; at
+    most 2 designs).
 
     Parameters
     ----------
@@ -67,9 +70,7 @@ def checked_te(best: DevelopmentEvaluation, targets: DevelopmentTargets,
             break
         e = said_variant(best, best.values | {TE_NAME: float(x)}, "te",
                          f"at {TE_NAME} {x:.3g} urad", targets, setup, teeth, say, placed)
-        if e is None:
-            break
-        if check_rank(e) >= check_rank(best):
-            break
+        if kept_why(best, e, targets, setup, teeth, say, tolerant=False):
+            break  # not analysed, or it scores no better (the TE step asks no tolerance)
         best, current = e, float(x)
     return best
