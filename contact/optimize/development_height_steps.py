@@ -175,8 +175,17 @@ def kept_height_step(e: DevelopmentEvaluation, best: DevelopmentEvaluation,
         The height step's design, checked at ``ltca run``'s sampling.
     best : DevelopmentEvaluation
         The design the check's steps kept so far.
-    targets, setup, teeth, say, placed
-        As :func:`checked_tip`'s.
+    targets : DevelopmentTargets
+        The development's targets (``variables``: the bounds of ``path_angle`` [deg] and
+        ``ellipse_length`` [1], for the path step).
+    setup : mapping
+        The development's state (``"torques"`` [N·m], light and design; ``"centre_v"``).
+    teeth : KeptTeeth or None
+        The kept pinion teeth of the development.
+    say : callable str → None
+        Gets one line per design analysed and per design refused.
+    placed : callable values → Case
+        The synthesis as written (:func:`~contact.optimize.development_check.placed_case`).
 
     Returns
     -------
@@ -210,9 +219,19 @@ def checked_blade(best: DevelopmentEvaluation, targets: DevelopmentTargets,
 
     Parameters
     ----------
-    best, targets, setup, teeth, say, placed
-        As :func:`checked_tip`'s (``variables``: the bounds of ``blade_angle_change``
+    best : DevelopmentEvaluation
+        The design the check's steps kept so far, checked at ``ltca run``'s sampling.
+    targets : DevelopmentTargets
+        The development's targets (``variables``: the bounds of ``blade_angle_change``
         [deg], ``root_relief`` [µm] and ``relief_start`` [1]).
+    setup : mapping
+        The development's state (``"torques"`` [N·m], light and design; ``"centre_v"``).
+    teeth : KeptTeeth or None
+        The kept pinion teeth of the development.
+    say : callable str → None
+        Gets one line per design analysed and per design refused.
+    placed : callable values → Case
+        The synthesis as written (:func:`~contact.optimize.development_check.placed_case`).
 
     Returns
     -------
@@ -266,9 +285,20 @@ def checked_root(best: DevelopmentEvaluation, targets: DevelopmentTargets,
 
     Parameters
     ----------
-    best, targets, setup, teeth, say, placed
-        As :func:`checked_tip`'s (``variables``: the bounds of ``root_relief`` [µm],
-        ``relief_start`` [1] and ``ellipse_length`` [1]).
+    best : DevelopmentEvaluation
+        The design the check's steps kept so far, checked at ``ltca run``'s sampling.
+    targets : DevelopmentTargets
+        The development's targets (``variables``: the bounds of ``root_relief`` [µm],
+        ``relief_start`` [1] and ``ellipse_length`` [1]; the pattern length and its
+        tolerance [1 of the face]).
+    setup : mapping
+        The development's state (``"torques"`` [N·m], light and design; ``"centre_v"``).
+    teeth : KeptTeeth or None
+        The kept pinion teeth of the development.
+    say : callable str → None
+        Gets one line per design analysed and per design refused.
+    placed : callable values → Case
+        The synthesis as written (:func:`~contact.optimize.development_check.placed_case`).
 
     Returns
     -------
