@@ -1043,14 +1043,14 @@ def test_the_te_stage_runs_again_at_the_check_where_the_lte_is_missed(monkeypatc
                         _metrics(lte_peak_to_peak=[lte[level]] * 2), targets, 0.6)
 
     lines = []
-    got = dcheck._checked_te(chosen(45.0), targets, setup, None, lines.append,
-                          lambda values: dict(values), 45.0)
+    got = dcheck.checked_te(chosen(45.0), targets, setup, None, lines.append,
+                         lambda values: dict(values), 45.0)
     # 45 → 25 meets the LTE (39 µrad): kept, and no design at 10
     assert got.values["te_level"] == 25.0 and got.met and got.stage == "te"
     assert len(lines) == 1 and "te_level 25" in lines[0]
     met = chosen(25.0)
-    assert dcheck._checked_te(met, targets, setup, None, lines.append, lambda v: dict(v),
-                           45.0) is met
+    assert dcheck.checked_te(met, targets, setup, None, lines.append, lambda v: dict(v),
+                          45.0) is met
 
 
 def test_the_check_turns_a_long_bearing_towards_the_profile(monkeypatch):
@@ -1079,16 +1079,16 @@ def test_the_check_turns_a_long_bearing_towards_the_profile(monkeypatch):
     lines = []
     start = chosen({"path_angle": -58.75, "ellipse_length": 0.55})  # 0.71 long
     assert start.full[1]["length"] > 0.0
-    got = dcheck._checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
+    got = dcheck.checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
     # -73.75 deg / 0.5: 0.58 long, every target met: no second design
     assert got.values == {"path_angle": -73.75, "ellipse_length": 0.5} and got.met
     assert len(lines) == 1 and got.stage == "path"
     # the second step is clipped to the bound (-80 deg) and the ellipse's lower bound
     far = chosen({"path_angle": -70.0, "ellipse_length": 0.75})
-    got = dcheck._checked_path(far, targets, setup, None, lines.append, lambda v: dict(v))
+    got = dcheck.checked_path(far, targets, setup, None, lines.append, lambda v: dict(v))
     assert got.values["path_angle"] == -80.0
     ok = chosen({"path_angle": -80.0, "ellipse_length": 0.45})
-    assert dcheck._checked_path(ok, targets, setup, None, lines.append, lambda v: dict(v)) is ok
+    assert dcheck.checked_path(ok, targets, setup, None, lines.append, lambda v: dict(v)) is ok
 
 
 def test_the_check_lengthens_the_ellipse_where_only_the_lte_is_missed(monkeypatch):
@@ -1112,7 +1112,7 @@ def test_the_check_lengthens_the_ellipse_where_only_the_lte_is_missed(monkeypatc
     lines = []
     start = chosen({"path_angle": -51.9, "ellipse_length": 0.65})  # 0.53 long, 50 µrad
     assert start.full[1]["length"] == 0.0 and start.full[1]["lte"] > 0.0
-    got = dcheck._checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
+    got = dcheck.checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
     # -66.9 deg with 0.70 (0.53 + 0.05 <= 0.6): 44 µrad; then -80 deg (clipped) with 0.75:
     # 0.53 + 0.1 > 0.6, the ellipse kept at 0.65 -> 50 µrad, not better
     assert got.values["path_angle"] == -66.9
@@ -1130,7 +1130,7 @@ def test_the_check_lengthens_a_generated_gears_short_bearing_along_the_profile(m
     and its path clipped at −80°. Stand-in analyses: length = ellipse − 0.1, the LTE
     falls as the path turns towards the profile (130 µrad + the path angle in degrees;
     the test is the decisions, the numbers of the generated 20x30 are
-    development_check._checked_path's)."""
+    development_path_steps.checked_path's)."""
     from types import SimpleNamespace
 
     from contact.optimize import development as dev
@@ -1149,14 +1149,14 @@ def test_the_check_lengthens_a_generated_gears_short_bearing_along_the_profile(m
     lines = []
     generated = dataclasses.replace(start, case=SimpleNamespace(
         gear=SimpleNamespace(process="Generate")))
-    got = dcheck._checked_path(generated, targets, setup, None, lines.append,
-                               lambda v: dict(v))
+    got = dcheck.checked_path(generated, targets, setup, None, lines.append,
+                              lambda v: dict(v))
     assert [re.search(r"path_angle ([-\d.]+), ellipse_length ([\d.]+)", s).groups()
             for s in lines] == [("-73.8", "0.44"), ("-88", "0.4"), ("-88", "0.44")]
     assert got.values["path_angle"] == dcheck.GENERATED_PATH_LIMIT == -88.0
     assert got.values["ellipse_length"] == pytest.approx(0.44, abs=1e-12)
     lines.clear()
-    got = dcheck._checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
+    got = dcheck.checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
     assert [re.search(r"path_angle ([-\d.]+), ellipse_length ([\d.]+)", s).groups()
             for s in lines] == [("-73.8", "0.4"), ("-80", "0.4")]
     assert got.values == {"path_angle": -80.0, "ellipse_length": 0.4}
@@ -1183,7 +1183,7 @@ def test_the_check_lengthens_a_short_formate_bearing_whose_path_is_at_its_bound(
     start = _checked(values, fake(values, [], options=dev.CHECK_LTCA)[0], targets, 0.6)
     assert start.full[1]["length"] > 0.0
     lines = []
-    got = dcheck._checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
+    got = dcheck.checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
     # 0.675: 0.395 long, still short but better; 0.725: 0.445, every target met
     assert [re.search(r"path_angle ([-\d.]+), ellipse_length ([\d.]+)", s).groups()
             for s in lines] == [("-80", "0.675"), ("-80", "0.725")]
@@ -1194,7 +1194,7 @@ def test_the_check_lengthens_a_short_formate_bearing_whose_path_is_at_its_bound(
     lines.clear()
     values = {"path_angle": -65.6, "ellipse_length": 0.625}
     start = _checked(values, fake(values, [], options=dev.CHECK_LTCA)[0], targets, 0.6)
-    got = dcheck._checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
+    got = dcheck.checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
     assert [re.search(r"path_angle ([-\d.]+), ellipse_length ([\d.]+)", s).groups()
             for s in lines] == [("-80", "0.625"), ("-80", "0.725")]
     assert got.values == {"path_angle": -80.0, "ellipse_length": pytest.approx(0.725)}
@@ -1223,17 +1223,17 @@ def test_a_high_pattern_at_the_check_gets_a_shorter_tip_relief(monkeypatch):
     lines = []
     high = chosen({"tip_relief": 15.0, "tip_relief_start": 0.85})  # v 0.64, edge 0.1 %
     assert high.full[1]["centre_v"] > 0.0
-    got = dcheck._checked_tip(high, targets, setup, None, lines.append, lambda v: dict(v))
+    got = dcheck.checked_tip(high, targets, setup, None, lines.append, lambda v: dict(v))
     assert got.values == {"tip_relief": pytest.approx(12.0, abs=1e-12),
                           "tip_relief_start": 0.9} and got.met
     assert got.stage == "tip" and len(lines) == 1
     # no room on the edges (1.2 % > half of 2 %), or at its height: nothing analysed
     tight = chosen({"tip_relief": 4.0, "tip_relief_start": 0.85})
-    assert dcheck._checked_tip(dataclasses.replace(
+    assert dcheck.checked_tip(dataclasses.replace(
         tight, full=(1.0, high.full[1], False)), targets, setup, None, lines.append,
         lambda v: dict(v)).values == tight.values
-    assert dcheck._checked_tip(got, targets, setup, None, lines.append,
-                               lambda v: dict(v)) is got
+    assert dcheck.checked_tip(got, targets, setup, None, lines.append,
+                              lambda v: dict(v)) is got
     assert len(lines) == 1
 
     # plastic at a mounting excursion below 13 µm (the uncovered tip edge): none of the
@@ -1246,8 +1246,8 @@ def test_a_high_pattern_at_the_check_gets_a_shorter_tip_relief(monkeypatch):
 
     monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", misaligned)
     lines.clear()
-    assert dcheck._checked_tip(high, targets, setup, None, lines.append,
-                               lambda v: dict(v)) is high
+    assert dcheck.checked_tip(high, targets, setup, None, lines.append,
+                              lambda v: dict(v)) is high
     assert [ln.split(" from ")[0].split("with ")[1] for ln in lines
             if "tip_relief" in ln] == ["tip_relief 12", "tip_relief 10", "tip_relief 7.5"]
     assert "not kept" in lines[-1] and "plastic" in lines[-1]
@@ -1280,19 +1280,19 @@ def test_a_high_pattern_left_after_the_tip_step_gets_the_root_relief(monkeypatch
     high = chosen({"root_relief": 40.0, "relief_start": 0.3, "ellipse_length": 0.55,
                    "path_angle": -58.8})  # v 0.64, 0.5 long, 38 µrad
     assert high.full[1]["centre_v"] > 0.0 and high.full[1]["lte"] == 0.0
-    got = dcheck._checked_root(high, targets, setup, None, lines.append, lambda v: dict(v))
+    got = dcheck.checked_root(high, targets, setup, None, lines.append, lambda v: dict(v))
     # 60 µm from 0.2 with the ellipse 0.65 (0.5 + 0.1 <= 0.6): v 0.61, 29 µrad
     assert got.values["root_relief"] == 60.0 and got.values["relief_start"] == 0.2
     assert got.values["ellipse_length"] == pytest.approx(0.65, abs=1e-12)
     assert got.met and got.stage == "root" and len(lines) == 1
-    assert dcheck._checked_root(got, targets, setup, None, lines.append,
-                                lambda v: dict(v)) is got  # at its height: nothing
+    assert dcheck.checked_root(got, targets, setup, None, lines.append,
+                               lambda v: dict(v)) is got  # at its height: nothing
     # a pattern with no room for a longer ellipse (0.58 long): the root relief alone,
     # 44 µrad at the design torque, which the path step (LTE missed) then turns
     lines.clear()
     long_ = chosen({"root_relief": 40.0, "relief_start": 0.3, "ellipse_length": 0.65,
                     "path_angle": -58.8})
-    dcheck._checked_root(long_, targets, setup, None, lines.append, lambda v: dict(v))
+    dcheck.checked_root(long_, targets, setup, None, lines.append, lambda v: dict(v))
     assert "ellipse_length 0.65" in lines[0] and "root_relief 60" in lines[0]
 
 
@@ -1323,18 +1323,18 @@ def test_a_design_missing_a_target_with_a_blade_angle_gets_the_root_relief_inste
     tilted = chosen({"blade_angle_change": -0.177, "root_relief": 39.0,
                      "relief_start": 0.25})
     assert tilted.full[1]["length"] > 0.0 and not tilted.met
-    got = dcheck._checked_blade(tilted, targets, setup, None, lines.append,
-                                lambda v: dict(v))
+    got = dcheck.checked_blade(tilted, targets, setup, None, lines.append,
+                               lambda v: dict(v))
     assert got.values == {"blade_angle_change": 0.0, "root_relief": 60.0,
                           "relief_start": 0.2}
     assert got.met and len(lines) == 1 and "without its blade-angle change" in lines[0]
     # no blade-angle change, or every target met: nothing analysed
     flat = chosen({"blade_angle_change": 0.0, "root_relief": 40.0, "relief_start": 0.25})
     assert not flat.met
-    assert dcheck._checked_blade(flat, targets, setup, None, lines.append,
-                                 lambda v: dict(v)) is flat
-    assert dcheck._checked_blade(got, targets, setup, None, lines.append,
-                                 lambda v: dict(v)) is got
+    assert dcheck.checked_blade(flat, targets, setup, None, lines.append,
+                                lambda v: dict(v)) is flat
+    assert dcheck.checked_blade(got, targets, setup, None, lines.append,
+                                lambda v: dict(v)) is got
     assert len(lines) == 1
 
 
@@ -1399,7 +1399,7 @@ def test_a_check_step_keeps_no_design_that_loses_the_mounting_tolerance(monkeypa
                                       full[0], full[1], full[2], "", 0.0, full=full,
                                       checked=True)
     lines = []
-    got = dcheck._checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
+    got = dcheck.checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
     assert got is start
     assert sum("not kept" in line and "plastic" in line for line in lines) == 2
 

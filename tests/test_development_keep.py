@@ -68,7 +68,7 @@ def test_the_keep_rule_asks_better_then_lost_then_tolerant(monkeypatch):
 
 
 def test_the_path_step_of_a_height_design_asks_no_tolerance_it_cannot_use(monkeypatch):
-    """Under a height step (:func:`_kept_step`), a path design that ranks better than the
+    """Under a height step (:func:`kept_height_step`), a path design that ranks better than the
     height design but not better than the design kept (``bar``) cannot be the outcome: it
     is not asked for its tolerance (no excursion analysis), and the outcome is the one
     without the bar. Stand-in analyses: the LTE falls as the path turns, never below the
@@ -94,13 +94,13 @@ def test_the_path_step_of_a_height_design_asks_no_tolerance_it_cannot_use(monkey
                    _metrics(lte_peak_to_peak=[45.0, 45.0]))
     lines = []
     # without the bar: the path design is kept over the height design (asked its tolerance)
-    alone = dcheck._checked_path(height, targets, setup, None, lines.append,
-                                 lambda v: dict(v))
+    alone = dcheck.checked_path(height, targets, setup, None, lines.append,
+                                lambda v: dict(v))
     assert alone is not height and excursions
     assert math.isclose(float(alone.metrics["lte_peak_to_peak"][1]), 70.0)
     # the height step: the outcome is the kept design either way, no excursion asked
     excursions.clear()
     setup = {"torques": [50.0, 330.0], "centre_v": 0.6}  # no memo of the run above
-    got = dcheck._kept_step(height, kept, targets, setup, None, lines.append,
-                            lambda v: dict(v))
+    got = dcheck.kept_height_step(height, kept, targets, setup, None, lines.append,
+                                   lambda v: dict(v))
     assert got is kept and excursions == []

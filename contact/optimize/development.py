@@ -40,8 +40,8 @@ positions, 12 segments per curve, shell compliance with the teeth kept across de
 :class:`KeptTeeth`; no root stress) at the light and the design torque, summarised by
 :func:`contact.study.summary.point_summary`. The best designs are then checked at
 ``ltca run``'s sampling (:data:`CHECK_LTCA`), the chosen one given the TE stage's steps
-again (:func:`_checked_te`) and its path turned towards the profile where it misses its
-length or LTE there (:func:`_checked_path`), and where the chosen one's flank peak
+again (:func:`checked_te`) and its path turned towards the profile where it misses its
+length or LTE there (:func:`checked_path`), and where the chosen one's flank peak
 pressure at the rating's capacity exceeds the static strength the design torque is
 lowered to what the bearing carries (:func:`static_capacity`): a design never fails its
 own check at its own design torque; where it exceeds the local pitting limit, a longer
@@ -634,19 +634,12 @@ def _regained(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTarge
     torques and source updated where kept. Returns the design, the case's torque phrase
     and S_F,FE at the design torque."""
     from contact.optimize.development_regain import tolerant_raise
-    from contact.optimize.development_root import regained_capacity
 
     torque = float(setup["torques"][1])
-    up = regained_capacity(case, setup, targets.light_load, ceiling, say)
+    up = _raised_to(case, best, targets, setup, ceiling, torque, say)
     if up is None:
         return best, root_text, root_safety
-    tree, torques, new, safety = up
-    raised = rescored(best, tree, case, targets, setup)
-    lost = _lost_at(best, raised)
-    if lost:
-        say(f"  design torque not raised {torque:.4g} -> {new:.4g} N m on the bearing "
-            f"developed at it: it would miss {', '.join(lost)}")
-        return best, root_text, root_safety
+    raised, torques, new, safety = up
     held = tolerant_raise(case, targets, setup, teeth, best.values, new, say)
     tolerance = ""
     if not held.holds:
@@ -659,17 +652,11 @@ def _regained(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTarge
                 f"developed at it: {why}")
             return best, root_text, root_safety
         # below the capacity found: every criterion holds there (S falls with T)
-        up = regained_capacity(case, setup, targets.light_load, held.torque, say)
+        up = _raised_to(case, best, targets, setup, held.torque, torque, say,
+                        " (the mounting tolerance's)")
         if up is None:
             return best, root_text, root_safety
-        tree, torques, capacity, safety = up
-        raised = rescored(best, tree, case, targets, setup)
-        lost = _lost_at(best, raised)
-        if lost:
-            say(f"  design torque not raised {torque:.4g} -> {capacity:.4g} N m (the "
-                f"mounting tolerance's) on the bearing developed at it: it would miss "
-                f"{', '.join(lost)}")
-            return best, root_text, root_safety
+        raised, torques, capacity, safety = up
         tolerance = (f" — its capacity {new:.4g} N m, the mounting tolerance it has at "
                      f"{torque:.4g} N m held up to {held.torque:.4g} N m (not at "
                      f"{held.fails:.4g}; at {new:.4g} N m {'; '.join(held.lost)})")
@@ -683,6 +670,30 @@ def _regained(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTarge
            ", the mounting tolerance kept") + ")")
     setup.update(torques=torques, source=source)
     return raised, source, safety
+
+
+def _raised_to(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTargets,
+               setup: dict[str, Any], ceiling: float, torque: float,
+               say: Callable[[str], None], what: str = ""
+               ) -> tuple[DevelopmentEvaluation, tuple, float, float] | None:
+    """:func:`_regained`'s raise from the design torque ``torque`` towards ``ceiling``
+    [N·m] (:func:`contact.optimize.development_root.regained_capacity`), the drive design
+    re-scored at it (:func:`rescored`): the design, the torques, the torque raised to
+    [N·m] and its S_F,FE; None where it raises nothing or the design would lose a target
+    it met (said, ``what`` after the torque: which raise)."""
+    from contact.optimize.development_root import regained_capacity
+
+    up = regained_capacity(case, setup, targets.light_load, ceiling, say)
+    if up is None:
+        return None
+    tree, torques, new, safety = up
+    raised = rescored(best, tree, case, targets, setup)
+    lost = _lost_at(best, raised)
+    if lost:
+        say(f"  design torque not raised {torque:.4g} -> {new:.4g} N m{what} on the bearing "
+            f"developed at it: it would miss {', '.join(lost)}")
+        return None
+    return raised, torques, new, safety
 
 
 def _lost_at(best: DevelopmentEvaluation, raised: DevelopmentEvaluation) -> list[str]:

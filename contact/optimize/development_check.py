@@ -5,11 +5,11 @@ tolerance.
 
 :func:`checked_best` checks the best designs in turn until one meets every target (one
 Newton step of the blade angle where it misses the centre v); :func:`check_steps` then
-gives the chosen design the TE stage again (:func:`_checked_te`), its path turned towards
-the profile (:func:`_checked_path`, :data:`PATH_STEPS`), a shorter tip relief
-(:func:`_checked_tip`, :data:`TIP_FRACTIONS`) and the root relief with a longer ellipse
-(:func:`_checked_root`) for a pattern high on the flank, each kept where it scores better
-and stays tolerant (:func:`_tolerant_variant`); :func:`steps_on_each` gives them to the
+gives the chosen design the TE stage again (:func:`checked_te`), its path turned towards
+the profile (:func:`checked_path`, :data:`PATH_STEPS`), a shorter tip relief
+(:func:`checked_tip`, :data:`TIP_FRACTIONS`) and the root relief with a longer ellipse
+(:func:`checked_root`) for a pattern high on the flank, each kept where it scores better
+and stays tolerant (:func:`tolerant_variant`); :func:`steps_on_each` gives them to the
 other checked designs too while the best misses a target; :func:`checked_tolerance` raises
 the tip, then the root relief of a chosen design that meets every target but not the
 mounting excursions' edges, and where that does not make it tolerant
@@ -39,14 +39,16 @@ name.
 
 This module keeps the check's core — the designs checked (:func:`checked_best`,
 :func:`cut_variant`, :func:`placed_case`), the chosen design's steps in order
-(:func:`check_steps`, :func:`steps_on_each`) with its own TE, path, blade, tip and root
-steps, and the design torque capped (:func:`static_capacity`,
-:func:`checked_root_capacity`, :func:`rescored`); the rest is split by concern (issue 71,
-Deliver 5), each public name re-exported here: a step's design placed, analysed and
-scored in :mod:`contact.optimize.development_variant`, the keep rule in
-:mod:`contact.optimize.development_keep`, the mounting tolerance in
-:mod:`contact.optimize.development_tolerance`, the pattern's length and place in
-:mod:`contact.optimize.development_pattern_steps`, the drive LTE steps in
+(:func:`check_steps`, :func:`steps_on_each`), and the design torque capped
+(:func:`static_capacity`, :func:`checked_root_capacity`, :func:`rescored`); the rest is
+split by concern (issue 71, Deliver 5), each public name re-exported here: a step's
+design placed, analysed and scored in :mod:`contact.optimize.development_variant`, the
+keep rule in :mod:`contact.optimize.development_keep`, the TE step in
+:mod:`contact.optimize.development_te_steps`, the path step in
+:mod:`contact.optimize.development_path_steps`, the blade, tip and root steps (the
+pattern's height) in :mod:`contact.optimize.development_height_steps`, the mounting
+tolerance in :mod:`contact.optimize.development_tolerance`, the pattern's length and
+place in :mod:`contact.optimize.development_pattern_steps`, the drive LTE steps in
 :mod:`contact.optimize.development_lte_steps`, the coast flank's steps in
 :mod:`contact.optimize.development_coast_steps`. Where a test replaces a name a step
 looks up, it patches the module that step is in.
@@ -84,6 +86,15 @@ from contact.optimize.development_evaluate import (
     grid_bounds,
     static_strength,
 )
+from contact.optimize.development_height_steps import (  # noqa: F401  (re-exported)
+    ROOT_STEP_ELLIPSE,
+    TIP_FRACTIONS,
+    checked_blade,
+    checked_root,
+    checked_tip,
+    kept_height_step,
+    pattern_high,
+)
 from contact.optimize.development_keep import (  # noqa: F401  (re-exported)
     kept_why,
     lost_but_length,
@@ -91,7 +102,6 @@ from contact.optimize.development_keep import (  # noqa: F401  (re-exported)
     pressure_raised,
     ranks_better,
 )
-from contact.optimize.development_keep import ranks_better as _ranks_better
 from contact.optimize.development_lte_steps import (  # noqa: F401  (re-exported)
     CROWNING_LTE_FRACTIONS,
     ELLIPSE_STEP,
@@ -105,6 +115,12 @@ from contact.optimize.development_lte_steps import (  # noqa: F401  (re-exported
     crossing_level,
     long_bearing,
     shallower_root_relief,
+)
+from contact.optimize.development_path_steps import (  # noqa: F401  (re-exported)
+    GENERATED_PATH_LIMIT,
+    GENERATED_PATH_STEPS,
+    PATH_STEPS,
+    checked_path,
 )
 from contact.optimize.development_pattern_steps import (  # noqa: F401  (re-exported)
     CENTRE_U_AIM,
@@ -138,11 +154,10 @@ from contact.optimize.development_result import (
 from contact.optimize.development_stages import footprint_centre_v
 from contact.optimize.development_targets import (
     HEIGHT_NAME,
-    TE_NAME,
-    VARIABLES,
     DevelopmentTargets,
     development_score,
 )
+from contact.optimize.development_te_steps import checked_te
 from contact.optimize.development_tolerance import (  # noqa: F401  (re-exported)
     LENGTH_PER_ELLIPSE,
     SHORTER_ELLIPSE_STEP,
@@ -159,7 +174,6 @@ from contact.optimize.development_tolerance import (  # noqa: F401  (re-exported
     tolerant_torque,
     tolerant_variant,
 )
-from contact.optimize.development_tolerance import tolerant_variant as _tolerant_variant
 from contact.optimize.development_variant import (  # noqa: F401  (re-exported)
     check_rank,
     checked_analysis,
@@ -168,7 +182,6 @@ from contact.optimize.development_variant import (  # noqa: F401  (re-exported)
 )
 from contact.optimize.development_variant import check_rank as _check_rank
 from contact.optimize.development_variant import checked_variant as _checked_variant
-from contact.optimize.development_variant import said_variant as _said_variant
 from geometry.case import Case
 from geometry.core.errors import InputError
 from geometry.synthesis.basic_design import (
@@ -260,48 +273,19 @@ def cut_variant(placed: Callable[[Mapping[str, float]], Case], values: Mapping[s
     return best[1], values | {"root_relief": best[0]}
 
 
-def _checked_te(best: DevelopmentEvaluation, targets: DevelopmentTargets,
-                setup: Mapping[str, Any], teeth: KeptTeeth, say: Callable[[str], None],
-                placed: Callable[[Mapping[str, float]], Case], level: float
-                ) -> DevelopmentEvaluation:
-    """The TE stage again at the check: where the chosen design misses the LTE target at
-    ``ltca run``'s sampling (the coarse LTCA's LTE is a few µrad low: 38 against 43 µrad
-    on the face-hobbed hypoid 11x43 of tests/data/designs, whose search stopped at its
-    fifth design, every target met coarsely), its ``te_level`` lowered by 20 µrad, then
-    to the lower bound, each design placed and checked at :data:`CHECK_LTCA` and kept
-    where it scores better (:func:`_te_stage`'s steps; at most 2 designs). ``level``: the
-    flank's own TE level [µrad], where the design's values do not give one."""
-    if (TE_NAME not in targets.variables or best.full is None or not best.checked
-            or best.full[1]["lte"] == 0.0):
-        return best
-    lo, hi = targets.variables[TE_NAME]
-    current = float(best.values.get(TE_NAME, level))
-    for x in (max(lo, min(hi, current) - 20.0), lo):
-        if best.full[1]["lte"] == 0.0 or x >= current - 1e-9:
-            break
-        e = _said_variant(best, best.values | {TE_NAME: float(x)}, "te",
-                          f"at {TE_NAME} {x:.3g} urad", targets, setup, teeth, say, placed)
-        if e is None:
-            break
-        if _check_rank(e) >= _check_rank(best):
-            break
-        best, current = e, float(x)
-    return best
-
-
 def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
                 setup: Mapping[str, Any], teeth: KeptTeeth, say: Callable[[str], None],
                 placed: Callable[[Mapping[str, float]], Case], level: float,
                 slopes: Mapping[tuple, float] | None = None) -> DevelopmentEvaluation:
     """The check's steps on the chosen design at the development's torques
-    (``setup["torques"]``): the TE stage again (:func:`_checked_te`), then the path turned
-    towards the profile (:func:`_checked_path`), each only where the design misses its LTE
+    (``setup["torques"]``): the TE stage again (:func:`checked_te`), then the path turned
+    towards the profile (:func:`checked_path`), each only where the design misses its LTE
     or length there; where it misses its light-load centre u, M placed off the mean cone
     distance (:func:`checked_centre_u`); where it still misses a target with a
-    blade-angle change, the height by the root relief instead (:func:`_checked_blade`);
+    blade-angle change, the height by the root relief instead (:func:`checked_blade`);
     then, where its light-load pattern is above its depth centre's tolerance, a shorter tip relief
-    (:func:`_checked_tip`) and, where that did not centre it, the root relief with a
-    longer ellipse (:func:`_checked_root`); where it is still high with plastic segments
+    (:func:`checked_tip`) and, where that did not centre it, the root relief with a
+    longer ellipse (:func:`checked_root`); where it is still high with plastic segments
     and not tolerant itself, both reliefs with the bearing turned, judged against its own
     tolerance (:func:`contact.optimize.development_height_relief.checked_height_relief`);
     last, where the LTE is still missed, the
@@ -334,12 +318,12 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     scored better)."""
     from contact.optimize.development_profile_ratio import checked_profile_ratio
 
-    best = _checked_te(best, targets, setup, teeth, say, placed, level)
-    best = _checked_path(best, targets, setup, teeth, say, placed)
+    best = checked_te(best, targets, setup, teeth, say, placed, level)
+    best = checked_path(best, targets, setup, teeth, say, placed)
     best = checked_centre_u(best, targets, setup, teeth, say, placed)
-    best = _checked_blade(best, targets, setup, teeth, say, placed)
-    best = _checked_tip(best, targets, setup, teeth, say, placed)
-    best = _checked_root(best, targets, setup, teeth, say, placed)
+    best = checked_blade(best, targets, setup, teeth, say, placed)
+    best = checked_tip(best, targets, setup, teeth, say, placed)
+    best = checked_root(best, targets, setup, teeth, say, placed)
     from contact.optimize.development_height_relief import checked_height_relief
     best = checked_height_relief(best, targets, setup, teeth, say, placed)
     best = checked_ellipse(best, targets, setup, teeth, say, placed)
@@ -358,12 +342,6 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     best = load_lte.checked_relief_ellipse_lte(best, targets, setup, teeth, say, placed)
     return checked_near_miss(best, targets, setup, teeth, say, placed, level,
                              slope=(slopes or {}).get(bearing_key(best.values)))
-
-
-#: the check's shorter tip reliefs (:func:`_checked_tip`), fractions of the chosen
-#: design's tip relief, each started at the upper bound of ``tip_relief_start``, tried in
-#: turn until one meets every target
-TIP_FRACTIONS = (0.8, 2.0 / 3.0, 0.5)
 
 
 def steps_on_each(chosen: DevelopmentEvaluation, others: list[DevelopmentEvaluation],
@@ -389,312 +367,6 @@ def steps_on_each(chosen: DevelopmentEvaluation, others: list[DevelopmentEvaluat
         again = steps(e)
         if _check_rank(again) < _check_rank(best):
             best = again
-    return best
-
-
-def _pattern_high(best: DevelopmentEvaluation, targets: DevelopmentTargets,
-                  setup: Mapping[str, Any], names: tuple[str, ...]) -> bool:
-    """Whether a height step (:func:`_checked_tip`, :func:`_checked_root`) applies: the
-    design was checked at :data:`CHECK_LTCA` and misses its light-load centre v there,
-    its footprint centre v (finite) at or above the target centre (``pattern_centre_v``,
-    else the setup's ``centre_v``), and every variable of ``names`` is developed."""
-    if (best.full is None or not best.checked or best.full[1]["centre_v"] == 0.0
-            or not all(n in targets.variables and n in best.values for n in names)
-            or not math.isfinite(footprint_centre_v(best))):
-        return False
-    target = (targets.pattern_centre_v if targets.pattern_centre_v is not None
-              else setup["centre_v"])
-    return footprint_centre_v(best) >= target
-
-
-def _checked_tip(best: DevelopmentEvaluation, targets: DevelopmentTargets,
-                 setup: Mapping[str, Any], teeth: KeptTeeth, say: Callable[[str], None],
-                 placed: Callable[[Mapping[str, float]], Case]) -> DevelopmentEvaluation:
-    """A pattern still above its depth centre at the check lowered by a shorter tip
-    relief: where the checked design's light-load footprint centre v is above its
-    tolerance and its edge share at the design torque at most half its limit, the tip
-    relief shortened to each of :data:`TIP_FRACTIONS` of the design's and started at the
-    upper bound of ``tip_relief_start``, in turn; each design placed and checked at
-    :data:`CHECK_LTCA`, then, where it misses the pattern length or the LTE, given the
-    path step (:func:`_checked_path`); kept where it scores better and is tolerant,
-    until one meets every target (at most 3 designs, each with its path step's 2).
-
-    Why: the pinion's tip meets the gear's flank low in its working depth, so the tip
-    relief takes the lower part of the light-load pattern away and raises its centre,
-    without the unloaded TE the blade angle costs (docs/own_gear_set.md, "The pattern's
-    height"); the edge share at the design torque and the edges at the mounting
-    excursions are what bound it. Measured at ``ltca run``'s sampling (2026-11-25): on
-    the spiral bevel 13x39 of tests/data/designs (36.98 / 246.5 N m, path −66.9°,
-    ellipse 0.75, root relief 40 µm from 0.2), tip relief 15 µm from 0.85 of the way:
-    centre v 0.64 (target 0.548 ± 0.08), LTE 17 / 44 µrad; 12 µm from 0.9: 0.63, 15 / 44;
-    10 µm: 0.62, 14 / 49; 7.5 µm: 0.61, 15 / 43 but 1.6 % of the design torque plastic at
-    ΔE +0.05 mm; 12 µm from 0.9 with the path −80° (the path step): LTE 10 / 38 µrad,
-    every target met, tolerant. On the hypoid 12x41 at Σ 85° (66.48 / 443.2 N m, path
-    −60°, ellipse 0.7): 15 µm from 0.85: v 0.63 (0.545 ± 0.08); 12 µm from 0.9: 0.62,
-    pattern 0.62 long, tolerant; 10 µm: 0.62, every target met but 0.5 % plastic at ΔE
-    +0.05 mm; 12 µm with the path −75°, ellipse 0.65: every target met, tolerant. The
-    single step of half the tip relief before (7.5 µm) uncovered the tip edge on both."""
-    names = ("tip_relief", "tip_relief_start")
-    if (not _pattern_high(best, targets, setup, names)
-            or float(best.metrics["edge_load_share"][1]) > 0.5 * targets.max_edge_share):
-        return best
-    (r_lo, r_hi), (_, s_hi) = (targets.variables[n] for n in names)
-    start, tried = best, []
-    for fraction in TIP_FRACTIONS:
-        values = start.values | {
-            "tip_relief": float(np.clip(fraction * start.values["tip_relief"], r_lo, r_hi)),
-            "tip_relief_start": float(s_hi)}
-        if values in tried or all(values[n] == start.values[n] for n in names):
-            continue
-        tried.append(values)
-        e = _said_variant(start, values, "tip",
-                          f"with tip_relief {values['tip_relief']:.3g} from "
-                          f"{values['tip_relief_start']:.3g}", targets, setup, teeth, say,
-                          placed)
-        if e is None:
-            continue
-        best = _kept_step(e, best, targets, setup, teeth, say, placed)
-        if best.met:
-            break
-    return best
-
-
-def _kept_step(e: DevelopmentEvaluation, best: DevelopmentEvaluation,
-               targets: DevelopmentTargets, setup: Mapping[str, Any], teeth: KeptTeeth,
-               say: Callable[[str], None],
-               placed: Callable[[Mapping[str, float]], Case]) -> DevelopmentEvaluation:
-    """A height step's design ``e`` (:func:`_checked_tip`, :func:`_checked_root`) given
-    the path step (:func:`_checked_path`, only where it misses the pattern length or the
-    LTE), then kept over ``best`` where it scores better and is tolerant
-    (:func:`_tolerant_variant`; a design the path step kept is already); the better of
-    the two returned. The tip edge a shorter tip relief uncovers must stay elastic at the
-    mounting excursions (the 13x39's 7.5 µm from 0.9: 0.3–1.6 % of the design torque
-    plastic at ΔE +0.05 mm)."""
-    turned = _checked_path(e, targets, setup, teeth, say, placed, bar=best)
-    if _check_rank(turned) >= _check_rank(best):
-        return best
-    if turned is not e or _tolerant_variant(turned, targets, setup, teeth, say):
-        return turned
-    return best
-
-
-def _checked_blade(best: DevelopmentEvaluation, targets: DevelopmentTargets,
-                   setup: Mapping[str, Any], teeth: KeptTeeth, say: Callable[[str], None],
-                   placed: Callable[[Mapping[str, float]], Case]) -> DevelopmentEvaluation:
-    """The pattern's height by the root relief instead of the blade angle: where the
-    checked design misses a target and carries a blade-angle change, one design without
-    it and with the root relief at its upper bound from the lower bound of
-    ``relief_start`` (the height stage's first lever); placed and checked at
-    :data:`CHECK_LTCA`, given the path step where it misses the length or the LTE, kept
-    where it scores better and is tolerant (:func:`_kept_step`); the tip and root steps
-    after it lower a pattern it leaves high.
-
-    Why: the blade-angle change centres the pattern but walks it towards the heel and
-    costs unloaded TE (docs/own_gear_set.md, "The pattern's height"). Measured on an
-    industrial spiral bevel 12x48 (d_e2 400 mm, b2 60 mm, β_m 35°, Method 0; ``ltca
-    run``'s sampling at 273.45 / 1823 N m, path −75°, ellipse 0.45, 2026-11-25): blade
-    angle −0.177°: centre v 0.55, pattern 0.65 long (0.5 ± 0.1), LTE 30 / 36 µrad,
-    unloaded TE 114 µrad; the ellipse shortened to 0.35 for the length: 54 / 54 µrad; no
-    blade-angle change, root relief 60 µm from 0.2: v 0.62, 0.50 long, LTE 13 / 21 µrad,
-    every target met, tolerant."""
-    names = (HEIGHT_NAME, "root_relief", "relief_start")
-    if (best.full is None or not best.checked or best.met
-            or not all(n in targets.variables and n in best.values for n in names)
-            or best.values[HEIGHT_NAME] == 0.0):
-        return best
-    (_, r_hi), (s_lo, _) = (targets.variables[n] for n in names[1:])
-    values = best.values | {HEIGHT_NAME: 0.0, "root_relief": float(r_hi),
-                            "relief_start": float(s_lo)}
-    e = _said_variant(best, values, "height",
-                      f"without its blade-angle change, root_relief "
-                      f"{values['root_relief']:.3g} from {values['relief_start']:.3g}",
-                      targets, setup, teeth, say, placed)
-    if e is None:
-        return best
-    return _kept_step(e, best, targets, setup, teeth, say, placed)
-
-
-#: the check's root relief step (:func:`_checked_root`): the ellipse lengthened by this
-#: [1] with the root relief at its upper bound
-ROOT_STEP_ELLIPSE = 0.1
-
-
-def _checked_root(best: DevelopmentEvaluation, targets: DevelopmentTargets,
-                  setup: Mapping[str, Any], teeth: KeptTeeth, say: Callable[[str], None],
-                  placed: Callable[[Mapping[str, float]], Case]) -> DevelopmentEvaluation:
-    """A pattern still above its depth centre after the tip step lowered by the root
-    relief, its LTE bought back by a longer ellipse: where the checked design's
-    footprint centre v is above its tolerance, the root relief at its upper bound from
-    the lower bound of ``relief_start`` (the height stage's lever,
-    :func:`contact.optimize.development_stages._root_relief_height`) and the ellipse
-    lengthened by :data:`ROOT_STEP_ELLIPSE` where the pattern stays within its length
-    tolerance by that; one design (a synthesis of steps 3-6) placed and checked at
-    :data:`CHECK_LTCA`, given the path step where it misses the length or the LTE, kept
-    where it scores better and is tolerant (:func:`_kept_step`).
-
-    Why: the pinion's root relief takes the gear's tip band (which meets the pinion's
-    root) out of the light-load footprint, but the load it leaves raises the LTE at the
-    design torque, which is why the search does not keep it; a longer ellipse (less
-    lengthwise crowning) lowers that LTE again. Measured at ``ltca run``'s sampling on a
-    hypoid 9x41 at Σ 95° (d_e2 230 mm, a 30 mm, Method 1; 62.25 / 415 N m, path −58.8°,
-    tip relief 15 µm from 0.85, 2026-11-25): ellipse 0.55, root relief 40 µm from 0.2:
-    centre v 0.62 (0.542 ± 0.08, missed), LTE 35 / 38 µrad, 2.0 % on edges at ΔE −0.05 mm
-    (not tolerant); root relief 60 µm: v 0.61 but LTE 37 / 44 µrad; with the ellipse
-    0.65: v 0.61, LTE 23 / 29 µrad, edge 0.9 %, every target met, tolerant. Where the
-    edge share leaves no room for a shorter tip relief (1.5 % at the design torque
-    there), this is the height's lever left: the blade-angle change costs about 1 µrad
-    of unloaded TE per 0.001° (39 → 49 → 65 µrad at 0, −0.03°, −0.06°)."""
-    names = ("root_relief", "relief_start", "ellipse_length")
-    if not _pattern_high(best, targets, setup, names):
-        return best
-    (_, r_hi), (s_lo, _), (e_lo, e_hi) = (targets.variables[n] for n in names)
-    length = best.metrics["pattern_heel_u"][0] - best.metrics["pattern_toe_u"][0]
-    room = (length + ROOT_STEP_ELLIPSE
-            <= targets.pattern_length + targets.pattern_length_tolerance + 1e-9)
-    values = best.values | {
-        "root_relief": float(r_hi), "relief_start": float(s_lo),
-        "ellipse_length": float(np.clip(best.values["ellipse_length"]
-                                        + (ROOT_STEP_ELLIPSE if room else 0.0), e_lo, e_hi))}
-    if all(values[n] == best.values[n] for n in names):
-        return best
-    e = _said_variant(best, values, "root",
-                      f"with root_relief {values['root_relief']:.3g} from "
-                      f"{values['relief_start']:.3g}, ellipse_length "
-                      f"{values['ellipse_length']:.3g}", targets, setup, teeth, say, placed)
-    if e is None:
-        return best
-    return _kept_step(e, best, targets, setup, teeth, say, placed)
-
-
-#: the check's steps of the path angle towards the profile [deg] and of the ellipse
-#: [1] (:func:`_checked_path`): one design each
-PATH_STEPS = ((-15.0, -0.05), (-30.0, -0.1))
-
-
-#: the check's steps of the path angle towards the profile [deg] and of the ellipse [1]
-#: where a **generated** gear's light-load pattern is too short (:func:`_checked_path`):
-#: the turns of :data:`PATH_STEPS` with the ellipse lengthened by 0.04 (0.05 and more
-#: ran the 20x30's pattern onto the heel at the mounting excursions) and the far turn
-#: without it (at the ISO capacity the longer ellipse loads the heel edge; after the
-#: design torque is lowered the steps run again, and there it does not)
-GENERATED_PATH_STEPS = ((-15.0, 0.04), (-30.0, 0.0), (-30.0, 0.04))
-
-
-#: [deg] how far :data:`GENERATED_PATH_STEPS` turn the path where the development's
-#: ``path_angle`` bounds are the defaults (:data:`~contact.optimize.development_targets.
-#: VARIABLES`, whose −80° the Formate designs' steps keep): nearly along the profile,
-#: where the light-load pattern is the ellipse alone and the most tooth pairs share the
-#: transfer (the 20x30's numbers in :func:`_checked_path`)
-GENERATED_PATH_LIMIT = -88.0
-
-
-def _checked_path(best: DevelopmentEvaluation, targets: DevelopmentTargets,
-                  setup: Mapping[str, Any], teeth: KeptTeeth, say: Callable[[str], None],
-                  placed: Callable[[Mapping[str, float]], Case], *,
-                  bar: DevelopmentEvaluation | None = None) -> DevelopmentEvaluation:
-    """The chosen design's bearing turned towards the profile at the check: where it
-    misses the pattern length or the LTE at ``ltca run``'s sampling, the path angle turned
-    by :data:`PATH_STEPS` towards the profile direction (clipped to its bound) and, where
-    the pattern is too long (beyond its tolerance), the ellipse shortened with it; where
-    the LTE alone is missed, the ellipse lengthened by as much where the pattern stays
-    within its length tolerance by that; each design placed and checked at
-    :data:`CHECK_LTCA` and kept where it scores better (at most 2 designs, each a
-    synthesis of steps 3-6). ``bar``: where given (a height step's design, :func:`_kept_step`),
-    a design is kept only where it also ranks before ``bar``, the design the step's
-    outcome must beat: one that does not is not asked for its tolerance (the mounting
-    excursions, up to four coarse analyses), which could not change the outcome.
-
-    Why: the light-load pattern is the ellipse plus the path's lengthwise travel over the
-    roll of one tooth pair, and a path nearer the profile both shortens that travel and
-    keeps more tooth pairs in contact. Measured on the truck hypoid 9x37 of
-    tests/data/designs (its developed design, ``ltca run``'s sampling at 312 / 2082 N m):
-    path −58.75° / ellipse 0.55: pattern 0.62 long, LTE 39 / 38 µrad, 1.55 pairs in
-    contact at light load; −70° / 0.55: 0.62, 18 / 20 µrad, 1.70; −80° / 0.45: 0.58, 25 /
-    23 µrad, 1.65 pairs, every target met; the ellipse alone 0.55 → 0.45 at −58.75°:
-    0.53 long but 71 / 64 µrad (docs/synthesis.md, "What sets the pattern and the
-    LTE"). A longer ellipse (less lengthwise crowning) lowers the LTE at the design
-    torque, where a spiral bevel's LTE is made: on the spiral bevel 13x39 (its developed
-    design, path −66.9°, ellipse 0.7, ``ltca run``'s sampling at 36.98 / 246.5 N m; LTE
-    19 / 50 µrad, pattern 0.53 long) the ellipse 0.75 gave 17 / 44 µrad, 0.55 long, as
-    the path −75° did; the earlier rule, the ellipse shortened wherever the pattern was
-    longer than its target's middle, had taken it from 0.75 to 0.7 (2026-11-25).
-
-    A **generated** gear's pattern too short (below the target's middle, beyond its
-    tolerance) takes :data:`GENERATED_PATH_STEPS` instead: the ellipse lengthened with the
-    turn, the path turned as far as :data:`GENERATED_PATH_LIMIT` where its bounds are the
-    defaults (at most 3 designs). The generated spiral bevel 20x30 of
-    tests/data/generated_gear (ε_vβ 1.26; its developed relief, ``te_level`` 10 µrad,
-    ``ltca run``'s sampling at 25.65 / 171 N m): path −80° / ellipse 0.4 (the −80° bound
-    reached): pattern 0.35–0.73, LTE 45 / 92 µrad; −88° / 0.45: 0.35–0.80, 31 / 53 µrad,
-    edge 0.5 %, no plastic segment; the pattern's heel end jumps to the heel at 0.47 (its
-    ease-off falls towards the heel at the tip), so 0.04 per step. At the ISO capacity
-    (41.5 / 276.7 N m) −88° / 0.4 gives 30 / 62 µrad, no plastic, and −88° / 0.45 2.1 % of
-    the torque plastic at the heel. With steps of 0.05 its development wrote −88° / 0.4
-    (``ltca run`` at 26.3 / 175.6 N m: 38.7 / 81.7 µrad, against 43.3 / 92.4 at −80°): the
-    0.45 reaches the heel at the mounting excursions, not kept; at those torques −88° /
-    0.44 gives 0.35–0.78, 32 / 58 µrad and stays clear of toe and heel at every
-    excursion (docs/synthesis.md, "Why the pattern is short and the LTE high"). Formate
-    designs keep :data:`PATH_STEPS` (their developed
-    cases unchanged); where their pattern is too short and no turn is left (the path at
-    its bound already, or the step's turn clipped to a path tried), the step lengthens the
-    ellipse by its amount instead (a face-hobbed hypoid 5x45 at a 50 mm offset,
-    benchmarks/data/unseen_designs: −65.6° → −80°, ellipse 0.625, pattern 0.35 long at
-    4.6 N m, where nothing more was tried)."""
-    names = ("path_angle", "ellipse_length")
-    if (best.full is None or not best.checked
-            or not all(n in targets.variables and n in best.values for n in names)):
-        return best
-    short = best.full[1]
-    if short["length"] == 0.0 and short["lte"] == 0.0:
-        return best
-    (p_lo, p_hi), (e_lo, e_hi) = (targets.variables[n] for n in names)
-    length = best.metrics["pattern_heel_u"][0] - best.metrics["pattern_toe_u"][0]
-    longest = targets.pattern_length + targets.pattern_length_tolerance
-    base, tried = best, []
-    # a generated gear's pattern too short: the ellipse lengthened at each turn, the path
-    # turned nearly along the profile where the bounds are the defaults
-    lengthen = (getattr(getattr(best.case, "gear", None), "process", None) == "Generate"
-                and short["length"] > 0.0 and length < targets.pattern_length)
-    if lengthen and tuple(targets.variables["path_angle"]) == tuple(VARIABLES["path_angle"]):
-        p_lo = min(p_lo, GENERATED_PATH_LIMIT)
-    for turn, shorter in GENERATED_PATH_STEPS if lengthen else PATH_STEPS:
-        # the ellipse shortened where the pattern is too long; lengthened where the LTE
-        # alone is missed and the pattern has room for it (the lengthwise crowning
-        # lowered: more of the face carries the transfer at the design torque)
-        change = (shorter if lengthen
-                  else shorter if short["length"] > 0.0 and length > targets.pattern_length
-                  else -shorter if short["length"] == 0.0 and length - shorter <= longest
-                  else 0.0)
-        path = float(np.clip(base.values["path_angle"] + turn, p_lo, p_hi))
-        if (not lengthen and short["length"] > 0.0 and length < targets.pattern_length
-                and (path == base.values["path_angle"]
-                     or any(t["path_angle"] == path for t in tried))):
-            # a Formate design's pattern too short with no turn left (the path at its
-            # bound already, or the turn clipped to a path tried): the ellipse lengthened
-            # by as much instead (less lengthwise crowning) — the face-hobbed 5x45 of
-            # unseen round 10 (−65.6° → −80°, ellipse 0.625: pattern 0.35 long at its
-            # light torque 4.6 N m) tried nothing more
-            change = -shorter
-            log.info("check: the pattern %.3g long with the path at its bound %.3g deg: "
-                     "the ellipse %.3g longer", length, path, change)
-        values = base.values | {
-            "path_angle": path,
-            "ellipse_length": float(np.clip(base.values["ellipse_length"] + change,
-                                            e_lo, e_hi))}
-        if values in tried or all(values[n] == base.values[n] for n in names):
-            continue
-        tried.append(values)
-        e = _said_variant(best, values, "path",
-                          f"with path_angle {values['path_angle']:.3g}, ellipse_length "
-                          f"{values['ellipse_length']:.3g}", targets, setup, teeth, say,
-                          placed)
-        if e is not None and not kept_why(
-                best, e, targets, setup, teeth, say,
-                better=lambda b, x: _ranks_better(b, x) and (bar is None
-                                                             or _ranks_better(bar, x))):
-            best = e
-            if e.met:
-                break
     return best
 
 

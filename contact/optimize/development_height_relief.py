@@ -2,11 +2,11 @@
 itself (issue 71): both pinion reliefs moved together, the bearing turned towards the
 profile with them, each judged against the design's own tolerance.
 
-The check's height steps (:mod:`contact.optimize.development_check`) each move one
+The check's height steps (:mod:`contact.optimize.development_height_steps`) each move one
 relief and keep a design only where it is tolerant at the mounting excursions: the tip
-step (``_checked_tip``, a shorter tip relief) is barred where the design torque's edge
-share exceeds half its limit, the root step (``_checked_root``, the root relief at its
-upper bound) is refused on the tolerance, and the blade step (``_checked_blade``) acts
+step (``checked_tip``, a shorter tip relief) is barred where the design torque's edge
+share exceeds half its limit, the root step (``checked_root``, the root relief at its
+upper bound) is refused on the tolerance, and the blade step (``checked_blade``) acts
 only on a design with a blade-angle change. On a design whose light-load pattern runs onto
 the gear's tip (its edge share is the gear tip on the pinion's root, which a tip relief
 does not touch) and which is not tolerant itself, none of them acts, and the

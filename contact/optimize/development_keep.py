@@ -165,7 +165,7 @@ def kept_why(best: DevelopmentEvaluation, e: DevelopmentEvaluation | None,
     -----
     One rule for :func:`checked_ellipse`, :func:`checked_long`,
     :func:`checked_relief_lte`, :func:`checked_crowning_lte`, :func:`checked_te_back`,
-    :func:`checked_near_miss` and :func:`_checked_path`, each of which wrote its own
+    :func:`checked_near_miss` and :func:`checked_path`, each of which wrote its own
     "better, no met target lost, tolerant" loop before (issue 71); their order of
     asking is kept, so the lines said and the analyses run are theirs.
     """

@@ -174,7 +174,7 @@ NEAR_MISS = 0.5
 #: the centre on it, a node of the check's grid off)
 NEAR_MISS_AIM = 0.25
 #: [µrad] how far the near-miss step lowers ``te_level`` with its blade-angle step (the TE
-#: stage's step at the check, :func:`_checked_te`)
+#: stage's step at the check, :func:`checked_te`)
 NEAR_MISS_TE_STEP = 20.0
 #: most designs of the near-miss step (:func:`checked_near_miss`)
 NEAR_MISS_DESIGNS = 3
@@ -339,7 +339,7 @@ def checked_centre_u(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     the design's bearing, as :func:`checked_coast_lte`'s). The centre
     v may be lost: M is centred in roll within the working depth at its new cone
     distance, which moves the pattern's height a little, and the height steps after this
-    one (:func:`_checked_tip`, :func:`_checked_root`, :func:`checked_near_miss`) take a
+    one (:func:`checked_tip`, :func:`checked_root`, :func:`checked_near_miss`) take a
     pattern off its depth band back (a blade-angle step with it was tried and cost more
     than it gave: below). A design that meets its centre u is returned as it is, without
     an analysis.

@@ -47,7 +47,7 @@ def checked_analysis(setup: Mapping[str, Any], placed: Callable[[Mapping[str, fl
     Kept in ``setup`` (key ``"check_memo"``, by ``placed``, the flank, the values, the
     torques, the pinion key and the kept teeth), an error too: a design the check's
     steps reach again — the steps of each checked design (:func:`steps_on_each`), a path
-    step after a height step (:func:`_kept_step`), the long bearing of designs that
+    step after a height step (:func:`kept_height_step`), the long bearing of designs that
     differ only in what it sets — is neither synthesised nor analysed again, the same
     numbers (issue 71: the spiral bevel 13x37 at Σ 60° checked one long bearing three
     times, each a synthesis and an ease-off that found too few nodes)."""
