@@ -3,6 +3,13 @@
     python benchmarks/warm_pair.py --before 0bca452            # 30 analyses each
     python benchmarks/warm_pair.py --before 0bca452 --runs 50 --torque 500
     python benchmarks/warm_pair.py --before /tmp/tree-0bca452  # a tree exported before
+    python benchmarks/warm_pair.py --before 0bca452 --study    # and a study point each
+
+With ``--study`` each round also runs one study point per tree (issue 75's study row,
+``benchmarks/issue75_table.py``: :func:`contact.study.engine.analyse_point` of the default
+case at 250 N·m, each round a new ΔE, ΔP, the same in both trees), so the table's warm
+and study rows are measured interleaved in one process; the study point's medians and
+paired difference are printed below the warm analysis' table.
 
 Both trees are imported into this one process, each with its own modules (``git
 archive`` of ``--before`` into a temporary directory, or a directory given, whose numba
@@ -57,10 +64,14 @@ class Tree:
         try:
             from contact.catalogue import bundled_case_path
             from contact.pipeline import run_analysis
+            from contact.study.engine import analyse_point
+            from contact.study.points import StudyInputs
             from geometry.case import load_case
 
             self.case = load_case(bundled_case_path())
             self.run_analysis = run_analysis
+            self.analyse_point = analyse_point
+            self.shared = StudyInputs(case=self.case, torque=(250.0,))
             self.clock = StageClock(EXTRA).install()
         finally:
             sys.path.remove(self.path)
@@ -75,6 +86,21 @@ class Tree:
 
     def analyse(self, torque: float) -> tuple[float, dict[str, float]]:
         """CPU seconds of one analysis and its stages [s]."""
+        return self._timed(lambda: self.run_analysis(self.case, [torque]))
+
+    def study_point(self, f: float) -> tuple[float, dict[str, float]]:
+        """CPU seconds of one study point at ΔE + 0.08 f, ΔP − 0.04 f [mm] (f in
+        [−0.5, 0.5]: ``benchmarks/sample_profile.py``'s points) and its stages [s]."""
+        m = self.case.misalignment
+        point = {"delta_E": m.delta_E + 0.08 * f, "delta_P": m.delta_P - 0.04 * f}
+
+        def run():
+            res = self.analyse_point(self.shared, 0, point)
+            if res.status == 2:
+                raise RuntimeError(f"study point {point} failed: {res.reason}")
+        return self._timed(run)
+
+    def _timed(self, task) -> tuple[float, dict[str, float]]:
         for name in [n for n in sys.modules if _ours(n)]:
             del sys.modules[name]
         sys.modules.update(self.modules)  # a module imported lazily: this tree's
@@ -82,7 +108,7 @@ class Tree:
         self.clock.reset()
         try:
             t0 = time.process_time()
-            self.run_analysis(self.case, [torque])
+            task()
             cpu = time.process_time() - t0
         finally:
             sys.path.remove(self.path)
@@ -100,6 +126,8 @@ def main(argv: list[str] | None = None) -> None:
                     help="the earlier commit (git archive), or the directory of its tree")
     ap.add_argument("--runs", type=int, default=30, help="analyses per tree (30)")
     ap.add_argument("--torque", type=float, default=250.0, help="pinion torque [N m]")
+    ap.add_argument("--study", action="store_true",
+                    help="also a study point per tree and round (issue 75's study row)")
     args = ap.parse_args(argv)
     with tempfile.TemporaryDirectory(prefix="warm_pair_") as tmp:
         before = Path(args.before)
@@ -110,13 +138,19 @@ def main(argv: list[str] | None = None) -> None:
         for tree in trees.values():  # two warm-ups each
             tree.analyse(args.torque)
             tree.analyse(args.torque)
+            if args.study:
+                tree.study_point(0.625)  # a point none of the rounds repeats
         cpu: dict[str, list[float]] = {n: [] for n in names}
         stages: dict[str, list[dict]] = {n: [] for n in names}
+        study: dict[str, list[float]] = {n: [] for n in names}
         for i in range(args.runs):
             for name in names if i % 2 == 0 else names[::-1]:
                 t, s = trees[name].analyse(args.torque)
                 cpu[name].append(t)
                 stages[name].append(s)
+                if args.study:
+                    f = (i - (args.runs - 1) / 2) / max(args.runs - 1, 1)
+                    study[name].append(trees[name].study_point(f)[0])
     chol = cholesky_seconds()
     keys = list(dict.fromkeys(k for n in names for s in stages[n] for k in s))
     rows = [[k, *(1e3 * statistics.median(s.get(k, 0.0) for s in stages[n])
@@ -135,6 +169,19 @@ def main(argv: list[str] | None = None) -> None:
     print(f"paired difference ({names[0]} − this tree): median "
           f"{1e3 * statistics.median(diff):.1f} ms, mean {1e3 * statistics.mean(diff):.1f} "
           f"± {1e3 * statistics.stdev(diff) / len(diff) ** 0.5:.1f} ms (standard error)")
+    if args.study:
+        sd = [b - a for b, a in zip(study[names[0]], study[names[1]], strict=True)]
+        ratio = [a / b for b, a in zip(study[names[0]], study[names[1]], strict=True)]
+        print(f"\nstudy point at 250 N·m, CPU [ms], {args.runs} alternated points per tree "
+              "(target 120 ms)")
+        print(tabulate([["study point (median)",
+                         *(1e3 * statistics.median(study[n]) for n in names)],
+                        ["study point (least)", *(1e3 * min(study[n]) for n in names)]],
+                       headers=["", *names], floatfmt=".1f"))
+        print(f"paired difference ({names[0]} − this tree): median "
+              f"{1e3 * statistics.median(sd):.1f} ms, mean {1e3 * statistics.mean(sd):.1f} "
+              f"± {1e3 * statistics.stdev(sd) / len(sd) ** 0.5:.1f} ms; per-point ratio "
+              f"(this tree / {names[0]}) median {statistics.median(ratio):.3f}")
 
 
 if __name__ == "__main__":

@@ -517,3 +517,52 @@ def test_point_off_the_tooth_is_named_within_its_roll():
     batch[1] = dataclasses.replace(batch[1], midpoints=far)
     with pytest.raises(InputError, match="got point 2 at"):
         mesh_compliance_many(case, batch)
+
+
+def _segment_fields(n: int = 9) -> dict:
+    rng = np.random.default_rng(75)
+    nrm = rng.normal(size=(n, 3))
+    nrm /= np.linalg.norm(nrm, axis=1)[:, None]
+    return dict(midpoints=rng.normal(size=(n, 3)), ends=rng.normal(size=(n, 2, 3)),
+                normals=nrm, length=rng.random(n) + 0.1, r_eq=rng.random(n) + 1.0,
+                pair_index=np.array([-1, 0, 1] * (n // 3)), load=rng.random(n),
+                pinion_rotation=0.25, gear_rotation=-0.125)
+
+
+def test_contact_segments_checked_at_once_store_what_the_general_checks_store():
+    """ContactSegments' one-pass check of the LTCA's float64 arrays (issue 75) stores the
+    values, dtypes and shapes the general path stores from the same data given as lists,
+    as new arrays (never the caller's)."""
+    from contact.compliance.mesh import ContactSegments
+
+    fields = _segment_fields()
+    fast = ContactSegments(**fields)
+    general = ContactSegments(**{k: v.tolist() if isinstance(v, np.ndarray) else v
+                                 for k, v in fields.items()})
+    for name in ("midpoints", "ends", "normals", "length", "r_eq", "load", "pair_index",
+                 "pinion_rotation", "gear_rotation"):
+        a, b = getattr(fast, name), getattr(general, name)
+        assert type(a) is type(b) and np.asarray(a).dtype == np.asarray(b).dtype, name
+        assert np.array_equal(a, b), name
+        if isinstance(a, np.ndarray):
+            assert not np.shares_memory(a, fields[name]), name
+
+
+@pytest.mark.parametrize(("field", "value", "message"), [
+    ("length", 0.0, "length: must be finite and > 0"),
+    ("r_eq", np.nan, "r_eq: must be finite and > 0"),
+    ("load", -1.0, "load: must be finite and >= 0"),
+    ("midpoints", np.inf, "midpoints: must be"),
+    ("normals", 2.0, "normals: must be unit vectors"),
+])
+def test_contact_segments_refuse_through_the_general_messages(field, value, message):
+    """An array the one-pass check does not accept (non-finite, out of range, not unit)
+    falls to the general checks and their messages."""
+    from contact.compliance.mesh import ContactSegments
+
+    fields = _segment_fields()
+    bad = fields[field].copy()
+    bad[1] = value
+    fields[field] = bad
+    with pytest.raises(InputError, match=message.replace("(", r"\(")):
+        ContactSegments(**fields)

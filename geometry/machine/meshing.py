@@ -135,17 +135,39 @@ _KERNEL_MODULE = "geometry.machine.envelope_numba"
 
 
 def _context(blade: Blade, settings: MachineSettings, length_scale: float,
-             kernels: str | None = None, sections=None) -> _Context:
+             kernels: str | None = None) -> _Context:
     """The solve's context: the blade's sections, the folded chain and, unless the NumPy
     path is asked for (``kernels``, :func:`geometry.core.kernels.kernels_module`), the
-    compiled Newton with its constant arguments."""
-    sections = profile_sections(blade) if sections is None else sections
-    ctx = _Context(blade, settings, sections, settings.process == "Generate",
-                   float(length_scale), chain(settings))
+    compiled Newton with its constant arguments.
+
+    Memoised per process (:func:`_memo_context`) by the blade, the settings, the length
+    scale and the kernel module: the context is a function of these alone, and a study
+    point made it ~19 times (~40 µs each, with the sections another ~25 µs: issue 75's
+    flat tail). Nothing writes into a context's arrays (the compiled kernels read them)."""
     module = kernels_module(_KERNEL_MODULE, kernels)
+    return _memo_context(blade, settings, float(length_scale), module)
+
+
+@memoised(maxsize=16)
+def _memo_context(blade: Blade, settings: MachineSettings, length_scale: float,
+                  module) -> _Context:
+    """:func:`_context` on the kernel module ``module`` (None: NumPy)."""
+    ctx = _Context(blade, settings, profile_sections(blade), settings.process == "Generate",
+                   length_scale, chain(settings))
     if module is None:
         return ctx
     return ctx._replace(kernel=(module, _kernel_arguments(ctx)))
+
+
+def _cw(a, dtype=np.float64) -> np.ndarray:
+    """``np.require(a, dtype, "CW")`` (the compiled kernels' one signature: C-contiguous,
+    writeable), returning ``a`` itself without np.require's bookkeeping (~3 µs a call,
+    a few hundred calls a study point) where it already is such an array, as np.require
+    does."""
+    if (type(a) is np.ndarray and a.dtype == dtype and a.flags.c_contiguous
+            and a.flags.writeable):
+        return a
+    return np.require(a, dtype, "CW")
 
 
 def _kernel_arguments(ctx: _Context) -> tuple:
@@ -177,8 +199,8 @@ def _family(ctx: _Context, s, theta, q, section) -> np.ndarray:
     (on the compiled kernel where the context holds it: the same to round-off)."""
     if ctx.kernel is not None:
         module, args = ctx.kernel
-        return module.family(np.require(s, float, "CW"), np.require(theta, float, "CW"),
-                             np.require(q, float, "CW"), np.require(section, np.intp, "CW"),
+        return module.family(_cw(s), _cw(theta),
+                             _cw(q), _cw(section, np.intp),
                              *args[:_FAMILY_ARGS])
     v = cutter_buffer(ctx.blade, ctx.sections, s, theta, section)
     return family_buffer(ctx.chain, ctx.settings, v, q, theta)
@@ -188,7 +210,7 @@ def _meshing_of(ctx: _Context, buf: np.ndarray):
     """:func:`geometry.machine.family.meshing_buffer` of a family buffer (on the compiled
     kernel where the context holds it)."""
     if ctx.kernel is not None:
-        return ctx.kernel[0].meshing(np.require(buf, float, "CW"), ctx.length_scale)
+        return ctx.kernel[0].meshing(_cw(buf), ctx.length_scale)
     return meshing_buffer(buf, ctx.length_scale)
 
 
@@ -200,8 +222,8 @@ def _evaluate(ctx: _Context, x: np.ndarray, section: np.ndarray, z: np.ndarray, 
     (None on the compiled kernel, which does not form it)."""
     if ctx.kernel is not None:
         module, args = ctx.kernel
-        f, jac = module.evaluate(np.require(x, float, "CW"), np.require(section, np.intp, "CW"),
-                                 np.require(z, float, "CW"), np.require(p, float, "CW"),
+        f, jac = module.evaluate(_cw(x), _cw(section, np.intp),
+                                 _cw(z), _cw(p),
                                  *args[:_FAMILY_ARGS])
         return f, jac, None
     n, m = x.shape
@@ -275,8 +297,8 @@ def _newton(ctx: _Context, x0: np.ndarray, section: np.ndarray, z: np.ndarray, p
     if ctx.kernel is not None:
         module, args = ctx.kernel
         # (C-contiguous, writeable arrays: the kernel's one compiled signature)
-        return module.newton(np.require(x0, float, "CW"), np.require(section, np.intp, "CW"),
-                             np.require(z, float, "CW"), np.require(p, float, "CW"), *args)
+        return module.newton(_cw(x0), _cw(section, np.intp),
+                             _cw(z), _cw(p), *args)
     x = x0.copy()
     m = x.shape[1]
     done = np.zeros(len(x), bool)
@@ -1076,9 +1098,9 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
     shape = z.shape
     zf, pf = z.ravel(), p.ravel()
     n = zf.size
-    sections = profile_sections(blade)
+    ctx = _context(blade, settings, length_scale, kernels)
+    sections = ctx.sections
     gen = settings.process == "Generate"
-    ctx = _context(blade, settings, length_scale, kernels, sections)
     if seed_index is None:
         seed = np.ravel_multi_index(tuple(d // 2 for d in shape), shape) if shape else 0
     else:

@@ -22,6 +22,7 @@ import math
 import numpy as np
 from scipy.optimize import minimize_scalar
 
+from geometry.core.caches import memoised
 from geometry.core.errors import InputError
 from geometry.pair.assembly import Misalignment, member_transform
 
@@ -65,13 +66,23 @@ def pitch_circle_gap(case, *, offset: float | None = None) -> tuple[float, float
     pinion frame: √((ρ − r₁)² + (z − z₁)²)); the gear angle is searched on 3600 points,
     then refined by Brent's method.
     """
-    kw = dict(shaft_angle=case.pair.shaft_angle,
-              offset=case.pair.offset if offset is None else offset,
-              gear_hand=case.gear.hand, misalignment=Misalignment())
-    tp = member_transform("pinion", **kw)
-    tg = member_transform("gear", **kw)
     rg, zg = _mean_circle(case.gear.blank)
     rp, zp = _mean_circle(case.pinion.blank)
+    # the gap is a function of these numbers alone: each study point's case (a new object,
+    # its misalignment replaced) asked for it again (~1.5 ms a point, issue 75)
+    return _memo_gap(case.pair.shaft_angle, case.pair.offset if offset is None else offset,
+                     case.gear.hand, rg, zg, rp, zp)
+
+
+@memoised(maxsize=32)
+def _memo_gap(shaft_angle: float, offset: float, gear_hand: str, rg: float, zg: float,
+              rp: float, zp: float) -> tuple[float, float]:
+    """:func:`pitch_circle_gap` of the shaft angle [rad], offset [mm], gear hand and the
+    mean circles (radius, axial position) [mm] of the gear (rg, zg) and pinion (rp, zp)."""
+    kw = dict(shaft_angle=shaft_angle, offset=offset, gear_hand=gear_hand,
+              misalignment=Misalignment())
+    tp = member_transform("pinion", **kw)
+    tg = member_transform("gear", **kw)
 
     def distance(phi):
         phi = np.atleast_1d(np.asarray(phi, float))
