@@ -132,6 +132,21 @@ def test_the_step_is_the_least_of_the_failing_criteria():
         coast_capacity(lambda t: c, math.nan)
 
 
+def test_a_root_failure_at_the_models_smallest_rounding_says_it_is_a_lower_bound():
+    """Issue 71: the coast pinion of the spiral bevels 15×28 at Σ 110° β_m 43.9° and 25×36
+    at Σ 75° failed S_Fmin at the FE model's step-2 slot-bottom rounding (its value set by
+    the model's radius; docs/fe.md): the root failure then says so; the same failure at a
+    whole fillet reads as before, and the failing criteria and the torque step are the
+    same either way (the capacity search is unchanged)."""
+    whole = CoastCheck(300.0, 1500.0, LIMIT, 0.0, 0.58, 1.3, "pinion", 2.0, 45.0)
+    notch = dataclasses.replace(whole, root_at_rounding=True)
+    assert whole.failures["root"] == "FE root stress S_F,FE 0.58 (pinion) below S_Fmin 1.3"
+    assert notch.failures["root"].startswith(whole.failures["root"] + ", its peak at the FE "
+                                             "model's smallest slot-bottom rounding")
+    assert set(notch.failures) == set(whole.failures) == {"root"}
+    assert coast_torque_step(notch) == coast_torque_step(whole)
+
+
 def test_ltca_run_analyses_the_coast_flank_at_its_own_design_torque():
     """A case whose [rating] coast_design_torque (150 N·m) is below its design torque
     (300 N·m): the coast flank (by role or by its pinion flank's name) runs at the

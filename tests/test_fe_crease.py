@@ -218,3 +218,72 @@ def test_the_coast_root_stress_at_the_rounded_crossing_converges():
     assert abs(pinion[1] / pinion[0] - 1.0) < 0.05, pinion
     assert abs(gear[1] / gear[0] - 1.0) < 0.05, gear
     assert 250.0 < pinion[0] < 400.0, pinion  # not the sharp corner's 474 MPa
+
+
+# ---------------------------------------------- a peak at step 2's rounding is said (issue 71)
+def test_the_sections_say_which_bottoms_are_rounded_into_a_fillet():
+    """``ToothSections.kinds`` labels each section's slot bottom as :func:`_slot_bottom`
+    made it; checked against the arc itself, measured on the geometry (the circle through
+    its first, middle and last point, :func:`_arc`): on the bundled sample 2 pinion (edge
+    radius 0.66 mm, 25 sections) a bottom "rounded into a fillet" (step 2) has a radius of
+    at most a tenth of the edge radius, one "rounded" (step 1) at least that tenth
+    (1 % for the three-point fit), and both occur (13 step-2 sections measured: u
+    0.22–0.70, docs/fe.md)."""
+    u = np.linspace(0.0, 1.0, 25)
+    secs = _sample2_sections(ROOT / "cases" / "hypoid_iso23509_s2.toml", u)
+    edge = min(secs.edge_radius.values())
+    assert len(secs.kinds) == u.size
+    notched = []
+    for sec, kind in zip(secs.sections, secs.kinds, strict=True):
+        right = (sec.right.v, sec.right.phi, sec.right.s)
+        radius = _arc(right, float(sec.radius(0.0)), sec.length_v)[1]
+        if kind.endswith(", rounded into a fillet"):
+            assert radius <= 0.1 * edge * 1.01, (kind, radius)
+            notched.append(True)
+        else:
+            assert kind.endswith(", rounded"), kind
+            assert radius >= 0.1 * edge * 0.99, (kind, radius)
+            notched.append(False)
+    notched = np.array(notched)
+    assert notched.sum() >= 10
+    assert 0.15 <= u[notched].min() and u[notched].max() <= 0.75
+
+
+def _root_stress_at(peak_u: float, stations: np.ndarray):
+    """A minimal ``/ltca`` with a root stress along the face peaking at ``peak_u`` on the
+    pinion and at mid face on the gear, at two torques."""
+    import xarray as xr
+
+    shape = np.exp(-((stations - peak_u) / 0.1) ** 2)
+    gear = np.exp(-((stations - 0.5) / 0.1) ** 2)
+    rs = np.stack([shape, gear])[None, None, :, None, :] * np.array([100.0, 200.0])[
+        :, None, None, None, None]
+    return xr.Dataset(
+        {"root_stress": (("torque", "roll", "member", "tooth", "fillet_point"), rs)},
+        coords={"torque": [50.0, 150.0], "roll": [0.0], "member": ["pinion", "gear"],
+                "tooth": [0], "fillet_point": np.arange(stations.size),
+                "fillet_u": (("member", "fillet_point"), np.stack([stations, stations]))})
+
+
+def test_a_root_stress_peak_at_a_bottom_rounded_into_a_fillet_is_said():
+    """``ltca run``'s note (:func:`contact.ltca.root_stress.slot_bottom_notes`): sample
+    2's concave cut's tip crosses the convex fillet (its coast flank's: docs/fe.md); a
+    pinion peak at u 0.46, inside the step-2 span (above), on the coast flank is said with
+    both torques and the span; on the drive flank (the concave fillet, whole: its side is
+    cut along its tip line) it is not; nor is a coast peak at u 0.94, where the bottom is
+    rounded by the edge radius, nor the gear's (a Formate gear cut in one setting: a
+    straight bottom). No root stress: no note. The FE stations of 12 face divisions (two
+    per element)."""
+    from contact.ltca.root_stress import slot_bottom_notes
+
+    case = load_case(ROOT / "cases" / "hypoid_iso23509_s2.toml")
+    assert case.pair.drive_flank == "concave"
+    stations = np.linspace(1.0 / 48.0, 47.0 / 48.0, 24)
+    lines = slot_bottom_notes(case, _root_stress_at(0.46, stations), "coast")
+    assert len(lines) == 1
+    assert lines[0].startswith("root stress: the pinion's peak (50, 150 N m at u 0.4")
+    assert "rounds its slot bottom into a fillet" in lines[0]
+    assert slot_bottom_notes(case, _root_stress_at(0.46, stations), "drive") == []
+    assert slot_bottom_notes(case, _root_stress_at(0.94, stations), "coast") == []
+    assert slot_bottom_notes(case, _root_stress_at(0.46, stations).drop_vars(
+        "root_stress"), "coast") == []

@@ -390,9 +390,11 @@ def _run(args: argparse.Namespace) -> int:
               "superposition) [MPa], at the face station u (toe 0, heel 1):")
         print(tabulate(root_stress_rows(lt), headers=["T_p [N m]", "pinion", "u", "gear",
                                                       "u"], tablefmt="github"))
-        from contact.ltca.root_stress import root_stress_notes
+        from contact.ltca.root_stress import root_stress_notes, slot_bottom_notes
 
         for line in root_stress_notes(lt):  # NaN torques and loads left out, and why
+            print(line)
+        for line in slot_bottom_notes(case, lt, args.flank or "drive"):  # step 2's arc
             print(line)
         print("the FE model's peak fillet stress is mesh-converged within 5 % (docs/fe.md, "
               "Mesh convergence)")

@@ -61,13 +61,13 @@ from contact.ltca.segments import roll_phases
 from contact.utca import EaseOff
 from geometry.core.caches import Same, memoised
 from geometry.core.conventions import data_var, dataset
-from geometry.core.errors import InputError
+from geometry.core.errors import InputError, LTCAError
 from geometry.pair.assembly import case_transforms
 
 __all__ = ["DESIGN_LIMIT", "GRID_LIMIT", "LEFT_OUT_ATTR", "MEMBERS", "NOT_COMPUTED_ATTR",
            "OFF_FLANK_LIMIT", "UNPLACED_SHARE", "Unplaced", "coefficients_cached",
            "member_contact_points", "prepare_coefficients", "root_stress",
-           "root_stress_notes", "unplaced_reason"]
+           "root_stress_notes", "slot_bottom_notes", "unplaced_reason"]
 
 log = logging.getLogger(__name__)
 
@@ -539,6 +539,122 @@ def root_stress_notes(ltca: xr.Dataset) -> list[str]:
     return [f"root stress: {line}"
             for attr in (NOT_COMPUTED_ATTR, LEFT_OUT_ATTR, CACHE_NOTE_ATTR)
             for line in str(attrs.get(attr, "")).splitlines() if line]
+
+
+#: the end of a slot bottom's kind (:attr:`contact.compliance.fe.section.ToothSections.
+#: kinds`) where the FE model rounds the two cuts' crossing by step 2's small arc
+NOTCHED_KIND = ", rounded into a fillet"
+
+
+def slot_bottom_notes(case, ltca: xr.Dataset, flank: str = "drive") -> list[str]:
+    """Where a member's peak root stress lies at a slot bottom that the FE model rounds
+    into a fillet: one line per such member, as ``ltca run`` prints under its table.
+
+    Where a pinion's flanks are cut separately, the FE model's slot bottom is the two cuts'
+    crossing (:mod:`contact.compliance.fe.section`); where one cut's tip crosses the other
+    side's fillet near its top, the crossing is rounded by at most a tenth of the blade's
+    edge radius (kind "…, rounded into a fillet"), a notch whose stress that radius sets —
+    the model's reading of the two cuts, not case data. The machine leaves the union of
+    the cuts, in which the crossed fillet stays whole: on the spiral bevels 15×28 at
+    Σ 110° β_m 43.9° and 25×36 at Σ 75° the coast pinion's peak lay there at 1.5–1.9 ×
+    ISO 10300's σ_F, 0.65–0.86 × with the other tip plane moved below the fillet's top,
+    the flanks and loads the same (docs/fe.md, "The coast design torque of two spiral
+    bevels").
+
+    Parameters
+    ----------
+    case : geometry.case.Case — the case analysed
+    ltca : xarray.Dataset — ``/ltca`` with ``root_stress`` (torque, roll, member, tooth,
+        fillet_point) [MPa] and its coordinate ``fillet_u`` (member, fillet_point) [1]
+    flank : str — the pinion flank analysed: ``"drive"`` (default), ``"coast"`` or a flank
+        name (:func:`contact.compliance.fe.options.member_flank`). Only a fillet of a
+        member's loaded flank counts (the tension side of its loaded tooth): the other
+        fillet's rounding does not set that member's peak
+
+    Returns
+    -------
+    list of str — per member whose peak (over rolls and teeth, at any torque) lies at a
+        face station whose slot bottom, or a neighbouring station's, is rounded into a
+        fillet of its loaded flank (where step 2 hands over to step 1 the kinds may
+        alternate between neighbours, step 1's radius there barely above step 2's): one
+        sentence prefixed
+        ``"root stress: "`` with the torques [N·m], the station u [1], the span of such
+        stations and the edge radius [mm]; empty otherwise, without root stress, or for
+        a member cut in one setting (a straight slot bottom)
+
+    Raises
+    ------
+    InputError — a bad ``flank``; a case whose member lacks a blade edge radius (as
+        :func:`contact.compliance.fe.section.tooth_sections`; its FE model could not have
+        been built). A section the generated flanks cannot make (LTCAError) gives no line
+        and a logged warning.
+
+    Notes
+    -----
+    The sections are computed again at the FE model's face stations (~0.4 s CPU per
+    separately cut member). Source: the slot-bottom rules of :mod:`contact.compliance.fe.section`.
+    """
+    from contact.compliance.fe.options import member_flank
+    from contact.compliance.fe.section import tooth_sections
+
+    loaded = {m: member_flank(case, m, flank) for m in MEMBERS}
+    if "root_stress" not in ltca.variables:
+        return []
+    rs = ltca["root_stress"]
+    torques = np.asarray(ltca["torque"].values, float)
+    lines = []
+    for member in MEMBERS:
+        mem = case.member(member)
+        if mem.concave.machine == mem.convex.machine:
+            continue  # one cut: the bottom is straight between the fillets
+        face = rs.sel(member=member).max(("roll", "tooth")).transpose("torque", ...).values
+        fu = np.asarray(ltca["fillet_u"].sel(member=member).values, float)
+        peaks: dict[int, list[float]] = {}
+        for i, row in enumerate(face):
+            if np.isfinite(row).any():
+                peaks.setdefault(int(np.nanargmax(row)), []).append(float(torques[i]))
+        if not peaks:
+            continue
+        u, where = np.unique(np.clip(fu, 0.0, 1.0), return_inverse=True)
+        if u.size < 2:
+            continue
+        try:
+            secs = tooth_sections(case, member, u)
+        except LTCAError as exc:
+            log.warning("root stress: the %s's slot bottoms not checked: %s", member, exc)
+            continue
+        # step 2's arc at the fillet of the loaded flank: the side cut within its fillet
+        # (its first generated sample above the cut: s > 0), not along its blade's tip
+        notched = np.array([k.endswith(NOTCHED_KIND) and _crossed(sec, loaded[member])
+                            for k, sec in zip(secs.kinds, secs.sections, strict=True)])
+        # at the station or a neighbour: where step 2 hands over to step 1 the kinds may
+        # alternate between neighbouring stations, step 1's radius there barely above
+        # step 2's (the 25×36 at Σ 75°)
+        hit = {k: t for k, t in peaks.items()
+               if notched[max(where[k] - 1, 0):where[k] + 2].any()}
+        if not hit:
+            continue
+        edge = min(secs.edge_radius.values())
+        at = "; ".join(f"{', '.join(f'{t:g}' for t in ts)} N m at u {fu[k]:.2f}"
+                       for k, ts in sorted(hit.items()))
+        lines.append(
+            f"root stress: the {member}'s peak ({at}) lies where the FE model rounds its slot "
+            f"bottom into a fillet (u {u[notched].min():.2f}-{u[notched].max():.2f}: the "
+            f"other cut's blade tip crosses the fillet near its top, and the crossing is "
+            f"rounded by about a tenth of the edge radius {edge:.3g} mm, the model's "
+            f"reading of the two cuts, not case data): that radius sets the value, up to "
+            f"2.8 x the whole fillet's on two spiral bevels, so read it as an upper bound "
+            f"(docs/fe.md, 'The coast design torque of two spiral bevels')")
+    return lines
+
+
+def _crossed(section, flank: str) -> bool:
+    """Whether ``flank``'s side of a section is cut within its fillet at the slot bottom
+    (the other cut's tip crosses it), not along its own blade's tip line: its first
+    generated sample above the cut has a blade arc length s > 0."""
+    side = section.left if section.left.flank == flank else section.right
+    s = side.s[np.isfinite(side.s)]
+    return bool(s.size and s[0] > 0.0)
 
 
 def root_points(coef: xr.Dataset) -> np.ndarray:

@@ -81,6 +81,11 @@ class CoastCheck:
     s_h_min : float — [1] the rating's S_Hmin (NaN: not known)
     pitting_member : str — the weaker member of ``pitting_safety``
     light_pitting_safety : float — [1] S_H,loc at the light torque (for the exponent; NaN)
+    root_at_rounding : bool — the weaker member's root-stress peak lies where the FE model
+        rounds the slot bottom of its loaded fillet by step 2's small arc
+        (:func:`contact.ltca.root_stress.slot_bottom_notes`): its S_F,FE is then a lower
+        bound, set by the model's radius (docs/fe.md, "The coast design torque of two
+        spiral bevels"), and the root failure says so
     """
 
     torque: float
@@ -98,6 +103,7 @@ class CoastCheck:
     s_h_min: float = math.nan
     pitting_member: str = ""
     light_pitting_safety: float = math.nan
+    root_at_rounding: bool = False
 
     @property
     def failures(self) -> dict[str, str]:
@@ -115,7 +121,10 @@ class CoastCheck:
                 and self.root_safety < self.s_min):
             out["root"] = (f"FE root stress S_F,FE "
                            f"{shown_below(self.root_safety, self.s_min)} ({self.member}) "
-                           f"below S_Fmin {self.s_min:g}")
+                           f"below S_Fmin {self.s_min:g}"
+                           + (", its peak at the FE model's smallest slot-bottom rounding "
+                              "(a lower bound: docs/fe.md, 'The coast design torque of two "
+                              "spiral bevels')" if self.root_at_rounding else ""))
         if (math.isfinite(self.pitting_safety) and math.isfinite(self.s_h_min)
                 and self.pitting_safety < self.s_h_min):
             out["pitting"] = (f"local pitting safety S_H,loc "

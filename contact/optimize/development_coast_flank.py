@@ -153,6 +153,14 @@ def _coast_check(case: Case, basic: BasicDesign, setup: dict[str, Any], torque: 
         except LookupError as exc:
             log.info("development coast pitting safety not checked: %s", exc)
     grid = (*grid_bounds(tree), static_strength(tree))
+    rounding = False
+    if member and math.isfinite(safety[k]) and safety[k] < s_min:
+        # a root failure at the FE model's step-2 slot-bottom rounding is a lower bound
+        # (contact.ltca.root_stress.slot_bottom_notes; issue 71): said with the failure
+        from contact.ltca.root_stress import slot_bottom_notes
+
+        rounding = any(line.startswith(f"root stress: the {member}'s peak")
+                       for line in slot_bottom_notes(c, lt.to_dataset(), "coast"))
     return CoastCheck(float(torques[k]), float(ms["pressure_max_flank"][k]),
                       float(grid[4]), float(np.max(ms["plastic_share"])),
                       float(safety[k]), float(s_min), member,
@@ -160,7 +168,7 @@ def _coast_check(case: Case, basic: BasicDesign, setup: dict[str, Any], torque: 
                       float(torques[1 - k]) if len(torques) == 2 else math.nan,
                       (ms, grid, tuple(float(t) for t in torques)), plastic_limit,
                       float(pit[k]), s_h_min, pit_member,
-                      float(pit[1 - k]) if len(torques) == 2 else math.nan)
+                      float(pit[1 - k]) if len(torques) == 2 else math.nan, rounding)
 
 
 def light_and_design(metrics: dict[str, np.ndarray]) -> dict[str, np.ndarray]:

@@ -196,6 +196,13 @@ class ToothSections:
         side (φ of the right slot's far side: minus a pitch): the root line that flank's
         cut generates (NaN where the fillet was not generated down to it)
     point_width : dict — [mm] the blades' point widths (0: not given)
+    kinds : tuple of str (K,) — how each section's slot bottom was made
+        (:func:`_slot_bottom`: "straight", or "fillets cross" / "tip meets fillet" /
+        "tips cross" followed by ", rounded" — an arc that keeps both fillets whole —,
+        ", rounded into a fillet" — step 2's arc of at most a tenth of the edge radius,
+        the other cut's tip crossing a fillet near its top, a notch whose stress that
+        radius sets (docs/fe.md, "The coast design torque of two spiral bevels") — or
+        ", sharp"); empty where not recorded
     """
 
     member: str
@@ -210,6 +217,7 @@ class ToothSections:
     one_cut: bool = True
     root_line: dict | None = None
     point_width: dict | None = None
+    kinds: tuple[str, ...] = ()
 
     def root_depth(self, flank: str) -> np.ndarray:
         """(K,) [mm] depth of ``flank``'s generated root line (:attr:`root_line`) below the
@@ -726,4 +734,4 @@ def tooth_sections(case, member: str, u) -> ToothSections:
     root_line = {f: samples[f].root for f in edge}
     return ToothSections(member, u, tuple(sections), pitch, shift, left_flank, corners,
                          depth, edge, bool(one_cut), root_line,
-                         {f: mem.flank(f).blade.point_width for f in edge})
+                         {f: mem.flank(f).blade.point_width for f in edge}, tuple(kinds))
