@@ -187,7 +187,13 @@ def compile_note() -> str | None:
 
     The first ``ltca synthesize`` of a fresh tree said nothing for 98 s of wall time at a
     load of 14 (the compiling, ≈ 20 s of CPU on an idle machine) and then 150 s more before
-    its first trial (issue 71, round 13; docs/performance.md, "Compiled kernels").
+    its first trial (issue 71, round 13; docs/performance.md, "Compiled kernels"). The
+    note then said "about 20 s of CPU before the first lines", but numba compiles each
+    kernel at its first call: the geometry's before the first line, the contact
+    analysis's (UTCA, compliance, QP) within the first analysis — round 16's first two
+    runs printed the development's first line after 87–103 s and then nothing for 147–163
+    s (load 15), its first design reading 32 s of CPU where the others read 1 s. The note
+    says both waits.
 
     Returns
     -------
@@ -197,9 +203,12 @@ def compile_note() -> str | None:
 
     if process_choice() != "numba" or all(cache_ready(name) for name in KERNEL_MODULES):
         return None
-    return ("note: compiling the numba kernels for this machine, once (about 20 s of CPU "
-            "before the first lines, longer on a loaded machine; later runs read them from "
-            "numba's cache; `ltca compile` compiles them ahead, docs/environment.md)")
+    return ("note: compiling the numba kernels for this machine, once: the geometry's "
+            "before the first lines, the contact analysis's within the first analysis (a "
+            "development's first design then takes about 30 s of CPU where the others take "
+            "about 1 s), minutes of wall time on a loaded machine; later runs read them "
+            "from numba's cache; `ltca compile` compiles them ahead (about 30 s of CPU), "
+            "docs/environment.md")
 
 
 def main(argv: Sequence[str] | None = None) -> int:

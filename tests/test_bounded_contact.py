@@ -94,6 +94,32 @@ def test_at_the_limit_neighbours_carry_the_rest(n, seed):
     assert contact_residuals(p, sol.force, sol.rotation)["dual"] > 1e-6
 
 
+def test_an_unloaded_segment_with_a_limit_below_the_tolerance_is_not_plastic():
+    # A sliver of a contact line clipped at the face's boundary (8.4e-7 mm long) has a
+    # force limit below the solver's tolerance (3.2e-4 N against 30 kN): unloaded, it was
+    # counted at its limit, and `ltca run` printed "plastic 2 (0.0 %)" for a design
+    # without a plastic contact (issue 71, round 16). Plastic segments carry their limit.
+    p = ltca_like_problem(120, seed=12).problem
+    ref = solve_contact(p)
+    open_ = np.flatnonzero(ref.force == 0.0)
+    assert open_.size
+    bound = np.full(p.size, np.inf)
+    tiny = 1e-3 * ref.tolerance * ref.force.max()
+    bound[open_[:3]] = tiny
+    q = _with_bound(p, bound)
+    sol = solve_contact(q)
+    assert sol.found, sol.status
+    np.testing.assert_array_equal(sol.force[open_[:3]], 0.0)
+    assert not np.any(sol.at_limit(q))
+    # a limit that binds is still found: the largest force's segment at half its force
+    top = int(np.argmax(ref.force))
+    bound[top] = 0.5 * ref.force[top]
+    q = _with_bound(p, bound)
+    sol = solve_contact(q)
+    assert sol.found, sol.status
+    assert np.array_equal(np.flatnonzero(sol.at_limit(q)), [top])
+
+
 def test_upper_complementarity_catches_penetration_below_the_limit():
     # A limited segment that penetrates while below its limit violates the upper
     # complementarity (and only it: its Y < 0 is not a dual violation, which would be

@@ -80,6 +80,35 @@ def test_the_17x29s_face_width_and_spiral_angle_reach_the_target():
     assert f"beta_m of {math.ceil(r.beta_m_needed * 10) / 10:.1f} deg (now 35)" in text
 
 
+def _eps_va(design) -> float:
+    from contact.load_capacity.iso10300.inputs import gear_data_from_blank
+    from contact.load_capacity.iso10300.virtual_gears import virtual_gears
+    from geometry.iso23509.blank import blank_geometry
+
+    return float(virtual_gears(gear_data_from_blank(blank_geometry(design))).eps_va)
+
+
+def test_an_overlap_remedy_that_takes_the_profile_ratio_below_1_says_so():
+    """Issue 71, round 16: the hypoid 15x31 (ε_vα 1.10, ε_vβ 1.00) was offered β_m 46.3°
+    for ε_vβ 1.25; synthesised there (hypoid_15x31_a10_b46p3.toml) it printed ε_vα 0.98
+    and a profile-ratio note. The remedy now says what the spiral angle does to ε_vα; the
+    face width, which keeps ε_vα above 1, gets no such words; the 17x29, whose both ways
+    keep it above 1, reads as before."""
+    unseen = ROOT / "benchmarks" / "data" / "unseen_designs"
+    design = load_basic(unseen / "hypoid_15x31_a10.toml").design
+    text = overlap_text(design)
+    assert _eps_va(design) > PROFILE_CONTACT_RATIO_MIN
+    after = _eps_va(dataclasses.replace(design, beta_m=math.radians(46.3)))
+    assert after == pytest.approx(0.98, abs=5e-3)  # synthesize's own line: 0.98
+    assert "beta_m of 46.3 deg (now 40; eps_va then 0.98, below 1)" in text
+    assert _eps_va(dataclasses.replace(design, b2=32.6)) >= PROFILE_CONTACT_RATIO_MIN
+    assert "(now 27) or" in text
+    remedy = load_basic(unseen / "hypoid_15x31_a10_b46p3.toml").design
+    assert _eps_va(remedy) == pytest.approx(after, rel=1e-12)
+    assert "eps_va then" not in overlap_text(
+        load_basic(DESIGNS / "spiral_bevel_17x29_s100_m0.toml").design)
+
+
 def test_a_ratio_just_below_its_limit_is_printed_below_it():
     """Issue 71, unseen (12): the face-hobbed 7x39 at Sigma 85 deg (ε_vβ 1.2465, its own
     value by the ISO 10300 virtual gears) read "eps_vb 1.25 is below 1.25"; the number

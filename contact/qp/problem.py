@@ -681,10 +681,15 @@ class ContactSolution:
     def at_limit(self, problem: ContactProblem) -> np.ndarray:
         """Segments at their force limit, shape (N,) bool: the plastic segments.
 
-        A segment is at its limit when its force is within ``tolerance`` times the
-        largest force of its finite limit F_max (the certification bounds the distance of
-        a penetrating segment from its limit by the same tolerance: upper
-        complementarity residual).
+        A segment is at its limit when it is in contact (:attr:`active_set`) and its force
+        is within ``tolerance`` times the largest force of its finite limit F_max (the
+        certification bounds the distance of a penetrating segment from its limit by the
+        same tolerance: upper complementarity residual). A segment that carries no force
+        is never at its limit, however small its limit: a sliver of a contact line
+        clipped at the face's boundary (8.4e-7 mm long, F_max 3.2e-4 N, below the
+        tolerance) counted as plastic at zero force, and ``ltca run`` printed "plastic 2
+        (0.0 %)" for a design without a plastic contact (issue 71, round 16: the
+        industrial spiral bevel 17x53 at 5970 N m).
 
         Parameters
         ----------
@@ -695,7 +700,7 @@ class ContactSolution:
         if not np.all(np.isfinite(F)) or F.shape != (problem.size,):
             return np.zeros(problem.size, dtype=bool)
         tol = self.tolerance * max(float(np.max(F)), problem.scale.force)
-        return problem.bounded & (F >= problem.upper_bound - tol)
+        return problem.bounded & self.active_set & (F >= problem.upper_bound - tol)
 
     @property
     def max_residual(self) -> float:

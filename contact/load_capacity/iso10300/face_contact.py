@@ -202,6 +202,26 @@ def overlap_remedy(design, target: float = FACE_CONTACT_RATIO_MIN) -> OverlapRem
                          beta_need)
 
 
+def _profile_after(design, **change) -> str:
+    """"; eps_va then 0.98, below 1" where the basic-file ``change`` an overlap remedy
+    offers takes the profile contact ratio ε_vα below :data:`PROFILE_CONTACT_RATIO_MIN`;
+    "" otherwise or where its blank cannot be computed. A larger spiral angle lowers ε_vα
+    (the virtual transverse pressure angle grows): the hypoid 15x31 of issue 71's round
+    16 (ε_vα 1.10, ε_vβ 1.00) at the β_m of 46.3° its note offered reached ε_vβ 1.25 with
+    ε_vα 0.98, and its next note offered k_d or α_dD for that; the note had not said so.
+    """
+    from geometry.core.errors import InputError
+
+    try:
+        eps = _eps_va(dataclasses.replace(design, **change))
+    except (InputError, ValueError, ZeroDivisionError):
+        return ""
+    if not eps < PROFILE_CONTACT_RATIO_MIN:
+        return ""
+    return f"; eps_va then {_below(eps, PROFILE_CONTACT_RATIO_MIN)}, below " \
+           f"{PROFILE_CONTACT_RATIO_MIN:g}"
+
+
 def overlap_text(design, target: float = FACE_CONTACT_RATIO_MIN) -> str | None:
     """The cause and the remedy of a low face contact ratio in one sentence (``ltca
     synthesize``'s note, the LTE-spread next step of ``ltca run`` and ``ltca duty-cycle``);
@@ -231,13 +251,15 @@ def overlap_text(design, target: float = FACE_CONTACT_RATIO_MIN) -> str | None:
         return None
     ways = []
     if math.isfinite(r.b2_needed):
+        b2 = math.ceil(r.b2_needed * 10) / 10
         over = (f", above the usual {FACE_WIDTH_LIMIT:g} R_e2 = {r.b2_limit:.1f} mm"
                 if r.b2_needed > r.b2_limit else "")
-        ways.append(f"a gear face width b2 of {math.ceil(r.b2_needed * 10) / 10:.1f} mm"
-                    f"{over} (now {r.b2:g})")
+        ways.append(f"a gear face width b2 of {b2:.1f} mm{over} (now {r.b2:g}"
+                    f"{_profile_after(design, b2=b2)})")
     if math.isfinite(r.beta_m_needed):
-        ways.append(f"a mean spiral angle beta_m of {math.ceil(r.beta_m_needed * 10) / 10:.1f}"
-                    f" deg (now {r.beta_m:g})")
+        beta = math.ceil(r.beta_m_needed * 10) / 10
+        ways.append(f"a mean spiral angle beta_m of {beta:.1f} deg (now {r.beta_m:g}"
+                    f"{_profile_after(design, beta_m=math.radians(beta))})")
     remedy = _either(ways, r.target, "no face width up to R_e2/2 nor spiral angle up to 50 "
                      "deg")
     return (f"face contact ratio eps_vb {_below(r.eps_vb, r.target)} is below {r.target:g}, "
