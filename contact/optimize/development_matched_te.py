@@ -27,7 +27,7 @@ import numpy as np
 
 from contact.optimize.development_evaluate import KeptTeeth
 from contact.optimize.development_keep import kept_why, lost_targets
-from contact.optimize.development_lte_steps import ELLIPSE_STEP
+from contact.optimize.development_lte_steps import ELLIPSE_STEP, lte_reached
 from contact.optimize.development_profile_ratio import PROFILE_RATIO_MIN
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import TE_NAME, VARIABLES, DevelopmentTargets
@@ -60,6 +60,11 @@ TE_MATCH_CEILING = 180.0
 #: about as much: the gap closes by about half the level's rise (measured on the 15x28:
 #: te_level 45 → 150 µrad closed 32 → −3 µrad, 0.33 per µrad; the secant corrects it)
 GAP_PER_LEVEL = 0.5
+
+#: the step's levers in words, as ``ltca synthesize``'s note lists the levers tried
+#: (:func:`~contact.optimize.development_lte_steps.lte_reached`)
+PARABOLA_LEVER = "the TE parabola matched to the load"
+BEARING_LEVER = "the bearing lengthened"
 
 #: the check stage of the step's designs (:attr:`DevelopmentEvaluation.stage`)
 STAGE = "matched te"
@@ -375,8 +380,12 @@ def checked_matched_te(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                      targets, setup, teeth, say, placed)
     if e is None:
         return best
-    if not kept_why(best, e, targets, setup, teeth, say, "the matched TE parabola",
-                    lost=lost_targets):
+    lte_reached(setup, start, f"design {start.index + 1} as checked")
+    why = kept_why(best, e, targets, setup, teeth, say, "the matched TE parabola",
+                   lost=lost_targets)
+    lte_reached(setup, e, f"design {start.index + 1} with te_level {first:.3g} urad", why,
+                PARABOLA_LEVER)
+    if not why:
         best = e
     l1, d1 = lte_ends(e)
     # the secant only where the deeper parabola lowered the design torque's LTE: where it
@@ -389,10 +398,13 @@ def checked_matched_te(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         e = said_variant(start, dict(start.values) | {TE_NAME: meet}, STAGE,
                          f"with te_level {meet:.3g} urad, where its light and design "
                          "torque's LTE meet", targets, setup, teeth, say, placed)
-        if e is not None and not kept_why(best, e, targets, setup, teeth, say,
-                                          "the TE parabola where the LTE meet",
-                                          lost=lost_targets):
-            best = e
+        if e is not None:
+            why = kept_why(best, e, targets, setup, teeth, say,
+                           "the TE parabola where the LTE meet", lost=lost_targets)
+            lte_reached(setup, e, f"design {start.index + 1} with te_level {meet:.3g} urad",
+                        why, PARABOLA_LEVER)
+            if not why:
+                best = e
     name = "ellipse_length"
     if (name not in targets.variables or name not in best.values
             or not float(best.full[1].get("lte", 0.0)) > 0.0):
@@ -405,5 +417,10 @@ def checked_matched_te(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                      f"with ellipse_length {longer:.3g} at te_level "
                      f"{float(best.values[TE_NAME]):.3g} urad (a longer bearing; its LTE "
                      "missed)", targets, setup, teeth, say, placed)
-    return best if kept_why(best, e, targets, setup, teeth, say,
-                            "the longer bearing", lost=lost_targets) else e
+    if e is None:
+        return best
+    why = kept_why(best, e, targets, setup, teeth, say, "the longer bearing",
+                   lost=lost_targets)
+    lte_reached(setup, e, f"design {start.index + 1} with ellipse_length {longer:.3g}, "
+                f"te_level {float(best.values[TE_NAME]):.3g} urad", why, BEARING_LEVER)
+    return best if why else e
