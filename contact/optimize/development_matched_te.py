@@ -357,7 +357,14 @@ def checked_matched_te(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     103, length 0.58, tolerant (objective 73.3 → 65.9); the ellipse 0.75 / 0.85: 66 / 129
     (length 0.62), 54 / 117, floor 91 / 82; path −35° / −55°: 131 / 91, 58 / 140; no tip
     relief: 51 / 126, 6.5 % plastic; relief from 0.3: 66 / 138; the floor 82-91 µrad
-    with every lever: 60 µrad is out of this bearing's reach at 612.4 N m.
+    with every lever: 60 µrad is out of this bearing's reach at 612.4 N m. ``ltca
+    synthesize`` with the step writes it with te_level 128.1 µrad and the ellipse 0.7:
+    90 / 103 µrad, tolerant, flank peak 1343 → 1313 MPa. Where the parabola is not the
+    lever it raises both torques' LTE and nothing is kept: the 15x28 at β_m 43.9° (ε_vα
+    1.00, ε_vβ 1.25; 76.4 / 509.7 N m, path −80°, ellipse 0.75, te_level 10 µrad): 34 /
+    54 → te_level 50: 42 / 57 µrad; the face-hobbed hypoid 8x35 at Σ 85° (ε_vα 0.94): 52
+    / 57 → te_level 20.6: 54 / 60, the ellipse 0.6: 37 / 41 µrad with the pattern 0.63
+    long (a target lost).
     """
     if eps is not None:
         def ratios() -> tuple[float, float]:
