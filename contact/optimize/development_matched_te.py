@@ -375,9 +375,29 @@ def checked_matched_te(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                                                                              math.nan)
     if not runs_on(best, targets, ratios):
         return best
+    records: list[tuple[DevelopmentEvaluation, str, str, str]] = []
+    kept = _designs(best, targets, setup, teeth, say, placed, records)
+    # the least-LTE record ltca synthesize's note states: a design kept and then
+    # replaced by a later one of the step is not the one written
+    lte_reached(setup, best, f"design {best.index + 1} as checked")
+    for e, what, why, lever in records:
+        if not why and e is not kept:
+            why = "a later design of the step scores better"
+        lte_reached(setup, e, what, why, lever)
+    return kept
+
+
+def _designs(start: DevelopmentEvaluation, targets: DevelopmentTargets,
+             setup: Mapping[str, Any], teeth: KeptTeeth | None,
+             say: Callable[[str], None],
+             placed: Callable[[Mapping[str, float]], Case],
+             records: list[tuple[DevelopmentEvaluation, str, str, str]]
+             ) -> DevelopmentEvaluation:
+    """:func:`checked_matched_te`'s designs past its gate: the design kept; each
+    design analysed appended to ``records`` (design, words, why not kept, lever)."""
+    best = start
     lo = float(targets.variables[TE_NAME][0])
     ceiling = level_ceiling(targets)
-    start = best
     now = float(start.values[TE_NAME])
     light, design = lte_ends(start)
     first = round(matched_level(now, light, design, ceiling), 1)
@@ -387,11 +407,10 @@ def checked_matched_te(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                      targets, setup, teeth, say, placed)
     if e is None:
         return best
-    lte_reached(setup, start, f"design {start.index + 1} as checked")
     why = kept_why(best, e, targets, setup, teeth, say, "the matched TE parabola",
                    lost=lost_targets)
-    lte_reached(setup, e, f"design {start.index + 1} with te_level {first:.3g} urad", why,
-                PARABOLA_LEVER)
+    records.append((e, f"design {start.index + 1} with te_level {first:.3g} urad", why,
+                    PARABOLA_LEVER))
     if not why:
         best = e
     l1, d1 = lte_ends(e)
@@ -408,8 +427,8 @@ def checked_matched_te(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         if e is not None:
             why = kept_why(best, e, targets, setup, teeth, say,
                            "the TE parabola where the LTE meet", lost=lost_targets)
-            lte_reached(setup, e, f"design {start.index + 1} with te_level {meet:.3g} urad",
-                        why, PARABOLA_LEVER)
+            records.append((e, f"design {start.index + 1} with te_level {meet:.3g} "
+                            "urad", why, PARABOLA_LEVER))
             if not why:
                 best = e
     name = "ellipse_length"
@@ -428,6 +447,6 @@ def checked_matched_te(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         return best
     why = kept_why(best, e, targets, setup, teeth, say, "the longer bearing",
                    lost=lost_targets)
-    lte_reached(setup, e, f"design {start.index + 1} with ellipse_length {longer:.3g}, "
-                f"te_level {float(best.values[TE_NAME]):.3g} urad", why, BEARING_LEVER)
+    records.append((e, f"design {start.index + 1} with ellipse_length {longer:.3g}, "
+                    f"te_level {float(best.values[TE_NAME]):.3g} urad", why, BEARING_LEVER))
     return best if why else e
