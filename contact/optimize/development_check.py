@@ -304,6 +304,9 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     (:func:`contact.optimize.development_load_lte.checked_load_lte`), and where its
     design torque's LTE still exceeds 60 µrad, a little less root relief with a longer
     ellipse (:func:`contact.optimize.development_load_lte.checked_relief_ellipse_lte`);
+    where it still misses its LTE target with the design torque's LTE the larger on a
+    pair of low contact ratios, the TE parabola matched to the load and a longer bearing
+    (:func:`contact.optimize.development_matched_te.checked_matched_te`);
     last, where it misses its
     light-load
     centre v and nothing by more than a small margin, a small blade-angle step with the TE level
@@ -340,6 +343,8 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     from contact.optimize import development_load_lte as load_lte  # imports this module
     best = load_lte.checked_load_lte(best, targets, setup, teeth, say, placed)
     best = load_lte.checked_relief_ellipse_lte(best, targets, setup, teeth, say, placed)
+    from contact.optimize.development_matched_te import checked_matched_te
+    best = checked_matched_te(best, targets, setup, teeth, say, placed)
     return checked_near_miss(best, targets, setup, teeth, say, placed, level,
                              slope=(slopes or {}).get(bearing_key(best.values)))
 

@@ -403,6 +403,47 @@ def _tried(setup: Mapping[str, Any], lever: str) -> None:
         kept["tried"] = (*kept["tried"], lever)
 
 
+def lte_reached(setup: Mapping[str, Any], e: DevelopmentEvaluation, what: str,
+                why: str = "", lever: str = "") -> None:
+    """Record a check step's drive design in the development's least-LTE record
+    (``setup["lte_reach"]``, which ``ltca synthesize``'s contact-ratio note states, :func:`
+    contact.commands.synthesize.reach_text`): kept where its larger LTE p-p of the light
+    and design torque is the least seen, and ``lever`` added to the levers tried.
+
+    Parameters
+    ----------
+    setup : mapping
+        The development's state (``"torques"`` [N·m]); a non-dict records nothing.
+    e : DevelopmentEvaluation
+        The design, checked (its ``metrics["lte_peak_to_peak"]`` [µrad]).
+    what : str
+        The design in words ("design 35 with te_level 128 urad").
+    why : str, optional
+        Why it was not kept (empty: kept).
+    lever : str, optional
+        The lever in words, added to the record's ``"tried"`` (empty: none).
+
+    Returns
+    -------
+    None
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: the record :func:`checked_crowning_lte` and :func:`checked_overlap_lte` keep
+    (issue 71; docs/synthesis.md, "Low contact ratios"), for the check steps of other
+    modules (:mod:`contact.optimize.development_matched_te`).
+    """
+    if e is None or e.metrics is None:
+        return
+    _reached(setup, e, what, why)
+    if lever:
+        _tried(setup, lever)
+
+
 def checked_crowning_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                          setup: Mapping[str, Any], teeth: KeptTeeth | None,
                          say: Callable[[str], None],
