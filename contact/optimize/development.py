@@ -131,6 +131,7 @@ from contact.optimize.development_coast import (  # noqa: F401
     CoastCheck,
     coast_capacity,
 )
+from contact.optimize.development_coast_capacity_lte import coast_lte_within_capacity
 from contact.optimize.development_coast_flank import (  # noqa: F401
     COAST_BEARING_DESIGNS,
     COAST_REDEVELOP,
@@ -535,6 +536,16 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                 coast, _ = coast_flank_capacity(case, basic, coast, targets, setup,
                                                 float(coast.torques[1]), root_stress,
                                                 False, say)
+        # its LTE still above the verdict's limit: a bearing whose peak may rise past the
+        # local pitting bound, up to the static strength (development_coast_capacity_lte)
+        within = coast_lte_within_capacity(developed, best, targets, setup, teeth, memo,
+                                           say, coast, coast_cap)
+        if within is not None:  # written, and analysed as `ltca run --flank coast` does
+            coast, developed = within, within.basic
+            case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
+            _both_flanks_built(case, root_stress, built, say)
+            coast, _ = coast_flank_capacity(case, basic, coast, targets, setup,
+                                            float(coast.torques[1]), root_stress, False, say)
     coast_seconds += time.process_time() - c_cap
     tolerance = final_tolerance(case, targets, setup, teeth, best.values)
     # not tolerant at the design torque: the torque up to which it is, stated (the design
