@@ -101,6 +101,7 @@ design_torque_of     the torque the bearing is checked at
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
 import time
@@ -541,7 +542,11 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
         within = coast_lte_within_capacity(developed, best, targets, setup, teeth, memo,
                                            say, coast, coast_cap)
         if within is not None:  # written, and analysed as `ltca run --flank coast` does
-            coast, developed = within, within.basic
+            coast, text = within
+            developed = coast.basic
+            if text:  # the coast design torque's source says what the LTE cost
+                coast_cap = dataclasses.replace(coast_cap,
+                                                reason=f"{coast_cap.reason}; then {text}")
             case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
             _both_flanks_built(case, root_stress, built, say)
             coast, _ = coast_flank_capacity(case, basic, coast, targets, setup,

@@ -362,7 +362,8 @@ def checked_coast_capacity_lte(best: DevelopmentEvaluation, targets: Development
 def coast_lte_within_capacity(developed: BasicDesign, drive: DevelopmentEvaluation,
                               targets: DevelopmentTargets, setup: dict[str, Any],
                               teeth: KeptTeeth, memo: dict, say: Callable[[str], None],
-                              coast: Any, cap: CoastCapacity | None) -> Any | None:
+                              coast: Any, cap: CoastCapacity | None
+                              ) -> tuple[Any, str] | None:
     """:func:`checked_coast_capacity_lte` on the written case's coast flank at its own
     torques (``coast.torques``, as ``ltca run --flank coast`` analyses it), after every
     other coast step, where its LTE p-p there still exceeds the verdict's limit.
@@ -375,17 +376,20 @@ def coast_lte_within_capacity(developed: BasicDesign, drive: DevelopmentEvaluati
         The drive design written (its bearing keys the kept pinion teeth).
     targets, setup, teeth, memo, say
         The development's.
-    coast : the coast outcome of :func:`~contact.optimize.development_coast_flank.
-        coast_flank_capacity` (its ``best`` checked at ``torques``).
+    coast : NamedTuple
+        The coast outcome of :func:`~contact.optimize.development_coast_flank.
+        coast_flank_capacity` (its ``best`` checked at its ``torques`` [N·m]).
     cap : CoastCapacity or None
         The coast capacity search's result (its last check: the static strength and the
         local pitting safety at the coast design torque).
 
     Returns
     -------
-    The coast outcome with the design kept (its ``basic`` carrying its coast
-    prescriptions), or None (nothing kept; nothing analysed where the LTE is within the
-    limit, the coast development is off, or no check gives the static strength).
+    (outcome, text) or None
+        The coast outcome with the design kept (its ``basic`` carrying its coast
+        prescriptions) and what it gave up (:func:`capacity_text`, for the coast design
+        torque's source), or None (nothing kept; nothing analysed where the LTE is within
+        the limit, the coast development is off, or no check gives the static strength).
 
     Raises
     ------
@@ -418,14 +422,50 @@ def coast_lte_within_capacity(developed: BasicDesign, drive: DevelopmentEvaluati
                                      key_prefix=(*bearing_key(drive.values), "coast"))
     if got is old:
         return None
+    text = capacity_text(got, cap, float(coast.torques[1]))
+    if text:
+        say(f"development: coast flank {text}")
+    return (coast._replace(basic=with_flank_options(developed, side, got.values), best=got),
+            text)
+
+
+def capacity_text(e: DevelopmentEvaluation, cap: CoastCapacity, torque: float) -> str:
+    """What the coast design ``e`` kept by :func:`checked_coast_capacity_lte` gave up, for
+    the coast design torque's source: its LTE p-p, its flank peak against the static
+    strength and its local pitting safety S_H,loc at ``torque`` [N·m] (the capacity
+    search's last check's × its pitting bound over ``e``'s peak, S_H,loc ∝ 1/p), where the
+    peak exceeds that bound; empty where it does not (or the bound is unknown).
+
+    Parameters
+    ----------
+    e : DevelopmentEvaluation
+        The kept coast design, checked at the coast flank's torques.
+    cap : CoastCapacity
+        The coast capacity search's result (its last check at the coast design torque).
+    torque : float — [N·m]
+        The coast design torque.
+
+    Returns
+    -------
+    str
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: :func:`~contact.optimize.development_coast_flank.pitting_pressure` (the local
+    pitting safety σ_HP / (p √(K_A K_v)), ISO 10300-2 with the bearing's own peak).
+    """
+    final = cap.final
     bound = pitting_pressure(cap)
-    peak = float(got.metrics["pressure_max_flank"][-1])
-    if math.isfinite(bound) and peak > bound:
-        s_loc = float(final.s_h_min) * bound / peak
-        say(f"development: coast flank kept at LTE p-p "
-            f"{np.nanmax(got.metrics['lte_peak_to_peak']):.0f} urad, peak {peak:.0f} MPa "
-            f"(static strength {static:.0f}): its local pitting safety S_H,loc "
-            f"{s_loc:.2f} at {coast.torques[1]:.4g} N m below S_Hmin "
-            f"{float(final.s_h_min):g}; the rating's S_H holds there (at or below the "
-            "coast side's ISO capacity)")
-    return coast._replace(basic=with_flank_options(developed, side, got.values), best=got)
+    peak = float(e.metrics["pressure_max_flank"][-1])
+    if final is None or not (math.isfinite(bound) and peak > bound):
+        return ""
+    s_min = float(final.s_h_min)
+    return (f"LTE p-p {float(np.nanmax(e.metrics['lte_peak_to_peak'])):.0f} urad within "
+            f"60 urad bought with its local pitting margin: flank peak {peak:.0f} MPa "
+            f"(static strength {float(final.limit):.0f} MPa), S_H,loc "
+            f"{s_min * bound / peak:.2f} at {torque:.4g} N m below S_Hmin {s_min:g}; the "
+            "rating's S_H holds there (at or below the coast side's ISO 10300 capacity)")
