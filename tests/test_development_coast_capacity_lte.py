@@ -187,7 +187,7 @@ def test_fh_spiral_bevel_10x31_coast_lte_within_60_urad():
     --flank coast`` does at its light and coast design torque (the development's last
     coast check), has LTE p-p within 60 µrad at both (75 µrad before the step), no plastic
     segment and its flank peak within the static strength; the coast design torque is kept
-    (≈ 100 s CPU with a warm FE cache, several minutes cold)."""
+    (88 s CPU with the FE cache warm, measured; several minutes cold)."""
     from pathlib import Path
 
     from contact.optimize.development import develop

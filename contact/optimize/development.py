@@ -71,7 +71,8 @@ design in ``development_variant``, the keep rule in ``development_keep``, the to
 in ``development_tolerance``, the pattern, LTE and coast steps in
 ``development_pattern_steps``, ``development_lte_steps``, ``development_coast_steps``);
 the coast flank's development in
-:mod:`contact.optimize.development_coast_flank` and its design torque in
+:mod:`contact.optimize.development_coast_flank`, its LTE within the flank's capacity (its
+last step) in :mod:`contact.optimize.development_coast_capacity_lte` and its design torque in
 :mod:`contact.optimize.development_coast`; the root-stress and pitting capacity in
 :mod:`contact.optimize.development_root`; one design and the result (its text and its
 records in the case) in :mod:`contact.optimize.development_result`; the orchestration

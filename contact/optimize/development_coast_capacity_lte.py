@@ -7,19 +7,20 @@ its local pitting safety, the peak at which S_H,loc = S_Hmin
 (:func:`~contact.optimize.development_coast_flank.pitting_pressure`). On a flank at that
 bound every bearing that brings its LTE within the verdict's 60 µrad is refused, however
 far its peak stays below the static strength, and the case is written with an LTE the
-verdict flags. :func:`checked_coast_capacity_lte` gives such a coast design the longest ellipse, its
-light-load pattern's clearance to toe and heel by M's place and lighter reliefs, and keeps
-one on a rule of its own
-(:func:`capacity_kept`): the verdict's LTE limit met at every torque where the design
-misses it, no plastic segment, no target the design met lost but the pattern length and
-the pitting bound, and its peak within the flank's static strength — the verdict's FAIL
-limit and the bound of the coast capacity search's ``flank`` criterion; the coast design
-torque is at or below the coast side's ISO 10300 capacity already
-(:func:`~contact.optimize.development_coast_flank.coast_rated_torque`), so the rating's
-S_H ≥ S_Hmin holds there whatever the bearing. The local safety S_H,loc the kept design
-has at the coast design torque is said (∝ 1/p: the pitting bound × S_Hmin / p).
-:func:`coast_lte_within_capacity` runs it on the written case's coast flank at its own
-torques, after every other coast step.
+verdict flags. :func:`checked_coast_capacity_lte` gives such a coast design the longest
+ellipse, its light-load pattern's clearance to toe and heel by M's place and lighter
+reliefs, and keeps one on a rule of its own (:func:`capacity_kept`): the verdict's LTE
+limit met at every torque where the design misses it, no plastic segment, no target the
+design met lost but the pattern length and the pitting bound, and its peak within the
+flank's static strength — the verdict's FAIL limit and the bound of the coast capacity
+search's ``flank`` criterion. The coast design torque is at or below the coast side's ISO
+10300 capacity already (:func:`~contact.optimize.development_coast_flank.
+coast_rated_torque`; or the basic file's ``coast_design_torque``), and the rating reads the
+basic data, not the bearing: the rating's S_H at it is the same whatever the bearing. The
+local safety S_H,loc the kept design has at the coast design torque is said and written
+into the coast design torque's source (∝ 1/p: the pitting bound × S_Hmin / p,
+:func:`capacity_text`). :func:`coast_lte_within_capacity` runs it on the written case's
+coast flank at its own torques, after every other coast step.
 """
 
 from __future__ import annotations
