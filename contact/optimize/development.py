@@ -71,7 +71,8 @@ design in ``development_variant``, the keep rule in ``development_keep``, the to
 in ``development_tolerance``, the pattern, LTE and coast steps in
 ``development_pattern_steps``, ``development_lte_steps``, ``development_coast_steps``);
 the coast flank's development in
-:mod:`contact.optimize.development_coast_flank` and its design torque in
+:mod:`contact.optimize.development_coast_flank`, its LTE within the flank's capacity (its
+last step) in :mod:`contact.optimize.development_coast_capacity_lte` and its design torque in
 :mod:`contact.optimize.development_coast`; the root-stress and pitting capacity in
 :mod:`contact.optimize.development_root`; one design and the result (its text and its
 records in the case) in :mod:`contact.optimize.development_result`; the orchestration
@@ -101,6 +102,7 @@ design_torque_of     the torque the bearing is checked at
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
 import time
@@ -131,6 +133,7 @@ from contact.optimize.development_coast import (  # noqa: F401
     CoastCheck,
     coast_capacity,
 )
+from contact.optimize.development_coast_capacity_lte import coast_lte_within_capacity
 from contact.optimize.development_coast_flank import (  # noqa: F401
     COAST_BEARING_DESIGNS,
     COAST_REDEVELOP,
@@ -535,6 +538,20 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                 coast, _ = coast_flank_capacity(case, basic, coast, targets, setup,
                                                 float(coast.torques[1]), root_stress,
                                                 False, say)
+        # its LTE still above the verdict's limit: a bearing whose peak may rise past the
+        # local pitting bound, up to the static strength (development_coast_capacity_lte)
+        within = coast_lte_within_capacity(developed, best, targets, setup, teeth, memo,
+                                           say, coast, coast_cap)
+        if within is not None:  # written, and analysed as `ltca run --flank coast` does
+            coast, text = within
+            developed = coast.basic
+            if text:  # the coast design torque's source says what the LTE cost
+                coast_cap = dataclasses.replace(coast_cap,
+                                                reason=f"{coast_cap.reason}; then {text}")
+            case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
+            _both_flanks_built(case, root_stress, built, say)
+            coast, _ = coast_flank_capacity(case, basic, coast, targets, setup,
+                                            float(coast.torques[1]), root_stress, False, say)
     coast_seconds += time.process_time() - c_cap
     tolerance = final_tolerance(case, targets, setup, teeth, best.values)
     # not tolerant at the design torque: the torque up to which it is, stated (the design

@@ -1,0 +1,472 @@
+"""The coast flank's LTE bought with its local pitting margin, within its capacity (issue 71).
+
+The coast LTE steps (:mod:`contact.optimize.development_coast_steps`) keep a design only
+where its flank peak pressure at the coast design torque is no higher than the design's
+or within the targets' ``max_flank_pressure`` — where the coast design torque was set by
+its local pitting safety, the peak at which S_H,loc = S_Hmin
+(:func:`~contact.optimize.development_coast_flank.pitting_pressure`). On a flank at that
+bound every bearing that brings its LTE within the verdict's 60 µrad is refused, however
+far its peak stays below the static strength, and the case is written with an LTE the
+verdict flags. :func:`checked_coast_capacity_lte` gives such a coast design the longest
+ellipse, its light-load pattern's clearance to toe and heel by M's place and lighter
+reliefs, and keeps one on a rule of its own (:func:`capacity_kept`): the verdict's LTE
+limit met at every torque where the design misses it, no plastic segment, no target the
+design met lost but the pattern length and the pitting bound, and its peak within the
+flank's static strength — the verdict's FAIL limit and the bound of the coast capacity
+search's ``flank`` criterion. The coast design torque is at or below the coast side's ISO
+10300 capacity already (:func:`~contact.optimize.development_coast_flank.
+coast_rated_torque`; or the basic file's ``coast_design_torque``), and the rating reads the
+basic data, not the bearing: the rating's S_H at it is the same whatever the bearing. The
+local safety S_H,loc the kept design has at the coast design torque is said and written
+into the coast design torque's source (∝ 1/p: the pitting bound × S_Hmin / p,
+:func:`capacity_text`). :func:`coast_lte_within_capacity` runs it on the written case's
+coast flank at its own torques, after every other coast step.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from collections.abc import Callable, Mapping
+from typing import Any
+
+import numpy as np
+
+from contact.optimize.development_coast import CoastCapacity
+from contact.optimize.development_coast_flank import pitting_pressure
+from contact.optimize.development_coast_steps import COAST_LIGHTER_RELIEF_STEPS
+from contact.optimize.development_evaluate import KeptTeeth, bearing_key
+from contact.optimize.development_keep import lost_targets
+from contact.optimize.development_pattern_steps import (
+    CENTRE_U_SLOPE,
+    SHIFT_BOUNDS,
+    SHIFT_NAME,
+)
+from contact.optimize.development_result import DevelopmentEvaluation
+from contact.optimize.development_targets import DevelopmentTargets
+from contact.optimize.development_variant import changed_values, said_variant
+from geometry.case import Case
+from geometry.synthesis.basic_design import BasicDesign, with_flank_options
+
+log = logging.getLogger("contact.optimize.development")
+
+#: the check stage of the step's designs (:attr:`DevelopmentEvaluation.stage`)
+STAGE = "coast lte capacity"
+
+#: the targets a design of :func:`checked_coast_capacity_lte` may give up: the pattern
+#: length (as every coast LTE step, :func:`~contact.optimize.development_keep.
+#: lost_but_length`) and the flank pressure target, which on the coast flank at its
+#: pitting-set design torque is the local pitting bound, not the static strength (that
+#: one :func:`capacity_kept` asks itself)
+MAY_LOSE = ("length", "pressure")
+
+#: the step's last designs, each on the longest-ellipse design with its clearance back
+#: (factors [1] of its reliefs, within their bounds): its root relief × ⅔, then the coast
+#: LTE steps' lighter reliefs (:data:`~contact.optimize.development_coast_steps.
+#: COAST_LIGHTER_RELIEF_STEPS`: the tip relief × ⅔; the tip and root relief × ⅔). The
+#: root relief first: on the 10x31 z0 3 the lighter tip relief put 2.2 % of the coast
+#: design torque on the edges (the target 2 %, met before), the root relief did not
+LIGHTER_RELIEFS = ((("root_relief", 2.0 / 3.0),), *COAST_LIGHTER_RELIEF_STEPS)
+
+#: [1 of the face] what :func:`clearance_shift` gives a pattern end beyond the targets'
+#: ``clearance``: a node column of ``ltca run``'s sampling (0.025 of the face), the
+#: pattern's ends being read on its nodes
+CLEARANCE_MARGIN = 0.025
+
+#: least change of M's place [1 of the face] :func:`clearance_shift` asks for before a
+#: design is made of it
+SHIFT_LEAST = 0.005
+
+
+def longest_ellipse(values: Mapping[str, float], targets: DevelopmentTargets
+                    ) -> dict[str, float] | None:
+    """The first design of :func:`checked_coast_capacity_lte`: ``values`` [file units] with
+    ``ellipse_length`` at the upper bound of its variable; None where the targets do not
+    vary it or ``values`` lack it. (At the bound already: ``values`` as they are.)
+
+    Parameters
+    ----------
+    values : mapping name → float
+        The coast design's prescriptions [file units].
+    targets : DevelopmentTargets
+        Its ``variables`` (the bounds).
+
+    Returns
+    -------
+    dict or None
+
+    Raises
+    ------
+    Nothing; a pure function of its inputs.
+
+    Notes
+    -----
+    Source: Litvin & Fuentes, *Gear Geometry and Applied Theory*, 2nd ed., 2004, §9.4 (the
+    contact ellipse's length, the lengthwise crowning); docs/synthesis.md, "The coast LTE
+    within the flank's capacity".
+    """
+    name = "ellipse_length"
+    if name not in targets.variables or name not in values:
+        return None
+    return dict(values) | {name: float(max(targets.variables[name]))}
+
+
+def clearance_shift(e: DevelopmentEvaluation, targets: DevelopmentTargets) -> float:
+    """M's place [1 of the face, ``mean_point_shift``] that gives ``e``'s light-load
+    pattern, where one end is short of the targets' ``clearance`` to the toe or the heel,
+    that clearance plus :data:`CLEARANCE_MARGIN` there: its place plus the gap missing over
+    :data:`~contact.optimize.development_pattern_steps.CENTRE_U_SLOPE` (the pattern
+    following M along the face), towards the other end, no further than centres the
+    pattern between the two, within the variable's bounds
+    (:data:`~contact.optimize.development_pattern_steps.SHIFT_BOUNDS` where the targets do
+    not vary it). Its own place where both ends have their clearance (or both miss it);
+    NaN where the pattern's ends are not finite.
+
+    Parameters
+    ----------
+    e : DevelopmentEvaluation
+        A checked design (its ``pattern_toe_u``, ``pattern_heel_u`` at the light torque,
+        [1 of the face]).
+    targets : DevelopmentTargets
+        Its ``clearance`` [1] and ``variables`` (the bounds).
+
+    Returns
+    -------
+    float — [1]
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    The least move: the pattern centred between its ends put the 10x31's centre u off its
+    band (0.45 ± 0.08), a target the design met. Source:
+    :func:`~contact.optimize.development_pattern_steps.checked_centre_u` (M placed off the
+    mean cone distance moves the pattern along the face; Litvin & Fuentes 2004, §9.2).
+    """
+    toe = float(e.metrics["pattern_toe_u"][0])
+    gap_heel = 1.0 - float(e.metrics["pattern_heel_u"][0])
+    now = float(e.values.get(SHIFT_NAME, 0.0))
+    if not (math.isfinite(toe) and math.isfinite(gap_heel)):
+        return math.nan
+    need = targets.clearance + CLEARANCE_MARGIN
+    half = 0.5 * (gap_heel - toe)  # [1 of the face] the move that centres it, > 0 heel
+    if toe < targets.clearance <= gap_heel:
+        du = min(need - toe, half)
+    elif gap_heel < targets.clearance <= toe:
+        du = max(-(need - gap_heel), half)
+    else:
+        return now
+    lo, hi = (float(x) for x in targets.variables.get(SHIFT_NAME, SHIFT_BOUNDS))
+    return float(np.clip(now + du / CENTRE_U_SLOPE, lo, hi))
+
+
+def lighter_reliefs(values: Mapping[str, float], targets: DevelopmentTargets
+                    ) -> list[dict[str, float]]:
+    """The designs of :data:`LIGHTER_RELIEFS` about ``values`` [file units]: each relief ×
+    its factor within its variable's bounds; a step naming a relief the targets do not
+    vary or ``values`` lack, or that changes nothing, left out.
+
+    Parameters
+    ----------
+    values : mapping name → float
+        The design's prescriptions [file units].
+    targets : DevelopmentTargets
+        Its ``variables`` (the bounds).
+
+    Returns
+    -------
+    list of dict
+
+    Raises
+    ------
+    Nothing; a pure function of its inputs.
+
+    Notes
+    -----
+    Source: :func:`~contact.optimize.development_coast_steps.checked_coast_lighter_relief`
+    (the relief sized to the load's deflection; Stadtfeld, *Gleason Bevel Gear
+    Technology*, 2014).
+    """
+    out: list[dict[str, float]] = []
+    for changes in LIGHTER_RELIEFS:
+        new = dict(values)
+        for name, factor in changes:
+            if name not in targets.variables or name not in values:
+                break
+            lo, hi = (float(x) for x in targets.variables[name])
+            new[name] = float(np.clip(factor * float(values[name]), lo, hi))
+        else:
+            if any(abs(new[n] - float(values[n])) > 1e-9 for n, _ in changes):
+                out.append(new)
+    return out
+
+
+def capacity_kept(best: DevelopmentEvaluation, e: DevelopmentEvaluation | None,
+                  targets: DevelopmentTargets, limit: float, static: float) -> str:
+    """Why the coast design ``e`` does not replace ``best`` on the rule of
+    :func:`checked_coast_capacity_lte`, empty where it does.
+
+    Parameters
+    ----------
+    best : DevelopmentEvaluation
+        The coast design kept so far, checked; its LTE p-p above ``limit`` at a torque.
+    e : DevelopmentEvaluation or None
+        The step's design (None: its synthesis or analysis failed).
+    targets : DevelopmentTargets
+        Its ``max_plastic_share`` [1].
+    limit : float — [µrad]
+        The verdict's LTE limit.
+    static : float — [MPa]
+        The coast flank's static strength (the verdict's flank-pressure FAIL limit).
+
+    Returns
+    -------
+    str
+        Empty where ``e`` is kept: its LTE p-p within ``limit`` at every torque, no
+        plastic share above ``max_plastic_share``, no target ``best`` met missed but those
+        of :data:`MAY_LOSE`, and its flank peak pressure at the design torque within
+        ``static``; else the reason.
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    The peak may rise past the coast flank's local pitting bound, which the coast LTE
+    steps' rule (:func:`~contact.optimize.development_keep.pressure_raised`) does not
+    allow: what the coast design torque needs is the static strength (the verdict's
+    FAIL) and the rating's S_H ≥ S_Hmin, which the torque holds at or below the coast
+    side's ISO 10300 capacity (ISO 10300-2:2014, the capacity search of
+    :mod:`contact.load_capacity.iso10300.capacity`); the LTE limit is the verdict's own
+    (:data:`contact.study.verdicts.LTE_LIMIT`). Source: issue 71 ("LTE p-p ≤ 60 µrad at
+    every torque", both flanks).
+    """
+    if e is None or e.full is None or e.metrics is None:
+        return "it could not be analysed"
+    lte = float(np.nanmax(e.metrics["lte_peak_to_peak"]))
+    if not lte <= limit:
+        return f"its LTE p-p {lte:.0f} urad above {limit:g}"
+    plastic = float(np.max(e.metrics["plastic_share"]))
+    if plastic > targets.max_plastic_share:
+        return f"plastic segments carry {100 * plastic:.2g} % of the torque"
+    gone = [k for k in lost_targets(best, e) if k not in MAY_LOSE]
+    if gone:
+        return f"it misses {', '.join(gone)}"
+    peak = float(e.metrics["pressure_max_flank"][-1])
+    if not peak <= static:
+        return f"its flank peak {peak:.0f} MPa above the static strength {static:.0f} MPa"
+    return ""
+
+
+def checked_coast_capacity_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                               setup: Mapping[str, Any], teeth: KeptTeeth | None,
+                               say: Callable[[str], None],
+                               placed: Callable[[Mapping[str, float]], Case], *,
+                               static: float, key_prefix: tuple = (),
+                               limit: float | None = None) -> DevelopmentEvaluation:
+    """A coast design whose LTE p-p at the check exceeds the verdict's limit at a torque,
+    given the longest ellipse (:func:`longest_ellipse`), its light-load pattern given its
+    clearance to the toe and heel back by M's place (:func:`clearance_shift`) and, on that,
+    lighter
+    reliefs (:func:`lighter_reliefs`): at most four designs, each placed and checked at
+    ``ltca run``'s sampling on the coast flank at ``setup["torques"]`` and judged by
+    :func:`capacity_kept` against ``best``; of those kept, the one of least flank peak
+    pressure at the design torque (the capacity the LTE is bought with).
+
+    Parameters
+    ----------
+    best : DevelopmentEvaluation
+        The coast design, checked at the coast flank's light and design torque.
+    targets, setup, teeth, say, placed
+        As every coast check step's (:func:`~contact.optimize.development_coast_steps.
+        checked_coast_lte`).
+    static : float — [MPa]
+        The coast flank's static strength.
+    key_prefix : tuple, optional
+        The kept pinion tooth's key before the design's bearing.
+    limit : float, optional — [µrad]
+        The verdict's LTE limit (default :data:`contact.study.verdicts.LTE_LIMIT`).
+
+    Returns
+    -------
+    DevelopmentEvaluation
+        The design kept, or ``best`` itself (nothing analysed where ``best`` is within
+        ``limit`` at every torque, unchecked, ``static`` is not finite or the targets do
+        not vary the ellipse).
+
+    Raises
+    ------
+    Nothing: a design whose synthesis or analysis fails is not kept (logged).
+
+    Notes
+    -----
+    A longer contact ellipse (less lengthwise crowning) lets more of the face share the
+    load as the pairs hand over (Litvin & Fuentes, *Gear Geometry and Applied Theory*, 2nd
+    ed., 2004, §9.4; Stadtfeld, *Gleason Bevel Gear Technology*, 2014) but reaches the toe
+    or heel at light load unless M, about which the local synthesis makes it, is moved to
+    centre it; a relief lighter than the one set against the edges at the torque the flank
+    was first developed at keeps the flank where the next pair takes up its load. Each
+    raises the peak a little. Measured on the face-hobbed spiral bevel 10x31 z0 3's coast
+    flank as written (benchmarks/data/unseen_designs; 17.3 / 90.5 N m, path −45°, ellipse
+    0.55, tip relief 10 µm from 0.5, root relief 26.7 µm from 0.2; ``benchmarks/
+    development_levers.py --flank coast --from-case --check``, 2026-11-27; LTE p-p light /
+    design [µrad], peak [MPa]): 49.4 / 74.8, 1522 (its pitting bound 1537, static strength
+    2400); ellipse 0.75: 44.4 / 62.1, 1654, light-load pattern 0.03-0.85 (the toe's
+    clearance lost); with M +0.0368 of the face: 45.5 / 61.2, 1564, 0.08-0.90; with the root
+    relief 17.8 µm (× ⅔) too: 43.2 / 55.1, 1852, every target the design met kept; with the
+    tip relief 6.7 µm (× ⅔) instead: 31.2 / 55.2, 1529, but 2.2 % on the edges (docs/
+    synthesis.md, "The coast LTE within the flank's capacity").
+    """
+    from contact.study.verdicts import LTE_LIMIT
+
+    limit = LTE_LIMIT if limit is None else float(limit)
+    first = longest_ellipse(best.values, targets)
+    if (best.full is None or not best.checked or best.metrics is None or first is None
+            or not math.isfinite(static)
+            or not float(np.nanmax(best.metrics["lte_peak_to_peak"])) > limit):
+        return best
+    kept: list[DevelopmentEvaluation] = []
+
+    def tried(values: Mapping[str, float], why: str) -> DevelopmentEvaluation | None:
+        e = said_variant(best, values, STAGE,
+                         f"with {changed_values(values, best.values)} ({why}; its LTE above "
+                         f"{limit:g} urad, its peak up to the static strength "
+                         f"{static:.0f} MPa)", targets, setup, teeth, say, placed,
+                         flank="coast", key_prefix=key_prefix)
+        refused = capacity_kept(best, e, targets, limit, static)
+        if refused:
+            say(f"  not kept: {refused}")
+        elif e is not None:
+            kept.append(e)
+        return e
+
+    base = best
+    if any(abs(float(first[k]) - float(best.values[k])) > 1e-9 for k in first):
+        base = tried(first, "the longest ellipse")
+    if base is not None:
+        x = clearance_shift(base, targets)
+        if (math.isfinite(x)
+                and abs(x - float(base.values.get(SHIFT_NAME, 0.0))) >= SHIFT_LEAST):
+            centred = tried(dict(base.values) | {SHIFT_NAME: round(x, 4)},
+                            "its light-load pattern off the toe and heel by M's place")
+            base = centred if centred is not None else base
+        for values in lighter_reliefs(base.values, targets):
+            tried(values, "lighter relief")
+    if not kept:
+        return best
+    return min(kept, key=lambda e: float(e.metrics["pressure_max_flank"][-1]))
+
+
+def coast_lte_within_capacity(developed: BasicDesign, drive: DevelopmentEvaluation,
+                              targets: DevelopmentTargets, setup: dict[str, Any],
+                              teeth: KeptTeeth, memo: dict, say: Callable[[str], None],
+                              coast: Any, cap: CoastCapacity | None
+                              ) -> tuple[Any, str] | None:
+    """:func:`checked_coast_capacity_lte` on the written case's coast flank at its own
+    torques (``coast.torques``, as ``ltca run --flank coast`` analyses it), after every
+    other coast step, where its LTE p-p there still exceeds the verdict's limit.
+
+    Parameters
+    ----------
+    developed : BasicDesign
+        The basic design written (both flanks' prescriptions).
+    drive : DevelopmentEvaluation
+        The drive design written (its bearing keys the kept pinion teeth).
+    targets, setup, teeth, memo, say
+        The development's.
+    coast : NamedTuple
+        The coast outcome of :func:`~contact.optimize.development_coast_flank.
+        coast_flank_capacity` (its ``best`` checked at its ``torques`` [N·m]).
+    cap : CoastCapacity or None
+        The coast capacity search's result (its last check: the static strength and the
+        local pitting safety at the coast design torque).
+
+    Returns
+    -------
+    (outcome, text) or None
+        The coast outcome with the design kept (its ``basic`` carrying its coast
+        prescriptions) and what it gave up (:func:`capacity_text`, for the coast design
+        torque's source), or None (nothing kept; nothing analysed where the LTE is within
+        the limit, the coast development is off, or no check gives the static strength).
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: issue 71; docs/synthesis.md, "The coast LTE within the flank's capacity".
+    """
+    from contact.study.verdicts import LTE_LIMIT
+    from geometry.synthesis.case_synthesis import synthesize
+
+    old = coast.best if coast is not None else None
+    final = cap.final if cap is not None else None
+    if (old is None or old.full is None or not old.checked or len(coast.torques) != 2
+            or final is None or targets.coast_max_evaluations == 0
+            or not float(np.nanmax(old.metrics["lte_peak_to_peak"])) > LTE_LIMIT):
+        return None
+    side = "convex" if developed.options.drive_flank == "concave" else "concave"
+    static = float(final.limit)
+    say(f"development: coast flank LTE p-p {np.nanmax(old.metrics['lte_peak_to_peak']):.0f}"
+        f" urad at {coast.torques[0]:.4g}/{coast.torques[1]:.4g} N m after its LTE steps: "
+        f"bearings whose peak may rise up to the static strength {static:.0f} MPa")
+
+    def placed(values):
+        return synthesize(with_flank_options(developed, side, values), memo=memo)[0]
+
+    got = checked_coast_capacity_lte(old, targets, dict(setup, torques=list(coast.torques)),
+                                     teeth, say, placed, static=static,
+                                     key_prefix=(*bearing_key(drive.values), "coast"))
+    if got is old:
+        return None
+    text = capacity_text(got, cap, float(coast.torques[1]))
+    if text:
+        say(f"development: coast flank {text}")
+    return (coast._replace(basic=with_flank_options(developed, side, got.values), best=got),
+            text)
+
+
+def capacity_text(e: DevelopmentEvaluation, cap: CoastCapacity, torque: float) -> str:
+    """What the coast design ``e`` kept by :func:`checked_coast_capacity_lte` gave up, for
+    the coast design torque's source: its LTE p-p, its flank peak against the static
+    strength and its local pitting safety S_H,loc at ``torque`` [N·m] (the capacity
+    search's last check's × its pitting bound over ``e``'s peak, S_H,loc ∝ 1/p), where the
+    peak exceeds that bound; empty where it does not (or the bound is unknown).
+
+    Parameters
+    ----------
+    e : DevelopmentEvaluation
+        The kept coast design, checked at the coast flank's torques.
+    cap : CoastCapacity
+        The coast capacity search's result (its last check at the coast design torque).
+    torque : float — [N·m]
+        The coast design torque.
+
+    Returns
+    -------
+    str
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: :func:`~contact.optimize.development_coast_flank.pitting_pressure` (the local
+    pitting safety σ_HP / (p √(K_A K_v)), ISO 10300-2 with the bearing's own peak).
+    """
+    final = cap.final
+    bound = pitting_pressure(cap)
+    peak = float(e.metrics["pressure_max_flank"][-1])
+    if final is None or not (math.isfinite(bound) and peak > bound):
+        return ""
+    s_min = float(final.s_h_min)
+    return (f"LTE p-p {float(np.nanmax(e.metrics['lte_peak_to_peak'])):.0f} urad within "
+            f"60 urad bought with its local pitting margin: flank peak {peak:.0f} MPa "
+            f"(static strength {float(final.limit):.0f} MPa), S_H,loc "
+            f"{s_min * bound / peak:.2f} at {torque:.4g} N m below S_Hmin {s_min:g}; the "
+            "rating's S_H holds there (at or below the coast side's ISO 10300 capacity)")
