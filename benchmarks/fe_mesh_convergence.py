@@ -30,7 +30,7 @@ and rim divisions / 1.5), ``loads11`` / ``loads15`` (11 or 15 columns of unit lo
 the face instead of 21, the 11 rows kept: the coefficients between the columns
 interpolated by the hat functions as everywhere between load points), ``rows8`` /
 ``rows6`` / ``rows5`` (8, 6 or 5 rows of unit loads along the profile instead of 11, the
-21 columns kept: wider hats), ``step2`` (every other of the 11 rows solved, the full grid's
+21 columns kept: wider hats), ``step2`` (rows 0, 1, 2, 4, 6, 8, 10 of the 11 solved, the full grid's
 hats: ``FEOptions(load_row_step=2)``), and combinations.
 Measured 2026-11-26 on six designs: docs/fe.md, "Mesh levels on six designs" (the runs of
 a design at several times share its cache directory: a level already built is read back,

@@ -1,4 +1,5 @@
-"""Every other load row solved (issue 75: ``FEOptions(load_row_step=2)``). The solved loads
+"""Every other load row solved (issue 75: ``FEOptions(load_row_step=2)``, the rows of the
+first step next to the root all solved). The solved loads
 are the full grid's hat functions at those rows, so the coefficients there must be the
 full model's to round-off (the same matrix, loads and ordering; another block of
 right-hand sides), and the root stress between them is their linear interpolation. The
@@ -34,21 +35,23 @@ def _case():
 
 def test_solved_rows_equal_the_full_models_rows(tmp_path):
     """Both flanks of the gear (one build each way, ``other_flank=True``): with
-    ``load_row_step=2`` the load grid is the full grid's rows 0, 2, 4 and every data
+    ``load_row_step=2`` the load grid is the full grid's rows 0, 1, 2, 4 (every row of the
+    first step, then every other) and every data
     variable equals the full model's at those load rows and response rows within 1e-10 of
     the variable's largest magnitude (round-off: another block of right-hand sides in
     the same factorisation's solve). ~15 s of CPU (two coarse builds, both flanks)."""
     case = _case()
     full_opt = COARSE5
     step_opt = FEOptions(**{**full_opt.as_dict(), "load_row_step": 2})
-    assert step_opt.solved_rows == [0, 2, 4]
+    assert step_opt.solved_rows == [0, 1, 2, 4]
+    assert FEOptions(load_row_step=2).solved_rows == [0, 1, 2, 4, 6, 8, 10]
     for flank in ("drive", "coast"):
         full = influence_coefficients(case, "gear", flank, full_opt, cache_dir=tmp_path / "a",
                                       progress=False, other_flank=True)
         step = influence_coefficients(case, "gear", flank, step_opt, cache_dir=tmp_path / "b",
                                       progress=False, other_flank=True)
-        assert step.attrs["cost_n_loads"] == 5 * 3 and full.attrs["cost_n_loads"] == 25
-        rows = {d: [0, 2, 4] for d in ("load_v", "v")}
+        assert step.attrs["cost_n_loads"] == 5 * 4 and full.attrs["cost_n_loads"] == 25
+        rows = {d: [0, 1, 2, 4] for d in ("load_v", "v")}
         sub = full.isel({d: r for d, r in rows.items() if d in full.dims})
         np.testing.assert_array_equal(step["load_v"].values, sub["load_v"].values)
         for name, var in sub.data_vars.items():
@@ -93,18 +96,16 @@ def test_the_fe_compliance_ltca_refuses_a_step():
 
 
 @pytest.mark.slow
-def test_every_other_row_reads_the_default_cases_peak_as_measured(tmp_path):
+def test_every_other_row_reads_the_default_cases_peak_within_three_quarters_percent(tmp_path):
     """The default case at its torques (50/250/500 N·m), the default LTCA: the peak root
-    stress with every other load row solved (126 of 231 loads, the default mesh) against
-    the full grid's, both members. Measured (docs/fe.md, "Every other load row solved"):
-    pinion/gear −0.18/+0.51, −0.19/+0.32, −2.54/+0.04 %; on three new designs, both
-    flanks, −0.27 … +0.83 %. Asserted: within ±0.75 % wherever the peak is set by the
-    distributed contact (50 and 250 N·m, the gear at 500 N·m: the linear interpolation
-    between rows twice as far apart, measured ≤ 0.83 % with ~0.1 point to spare for the
-    LTCA's round-off across versions), and the pinion at 500 N·m, whose peak an edge load
-    near the tip sets, low by less than 3 % (measured −2.54 %) — the documented limit of
-    the option. Minutes: the default coefficients from the user's cache (built if
-    absent) and both members' stepped build."""
+    stress with ``load_row_step=2`` (rows 0, 1, 2, 4, 6, 8, 10: 147 of 231 loads, the
+    default mesh) against the full grid's, both members. Measured (docs/fe.md, "Every
+    other load row solved"): pinion/gear −0.18/+0.51, −0.19/+0.32, −0.01/+0.04 %; on
+    four designs, both flanks, −0.27 … +0.83 %. Asserted: within ±0.75 % (the measured
+    0.51 % and ~0.25 point for the LTCA's round-off across versions; rows 0, 2, …, 10
+    alone, without row 1, read the pinion at 500 N·m 2.54 % low: this bound sees it).
+    Minutes: the default coefficients from the user's cache (built if absent) and both
+    members' stepped build."""
     from contact.catalogue import resolve_case
     from contact.ltca import loaded_tca
     from contact.ltca.root_stress import root_stress
@@ -116,9 +117,5 @@ def test_every_other_row_reads_the_default_cases_peak_as_measured(tmp_path):
     full = root_stress(case, eo, lt)["root_stress_max"].transpose("torque", "member")
     step = root_stress(case, eo, lt, FEOptions(load_row_step=2), cache_dir=tmp_path)[
         "root_stress_max"].transpose("torque", "member")
-    assert list(full["member"].values) == ["pinion", "gear"]
     rel = step.values / full.values - 1.0  # (torque, member)
-    edge = np.zeros(rel.shape, bool)
-    edge[int(np.argmax(case.operating.torque)), 0] = True
-    assert np.all(np.abs(rel[~edge]) < 0.0075), rel
-    assert -0.03 < rel[edge][0] < 0.0075, rel
+    assert np.all(np.abs(rel) < 0.0075), rel
