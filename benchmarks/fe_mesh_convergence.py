@@ -28,7 +28,10 @@ rim; the elements across the tooth follow, :func:`contact.compliance.fe.solid.me
 ``face10``, ``face8``, ``face6`` (elements along the face), ``depth/1.5`` (fillet, flank, half-slot
 and rim divisions / 1.5), ``loads11`` / ``loads15`` (11 or 15 columns of unit loads along
 the face instead of 21, the 11 rows kept: the coefficients between the columns
-interpolated by the hat functions as everywhere between load points), and combinations.
+interpolated by the hat functions as everywhere between load points), ``rows8`` /
+``rows6`` / ``rows5`` (8, 6 or 5 rows of unit loads along the profile instead of 11, the
+21 columns kept: wider hats), ``step2`` (rows 0, 1, 2, 4, 6, 8, 10 of the 11 solved, the full grid's
+hats: ``FEOptions(load_row_step=2)``), and combinations.
 Measured 2026-11-26 on six designs: docs/fe.md, "Mesh levels on six designs" (the runs of
 a design at several times share its cache directory: a level already built is read back,
 its CPU then the read's, and ``--table`` keeps the cold build's).
@@ -78,6 +81,10 @@ def levels() -> dict:
         "face8+loads11": rep(d, face_divisions=8, load_nu=11),
         "face8+depth/1.5": depth(rep(d, face_divisions=8), 1 / 1.5),
         "face10": rep(d, face_divisions=10),
+        "rows8": rep(d, load_nv=8),
+        "rows6": rep(d, load_nv=6),
+        "rows5": rep(d, load_nv=5),
+        "step2": rep(d, load_row_step=2),
     }
 
 

@@ -128,7 +128,8 @@ class LTCAOptions:
     ------
     InputError
         A field out of its range (named, with the range): counts, ``spacing``, ``pairs``
-        without the reference pair 0, non-positive lengths or limits, an unknown model.
+        without the reference pair 0, non-positive lengths or limits, an unknown model;
+        ``fe`` with another material or a ``load_row_step`` other than 1.
     """
 
     cycles: int = 2
@@ -193,6 +194,10 @@ class LTCAOptions:
         if self.compliance != "fe":
             raise InputError(f"fe: FE options are used only with compliance='fe', got "
                              f"compliance={self.compliance!r}")
+        if self.fe.load_row_step != 1:
+            raise InputError(f"fe: load_row_step must be 1 for the FE-compliance LTCA (its "
+                             f"compliance is read at every load row; the step is a root-"
+                             f"stress screening option), got {self.fe.load_row_step}")
         if (self.fe.youngs_modulus, self.fe.poisson_ratio) != (self.youngs_modulus,
                                                                 self.poisson_ratio):
             raise InputError(

@@ -135,7 +135,11 @@ def cache_directory(cache_dir: str | os.PathLike[str] | None = None) -> Path:
 def _plain(obj: Any) -> Any:
     """Dataclasses, tuples and numpy scalars as JSON-able plain values."""
     if dataclasses.is_dataclass(obj) and not isinstance(obj, type):
-        return {f.name: _plain(getattr(obj, f.name)) for f in dataclasses.fields(obj)}
+        # a field marked ``key_at_default: False`` (added after entries were cached) is
+        # left out at its default value: the keys of the models before it stay the same
+        return {f.name: _plain(getattr(obj, f.name)) for f in dataclasses.fields(obj)
+                if f.metadata.get("key_at_default", True)
+                or getattr(obj, f.name) != f.default}
     if isinstance(obj, dict):
         return {str(k): _plain(v) for k, v in obj.items()}
     if isinstance(obj, (list, tuple)):

@@ -390,6 +390,22 @@ def _teeth_flank_loads(solid: ToothSolid, elastic: ElasticModel, offsets, side: 
             {t: out_centre[t] for t in sorted(out_centre)}, a0)
 
 
+def _solved_rows(loads: dict, centre: dict, area: np.ndarray, grid_u: np.ndarray,
+                 grid_v: np.ndarray, options: FEOptions):
+    """The hat loads, mid-surface functionals, hat areas and profile grid of the rows
+    whose unit loads are solved (``options.load_row_step``, :attr:`FEOptions.solved_rows`):
+    the full grid's hat functions at those rows, the others left out — the same loads
+    and functionals as the full model's there, so the coefficients are its own at those
+    rows (issue 75: every other row solved, the rest interpolated). All of them at the
+    default step 1."""
+    rows = options.solved_rows
+    if len(rows) == grid_v.size:
+        return loads, centre, area, grid_v
+    keep = (np.arange(grid_u.size)[:, None] * grid_v.size + np.asarray(rows)[None, :]).ravel()
+    return ({t: m[:, keep].tocsr() for t, m in loads.items()},
+            {t: m[:, keep].tocsr() for t, m in centre.items()}, area[keep], grid_v[rows])
+
+
 def _fillet_points(solid: ToothSolid, elastic: ElasticModel, offsets: list[int]) -> _FilletPoints:
     """Stress points (2 × 2 Gauss points of each facet) along both roots of every tooth."""
     lay = solid.layout
@@ -529,6 +545,7 @@ def build_influence_model(case, member: str, flank: str = "drive",
     loads, centre, area = _teeth_flank_loads(
         solid, elastic, range(-solid.layout.neighbours, solid.layout.neighbours + 1), side,
         grid_u, grid_v)
+    loads, centre, area, grid_v = _solved_rows(loads, centre, area, grid_u, grid_v, opt)
     fillet = _fillet_points(solid, elastic, sorted(loads))
     times["loads_and_points"] = time.perf_counter() - t1
     return InfluenceModel(solid, elastic, factor, name, side, grid_u, grid_v, loads, centre,
@@ -717,6 +734,8 @@ def _other_flank_model(model: InfluenceModel) -> InfluenceModel:
     side = solid.sections.side_name(flank)
     loads, centre, area = _teeth_flank_loads(solid, model.elastic, model.offsets, side,
                                              model.grid_u, grid_v)
+    loads, centre, area, grid_v = _solved_rows(loads, centre, area, model.grid_u, grid_v,
+                                               opt)
     times = dict(model.times, loads_and_points=time.perf_counter() - t1)
     return dataclasses.replace(model, flank=flank, side=side, grid_v=grid_v, loads=loads,
                                centre=centre, hat_area=area, times=times)
