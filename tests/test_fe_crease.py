@@ -19,13 +19,14 @@ refinement itself (a smooth root converges, a notch does not).
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from pathlib import Path
 
 import numpy as np
 import pytest
 
-from contact.compliance.fe.section import _slot_bottom
+from contact.compliance.fe.section import _slot_bottom, _tip_width
 from geometry.case import load_case
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -375,3 +376,16 @@ def test_a_tip_that_reaches_the_fillet_is_still_the_crossing():
         kind = _slot_bottom(_side(), _next_left(0.95), 1.0, 1.0, R, (S_TOP, S_TOP),
                             tips=tips)[3]
         assert kind == "tip meets fillet, rounded into a fillet"
+
+
+def test_a_blade_tip_width_is_its_point_width_less_the_edge_inset():
+    """The flat tip from the fillet's foot: the point width less the tangent length of the
+    edge circle in the blade's corner — r for a right angle (blade angle 0), r tan 35° for
+    a 20° blade (the corner's angle 90° + α: tan(45° − α/2)); 0 where no point width is
+    given. The bundled ISO 23509 sample 2 pinion's concave blade as the carrier."""
+    blade = load_case(ROOT / "cases" / "iso23509_sample2_fm.toml").member("pinion").concave.blade
+    square = dataclasses.replace(blade, blade_angle=0.0, point_width=2.0, edge_radius=0.5)
+    assert _tip_width(square) == pytest.approx(1.5, abs=1e-12)
+    twenty = dataclasses.replace(square, blade_angle=math.radians(20.0))
+    assert _tip_width(twenty) == pytest.approx(2.0 - 0.5 * math.tan(math.radians(35.0)))
+    assert _tip_width(dataclasses.replace(square, point_width=0.0)) == 0.0

@@ -47,9 +47,13 @@ data now, ``point_width``) and the shape of each blade's far side (not case data
 the point widths alone the two tips of the default pinion (before its tip planes were
 placed on the root cone, :mod:`geometry.synthesis.tip_plane`) left a 0.55 mm step over a
 0.8 mm gap at the heel, a bottom that changes kind along the face faster than the mapped
-mesh follows. :attr:`ToothSections.root_line` gives each cut's generated root line,
-:meth:`ToothSections.root_depth` its depth below the blank's root cone (docs/fe.md,
-"Root and slot bottom").
+mesh follows. ``_slot_bottom`` can take step 2's crossing as the union where the crossing
+tip ends short of the fillet it crosses (``tips``: the crossed fillet whole, the deeper
+tip out to its blade's far side), but :func:`tooth_sections` does not use it yet: where
+the bottom changes kind between neighbouring sections the mapped mesh inverts (docs/fe.md,
+"after the union of the cuts"). :attr:`ToothSections.root_line` gives each cut's
+generated root line, :meth:`ToothSections.root_depth` its depth below the blank's root
+cone (docs/fe.md, "Root and slot bottom").
 
 Public names
 ------------
