@@ -19,13 +19,14 @@ refinement itself (a smooth root converges, a notch does not).
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from pathlib import Path
 
 import numpy as np
 import pytest
 
-from contact.compliance.fe.section import _slot_bottom
+from contact.compliance.fe.section import _slot_bottom, _tip_width
 from geometry.case import load_case
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -287,3 +288,104 @@ def test_a_root_stress_peak_at_a_bottom_rounded_into_a_fillet_is_said():
     assert slot_bottom_notes(case, _root_stress_at(0.94, stations), "coast") == []
     assert slot_bottom_notes(case, _root_stress_at(0.46, stations).drop_vars(
         "root_stress"), "coast") == []
+
+
+def _inside(points: np.ndarray, polygon: np.ndarray, tol: float = 1e-6) -> np.ndarray:
+    """Whether each point lies strictly inside the polygon (ray casting), points within
+    ``tol`` of its boundary counting as on it, not inside."""
+    a, b = polygon, np.roll(polygon, -1, axis=0)
+    d = b - a
+    rel = points[:, None, :] - a[None]
+    t = np.clip(np.sum(rel * d, axis=2) / np.sum(d * d, axis=1), 0.0, 1.0)
+    dist = np.linalg.norm(rel - t[..., None] * d, axis=2).min(axis=1)
+    y, x = points[:, None, 1], points[:, None, 0]
+    crosses = (a[:, 1] > y) != (b[:, 1] > y)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        x_at = a[:, 0] + (y - a[:, 1]) * d[:, 0] / d[:, 1]
+    odd = np.sum(crosses & (x < x_at), axis=1) % 2 == 1
+    return odd & (dist > tol)
+
+
+def test_a_tip_that_does_not_reach_the_fillet_leaves_the_union_of_the_cuts():
+    """Issue 71, "the union of the cuts": the hand-drawn slot with the next tooth's tip
+    line at h = 0.95 crosses the first side's fillet at 0.98 of its arc (step 2: before,
+    the crossing was rounded by at most 0.1 R, a notch in that fillet). With the blades'
+    flat tips 2.5 mm wide from their fillets' feet (``tips``), the next tooth's tip ends
+    at x = 1.5, short of the fillet (its crossing lies 4.0 mm from its foot): the machine
+    removes whatever either cut removes, so the first side keeps its whole fillet (every
+    sample of s ≥ 0, the quarter circle, and its tip down to the far corner), its tip
+    ends at its blade's far side x = 1 + 2.5, which rises to the other tip line, and the
+    re-entrant corner at its foot is rounded by the largest arc up to R that fits the
+    0.95 step: a radius of 0.95 R within the bisection's 0.4 % (≥ 0.9 R; step 2's was
+    ≤ 0.1 R). The identity: no point of the new slot boundary lies strictly inside the
+    material either cut removes (each cut's air: above its side and its tip, out to its
+    blade's far side, the first blade's far corner of that radius r), where the old
+    boundary (the second tip line carried across) ran through the first cut's air for
+    2 mm."""
+    h, width = 0.95, 2.5
+    old = _slot_bottom(_side(), _next_left(h), 1.0, 1.0, R, (S_TOP, S_TOP))
+    assert old[3] == "tip meets fillet, rounded into a fillet"
+    right, left_next, _, kind = _slot_bottom(_side(), _next_left(h), 1.0, 1.0, R,
+                                             (S_TOP, S_TOP), tips=(width, width))
+    assert kind == "tip meets fillet, union of the cuts"
+    s_right = right[2][np.isfinite(right[2])]
+    assert s_right.min() < 0.0 and s_right.max() > S_TOP  # the whole fillet and some tip
+    assert np.nanmin(left_next[2]) < 0.0  # the other side: its whole fillet and some tip
+    _, r, centre = _arc(right)
+    assert 0.9 * R <= r <= R * (1 + 1e-12)
+    assert centre == pytest.approx((1.0 + width - r, r), abs=1e-3)  # tangent to y 0, x 3.5
+    # each cut's removed material: the side's curve out to its blade's far side, up; the
+    # far corner of the first cut's blade rounded by r (the blade that leaves the arc)
+    q = np.linspace(0.0, 0.5 * math.pi, 41)
+    tip_end = 1.0 + width
+    air_a = np.r_[[[0.0, 6.0]], np.column_stack([1.0 - np.cos(q), 1.0 - np.sin(q)]),
+                  np.column_stack([tip_end - r + r * np.sin(q), r - r * np.cos(q)]),
+                  [[tip_end, 6.0]]]
+    air_b = np.r_[[[0.0, 6.0]], np.column_stack([1.0 - np.cos(q), 1.0 - np.sin(q)]),
+                  [[tip_end, 0.0], [tip_end, 6.0]]]
+    air_b = np.column_stack([5.0 - air_b[:, 0], air_b[:, 1] + h])
+    boundary = np.r_[np.column_stack([left_next[1], left_next[0]])[::-1],
+                     np.column_stack([right[1], right[0]])]
+    for air in (air_a, air_b):
+        assert not _inside(boundary, air, 1e-4).any()
+    old_boundary = np.r_[np.column_stack([old[1][1], old[1][0]])[::-1],
+                         np.column_stack([old[0][1], old[0][0]])]
+    assert _inside(old_boundary, air_a, 1e-4).sum() > 5
+    # the boundary turns sharply only at the convex corner where the far side meets the
+    # other tip line (material on the inside of the turn: no notch)
+    d = np.diff(boundary, axis=0)
+    keep = np.linalg.norm(d, axis=1) > 1e-12
+    pts, d = boundary[1:][keep], d[keep]
+    cos = np.sum(d[1:] * d[:-1], axis=1) / (np.linalg.norm(d[1:], axis=1)
+                                           * np.linalg.norm(d[:-1], axis=1))
+    turn = np.degrees(np.arccos(np.clip(cos, -1.0, 1.0)))
+    sharp = pts[:-1][turn > 20.0]
+    assert sharp == pytest.approx(np.array([[tip_end, h]]), abs=1e-9)
+    # traversed from the next tooth's top down and over, the material lies on the left:
+    # a left turn (positive cross product) is a convex corner of the material
+    cross = d[:-1, 0] * d[1:, 1] - d[:-1, 1] * d[1:, 0]
+    assert float(cross[turn > 20.0][0]) > 0.0
+
+
+def test_a_tip_that_reaches_the_fillet_is_still_the_crossing():
+    """Where the next tooth's tip reaches the fillet it crosses (its flat tip 4.5 mm wide
+    from its foot, the crossing 4.0 mm away), that crossing is a real corner of the slot
+    (step 2 as before: rounded by at most 0.1 R); where the point widths are not given
+    (0), step 2 as before too."""
+    for tips in ((4.5, 4.5), (0.0, 0.0)):
+        kind = _slot_bottom(_side(), _next_left(0.95), 1.0, 1.0, R, (S_TOP, S_TOP),
+                            tips=tips)[3]
+        assert kind == "tip meets fillet, rounded into a fillet"
+
+
+def test_a_blade_tip_width_is_its_point_width_less_the_edge_inset():
+    """The flat tip from the fillet's foot: the point width less the tangent length of the
+    edge circle in the blade's corner — r for a right angle (blade angle 0), r tan 35° for
+    a 20° blade (the corner's angle 90° + α: tan(45° − α/2)); 0 where no point width is
+    given. The bundled ISO 23509 sample 2 pinion's concave blade as the carrier."""
+    blade = load_case(ROOT / "cases" / "iso23509_sample2_fm.toml").member("pinion").concave.blade
+    square = dataclasses.replace(blade, blade_angle=0.0, point_width=2.0, edge_radius=0.5)
+    assert _tip_width(square) == pytest.approx(1.5, abs=1e-12)
+    twenty = dataclasses.replace(square, blade_angle=math.radians(20.0))
+    assert _tip_width(twenty) == pytest.approx(2.0 - 0.5 * math.tan(math.radians(35.0)))
+    assert _tip_width(dataclasses.replace(square, point_width=0.0)) == 0.0

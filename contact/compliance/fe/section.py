@@ -47,9 +47,13 @@ data now, ``point_width``) and the shape of each blade's far side (not case data
 the point widths alone the two tips of the default pinion (before its tip planes were
 placed on the root cone, :mod:`geometry.synthesis.tip_plane`) left a 0.55 mm step over a
 0.8 mm gap at the heel, a bottom that changes kind along the face faster than the mapped
-mesh follows. :attr:`ToothSections.root_line` gives each cut's generated root line,
-:meth:`ToothSections.root_depth` its depth below the blank's root cone (docs/fe.md,
-"Root and slot bottom").
+mesh follows. ``_slot_bottom`` can take step 2's crossing as the union where the crossing
+tip ends short of the fillet it crosses (``tips``: the crossed fillet whole, the deeper
+tip out to its blade's far side), but :func:`tooth_sections` does not use it yet: where
+the bottom changes kind between neighbouring sections the mapped mesh inverts (docs/fe.md,
+"after the union of the cuts"). :attr:`ToothSections.root_line` gives each cut's
+generated root line, :meth:`ToothSections.root_depth` its depth below the blank's root
+cone (docs/fe.md, "Root and slot bottom").
 
 Public names
 ------------
@@ -92,6 +96,8 @@ _KEEP_WHOLE = 0.9
 #: ... and *some* of it where one below this fraction is (the fallback rounding of a
 #: crossing that no radius ≥ a tenth of the edge radius rounds whole: issue 71)
 _KEEP_SOME = 0.999
+#: the kind of a slot bottom that is the union of the two cuts (:func:`_union`)
+_UNION = ", union of the cuts"
 
 
 @dataclass(frozen=True, eq=False)
@@ -420,7 +426,8 @@ def _keeps_fillet(curve, where: tuple[int, float], s_junction: float,
 
 
 def _slot_bottom(right, left_next, rho_ref: float, length_v: float, radius: float,
-                 s_junction: tuple[float, float], one_cut: bool = False):
+                 s_junction: tuple[float, float], one_cut: bool = False,
+                 tips: tuple[float, float] | None = None):
     """Cut the right side and the next tooth's left side (each (v, φ, s), bottom → top)
     where they meet; return both cut curves, the bottom segment (2, 2) and how they met.
 
@@ -438,7 +445,10 @@ def _slot_bottom(right, left_next, rho_ref: float, length_v: float, radius: floa
        so that any arc of a tenth of the edge radius or more reaches past 90 % of that
        fillet — the largest radius up to that tenth which keeps *some* of each fillet (a
        sample below :data:`_KEEP_SOME` of it): the crossing is rounded anyway, at the
-       cost of part of the fillet (kind "…, rounded into a fillet").
+       cost of part of the fillet (kind "…, rounded into a fillet"); with ``tips`` (the
+       blades' tip widths from their fillets' feet [mm]) and a tip that ends before the
+       fillet it crosses, the union of the two cuts instead (:func:`_union`: that fillet
+       whole, kind "tip meets fillet, union of the cuts").
 
     The radius is thus continuous along the face: it falls to a tenth of the edge radius
     where step 1 stops fitting, and step 2 takes over from that tenth. Until issue 71 step
@@ -486,6 +496,11 @@ def _slot_bottom(right, left_next, rho_ref: float, length_v: float, radius: floa
         # a tenth of it (bisection): the bottom then varies continuously along the face,
         # as the generated sides do
         blend = _largest_fit(fits, 0.1 * radius, radius)
+        if blend is None and tips is not None and kind == "tip meets fillet":
+            union = _union(ra, lb, a, b, (i, t, j, w), on_tip, radius, tips, rho_ref,
+                           length_v, s_junction)
+            if union is not None:
+                return union
         if blend is None:
             # none does (a tip crossing a fillet near its top): the largest radius up to a
             # tenth of the edge radius that keeps some of each fillet, which continues the
@@ -504,6 +519,110 @@ def _slot_bottom(right, left_next, rho_ref: float, length_v: float, radius: floa
     pt = (ra[0][0], ra[1][0])
     return ra, lb, np.array([pt, pt]), kind + (", rounded" if whole
                                                else ", rounded into a fillet")
+
+
+def _tip_width(blade) -> float:
+    """[mm] A blade's flat tip from its fillet's foot (s = 0) to its far end: the point
+    width less the edge radius's inset r_e tan(45° − α/2), α the blade angle; 0 where the
+    point width is not given (``_slot_bottom``'s ``tips``, the union of the cuts)."""
+    if not blade.point_width > 0.0:
+        return 0.0
+    inset = blade.edge_radius * math.tan(0.25 * math.pi - 0.5 * blade.blade_angle)
+    return max(blade.point_width - inset, 0.0)
+
+
+def _union(ra, lb, a, b, crossing, on_tip, radius: float, tips, rho_ref: float,
+           length_v: float, s_junction: tuple[float, float]):
+    """Step 2's crossing replaced by the union of the two cuts (issue 71), or None where
+    the other cut's tip does reach the fillet it crosses (there the crossing is a real
+    corner of the union, shaped by that blade's far corner: not case data), the blades'
+    tip widths are not given, or the union leaves no fillet on a side.
+
+    ``ra``/``lb`` the right / next left side (v, φ, s), ``a``/``b`` their section points
+    (ρ_ref φ, L_v v), ``crossing`` (i, t, j, w) where they cross, ``on_tip`` which of the
+    two is on its blade's flat tip there, ``tips`` the two blades' tip widths [mm] from
+    their fillets' feet (:func:`_tip_width`), ``s_junction`` their fillets' tops. The side
+    B on its tip at the crossing is the shallower cut; where its tip ends (s = −width)
+    before the crossing it never reaches the deeper cut's fillet (side A), which the
+    machine leaves whole (material either cut removes is gone): the boundary runs down A's
+    whole fillet, along A's deeper tip to the far side of A's blade, up that side to B's
+    curve and on up B. A's far side is taken straight up the section (its shape is not
+    case data), where A's tip width ends but no further towards B than B's fillet foot (a
+    point width is the slot width at the mean root: a deeper tip carried on would cut the
+    other, finished flank's fillet); the re-entrant corner at its foot is rounded by the
+    largest arc up to the edge radius that fits the step (down to a tenth of it) and keeps
+    A's fillet whole, the convex corner on B's tip line is left.
+
+    Not yet used by :func:`tooth_sections`: where the bottom changes kind between
+    neighbouring sections (step 2's union beside step 1's or the toe's crossings) the
+    mapped mesh inverts an element (docs/fe.md, "after the union of the cuts")."""
+    i, t, j, w = crossing
+    if on_tip[1]:  # the next left side's tip crosses the right side's fillet
+        A, B, ax, bx, sgn, wa, wb = ra, lb, a, b, 1.0, tips[0], tips[1]
+        s_junction_b = s_junction[1]
+        s_cross = lb[2][j] + w * (lb[2][j + 1] - lb[2][j])
+    else:
+        A, B, ax, bx, sgn, wa, wb = lb, ra, b, a, -1.0, tips[1], tips[0]
+        s_junction_b = s_junction[0]
+        s_cross = ra[2][i] + t * (ra[2][i + 1] - ra[2][i])
+    if not (wa > 0.0 and wb > 0.0) or not np.isfinite(s_cross) or s_cross >= -wb:
+        return None
+
+    def at_s(curve, xy, s0):
+        fin = np.isfinite(curve[2])
+        s_f = curve[2][fin]
+        if not s_f.min() <= s0 <= s_f.max():
+            return None
+        return np.array([np.interp(s0, s_f, xy[fin, 0]), np.interp(s0, s_f, xy[fin, 1])])
+
+    foot_a, foot_b = at_s(A, ax, 0.0), at_s(B, bx, 0.0)
+    end_b = at_s(B, bx, -wb)
+    if foot_a is None or foot_b is None or end_b is None:
+        return None
+    end_a = at_s(A, ax, -wa)
+    x_far = foot_a[0] + sgn * wa if end_a is None else end_a[0]
+    x_e = sgn * min(sgn * x_far, sgn * foot_b[0])  # not under B's fillet
+    if sgn * (x_e - end_b[0]) < 0.0 or sgn * (x_e - foot_a[0]) <= 0.0:
+        return None  # a gap between the two tips (no slot), or B's fillet over A's
+    # E on A's tip (s < 0) below x_e
+    tip_a = np.flatnonzero((np.nan_to_num(A[2][1:], nan=1.0) < 0.0)
+                           & ((ax[:-1, 0] - x_e) * (ax[1:, 0] - x_e) <= 0.0))
+    if not tip_a.size:
+        return None
+    k = int(tip_a[-1])
+    e = _point_on(ax, k, (x_e - ax[k, 0]) / (ax[k + 1, 0] - ax[k, 0])
+                  if ax[k + 1, 0] != ax[k, 0] else 0.0)
+    reach = 4.0 * max(abs(foot_b[1] - e[1]), radius) + radius
+    ray = np.array([e, e + np.array([0.0, reach])])
+    hits = _polyline_crossing(ray, bx)
+    if not hits:
+        return None
+    _, tf, jf, wf = min(hits, key=lambda h: h[1])
+    if not B[2][jf + 1] < s_junction_b:  # A's far side cuts off B's whole fillet
+        return None
+    f = _point_on(ray, 0, tf)
+    far = e + np.linspace(0.0, 1.0, 17)[:, None] * (f - e)
+
+    def fits(r: float):
+        arc = _blend(ax, far, r, e) if sgn > 0 else _blend(far, ax, r, e)
+        if arc is None:
+            return None
+        on_a = arc[1] if sgn > 0 else arc[3]
+        s_a = A[2][on_a[0]] + on_a[1] * (A[2][on_a[0] + 1] - A[2][on_a[0]])
+        return arc if np.isfinite(s_a) and s_a < 0.0 else None  # A's fillet whole
+
+    blend = _largest_fit(fits, 0.1 * radius, radius)
+    if blend is None:
+        return None
+    arc_1, cut_1, arc_2, cut_2 = blend
+    arc_a, (ia, ta), arc_f, (jfar, _) = ((arc_1, cut_1, arc_2, cut_2) if sgn > 0
+                                              else (arc_2, cut_2, arc_1, cut_1))
+    head = np.vstack([arc_f, far[jfar + 1:]])
+    side_a = _cut(A, ia, ta, arc_a, rho_ref, length_v)
+    side_b = _cut(B, jf, wf, head, rho_ref, length_v)
+    right, left_next = (side_a, side_b) if sgn > 0 else (side_b, side_a)
+    pt = (side_a[0][0], side_a[1][0])
+    return right, left_next, np.array([pt, pt]), "tip meets fillet" + _UNION
 
 
 def _largest_fit(fits, lo: float, hi: float):
@@ -576,9 +695,12 @@ def _without_folds(v, phi, s, rho, length_v: float):
 
 
 def _side(flank: str, v, phi, s, corners, u: float, length_v: float, s_junction: float,
-          where: str) -> SideCurve:
+          where: str, own_fillet: bool = False) -> SideCurve:
     """A :class:`SideCurve` from samples ordered bottom → top (a fold of the envelope cut
-    off, :func:`_without_folds`)."""
+    off, :func:`_without_folds`). ``own_fillet``: the fillet is split on its own arc
+    (s ≥ 0), not on the steep far side of the other cut's blade below it (the union of
+    the cuts, :func:`_union`), where the tooth block's rows would start under the slot's
+    step."""
     rho = _bilinear(corners, u, v)[0][..., 1]
     v, phi, s, rho = _without_folds(np.asarray(v, float), np.asarray(phi, float),
                                     np.asarray(s, float), rho, length_v)
@@ -602,6 +724,8 @@ def _side(flank: str, v, phi, s, corners, u: float, length_v: float, s_junction:
     in_fillet = mid < junction
     lo, hi = _SPLIT_RANGE[0] * junction, _SPLIT_RANGE[1] * junction
     above = in_fillet & (slope >= _SPLIT_SLOPE)
+    if own_fillet:
+        above &= mid >= float(np.interp(0.0, s[fin], arc[fin]))
     if above.any():
         k = int(np.flatnonzero(above)[0])
         split = float(mid[k]) if k == 0 else float(np.interp(
@@ -719,9 +843,11 @@ def tooth_sections(case, member: str, u) -> ToothSections:
             (s_junction[right_flank], s_junction[left_flank]), one_cut)
         kinds.append(kind)
         where = f"{member}, section at face fraction u = {ui:.3f}"
-        rs = _side(right_flank, *right, corners, ui, length_v, s_junction[right_flank], where)
+        union = kind.endswith(_UNION)
+        rs = _side(right_flank, *right, corners, ui, length_v, s_junction[right_flank], where,
+                   union)
         ls = _side(left_flank, left_next[0], left_next[1] - pitch, left_next[2], corners, ui,
-                   length_v, s_junction[left_flank], where)
+                   length_v, s_junction[left_flank], where, union)
         sections.append(ToothSection(float(ui), ls, rs, bottom, length_v, corners))
         depth = max(depth, float(np.max(_below_root(corners, ui, bottom[:, 0]))))
     log.info("%s: %d sections; slot bottoms %s; deepest %.3f mm under the root cone",
