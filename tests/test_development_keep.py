@@ -7,6 +7,7 @@ Stand-in designs and analyses: the tests are the rule's decisions, not numbers o
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 from development_stand_ins import checked as _checked
@@ -104,3 +105,71 @@ def test_the_path_step_of_a_height_design_asks_no_tolerance_it_cannot_use(monkey
     got = dcheck.kept_height_step(height, kept, targets, setup, None, lines.append,
                                    lambda v: dict(v))
     assert got is kept and excursions == []
+
+
+def test_a_fail_level_lte_ranks_below_any_softer_miss(monkeypatch):
+    """A checked design whose LTE ``ltca run``'s verdict FAILs (above 2 × 60 µrad at a
+    torque, :func:`lte_fails`) ranks below one that misses its pattern length and the
+    development's LTE target but passes the verdict, however their objectives compare;
+    the keep rule (:func:`kept_why`) replaces the FAIL-level design by the passing one
+    where it gives up only the pattern's length or centre (its tolerance not asked), not
+    where it gives up the edge share at the design torque, and never keeps a FAIL-level
+    design over a passing one, whatever the step's ``better`` says; the not-tolerant
+    design's keep rule (:func:`development_load_lte.replacement`) does the same. Stand-in
+    metrics of the 8x35 k_d 2.16 (issue 71: 605 / 600 µrad written, 204 / 37 µrad refused
+    on its pattern length)."""
+    from contact.optimize import development_load_lte as load_lte
+    from contact.optimize.development_variant import check_rank, lte_fails
+
+    asked = []
+    monkeypatch.setattr("contact.optimize.development_keep._tolerant_variant",
+                        lambda e, *a: asked.append(e.values["x"]) or False)
+    loud = _design({"x": 0.0}, _metrics(lte_peak_to_peak=[605.0, 600.0]))
+    # a pattern 0.2-0.9 long (0.5 +/- 0.1 missed) and an LTE above the development's
+    # 40 urad target but within the verdict's FAIL level (120 urad) at both torques
+    near = _design({"x": 1.0}, _metrics(lte_peak_to_peak=[110.0, 37.0],
+                                        pattern_heel_u=[0.9, 0.9]))
+    assert lte_fails(loud) and not lte_fails(near)
+    assert not near.met and near.full[1]["length"] > 0.0
+    assert check_rank(near) < check_rank(loud)
+    # the rank is the verdict's, not the objective's: a FAIL-level design with the lower
+    # objective still ranks last
+    cheap_loud = dataclasses.replace(loud, full=(0.0, loud.full[1], False))
+    assert check_rank(near) < check_rank(cheap_loud)
+    # a coarse design (not checked at ltca run's sampling) is not judged by the verdict
+    assert not lte_fails(dataclasses.replace(loud, checked=False))
+    lines = []
+
+    def why(best, e, **kw):
+        return dcheck.kept_why(best, e, DevelopmentTargets(), {}, None, lines.append,
+                               "the step", lost=dcheck.lost_targets, **kw)
+
+    # the passing design replaces the FAIL-level one: no lost target, no tolerance asked
+    assert why(loud, near) == "" and asked == [] and lines == []
+    # a step whose own ``better`` prefers the FAIL-level design does not keep it
+    assert why(near, loud, better=lambda b, e: True) == "its LTE fails the verdict"
+    assert asked == [] and lines == []
+    # a passing design that gives up a durability target the FAIL-level one met (its edge
+    # share at the design torque) is not kept: only the pattern's length and centre
+    edgy = _design({"x": 3.0}, _metrics(lte_peak_to_peak=[30.0, 30.0],
+                                        edge_load_share=[0.0, 0.03]))
+    assert check_rank(edgy) < check_rank(loud)
+    assert why(loud, edgy) == "it misses edge" and asked == []
+    assert lines == ["  not kept: the step misses edge"]
+    lines.clear()
+    # between two designs that pass the verdict the rule is unchanged (the tolerance asked)
+    quiet = _design({"x": 2.0}, _metrics(lte_peak_to_peak=[30.0, 30.0],
+                                         pattern_heel_u=[0.9, 0.9]))
+    assert why(near, quiet).startswith("not tolerant") and asked == [2.0]
+
+    # the not-tolerant design's rule: replaced though the passing design misses the length
+    # the FAIL-level one met and its excursions are worse
+    monkeypatch.setattr(load_lte, "tolerance_checks",
+                        lambda case, *a: {"dP +0.05": ({}, {"toe": 1.0, "heel": 0.0,
+                                                            "edge": 0.0, "plastic": 0.0})})
+    assert load_lte.lost_targets(loud, near) == ["length"]
+    why_r, excursions = load_lte.replacement(loud, near, {}, DevelopmentTargets(), {}, None)
+    assert why_r == "" and "dP +0.05" in excursions
+    assert load_lte.replacement(near, loud, {}, DevelopmentTargets(), {}, None)[0] == "rank"
+    assert load_lte.replacement(loud, edgy, {}, DevelopmentTargets(), {}, None) == (
+        "lost", ["edge"])

@@ -96,11 +96,13 @@ from contact.optimize.development_height_steps import (  # noqa: F401  (re-expor
     pattern_high,
 )
 from contact.optimize.development_keep import (  # noqa: F401  (re-exported)
+    SOFT_TARGETS,
     kept_why,
     lost_but_length,
     lost_targets,
     pressure_raised,
     ranks_better,
+    verdict_lost,
 )
 from contact.optimize.development_lte_steps import (  # noqa: F401  (re-exported)
     CROWNING_LTE_FRACTIONS,
@@ -178,6 +180,7 @@ from contact.optimize.development_variant import (  # noqa: F401  (re-exported)
     check_rank,
     checked_analysis,
     checked_variant,
+    lte_fails,
     said_variant,
 )
 from contact.optimize.development_variant import check_rank as _check_rank

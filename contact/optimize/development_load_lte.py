@@ -30,7 +30,7 @@ from contact.optimize.development_check import (
     tolerance_checks,
 )
 from contact.optimize.development_evaluate import KeptTeeth
-from contact.optimize.development_keep import lost_targets
+from contact.optimize.development_keep import lost_targets, verdict_lost
 from contact.optimize.development_result import TOLERANCE_KEYS, DevelopmentEvaluation
 from contact.optimize.development_targets import DevelopmentTargets
 from contact.optimize.development_variant import (
@@ -221,7 +221,11 @@ def replacement(best: DevelopmentEvaluation, e: DevelopmentEvaluation,
     (:func:`~contact.optimize.development_variant.check_rank`), misses no target ``best``
     met (:func:`~contact.optimize.development_keep.lost_targets`) and is no less tolerant
     (:func:`no_less_tolerant` of its own excursions,
-    :func:`~contact.optimize.development_tolerance.tolerance_checks`).
+    :func:`~contact.optimize.development_tolerance.tolerance_checks`); where ``best``'s
+    LTE fails ``ltca run``'s verdict and ``e``'s does not
+    (:func:`~contact.optimize.development_keep.verdict_lost`), it replaces it where it
+    gives up no target but the pattern's length and centre, its tolerance not asked (the
+    FAIL ranks below any softer miss).
 
     Parameters
     ----------
@@ -245,6 +249,11 @@ def replacement(best: DevelopmentEvaluation, e: DevelopmentEvaluation,
     """
     if not check_rank(e) < check_rank(best):
         return "rank", None
+    fails = verdict_lost(best, e)  # ranked before it: e's LTE passes (check_rank)
+    if fails:
+        return "lost", fails
+    if fails is not None:
+        return "", tolerance_checks(e.case, targets, setup, teeth, e.values)
     if lost := lost_targets(best, e):
         return "lost", lost
     theirs = tolerance_checks(e.case, targets, setup, teeth, e.values)

@@ -4,10 +4,11 @@
 :func:`checked_analysis` places and analyses a design of the check (kept in the
 development's ``setup``: a design the steps reach again is neither synthesised nor
 analysed again); :func:`checked_variant` scores it as a variant of a checked design,
-:func:`said_variant` also says its line; :func:`check_rank` ranks checked designs (every
-target met first). The lowest of the final check's modules (issue 71, Deliver 5: split
-out of :mod:`contact.optimize.development_check`, which re-exports every public name;
-the bodies moved unchanged).
+:func:`said_variant` also says its line; :func:`check_rank` ranks checked designs (a
+FAIL-level LTE last, :func:`lte_fails`; every target met first). The lowest of the final
+check's modules (issue 71, Deliver 5: split out of
+:mod:`contact.optimize.development_check`, which re-exports every public name; the
+bodies moved unchanged).
 """
 
 from __future__ import annotations
@@ -17,6 +18,8 @@ import logging
 import math
 from collections.abc import Callable, Mapping
 from typing import Any
+
+import numpy as np
 
 from contact.optimize import development_evaluate as evaluation
 from contact.optimize.development_evaluate import (
@@ -71,8 +74,41 @@ def checked_analysis(setup: Mapping[str, Any], placed: Callable[[Mapping[str, fl
     return case, ms, grid
 
 
-def check_rank(e: DevelopmentEvaluation) -> tuple[bool, float]:
-    """A checked design's rank: every target met first, then the least objective.
+def lte_fails(e: DevelopmentEvaluation) -> bool:
+    """Whether a checked design's LTE fails ``ltca run``'s verdict: its LTE peak-to-peak
+    at a torque of the check above :data:`contact.study.verdicts.LTE_FAIL_FACTOR` × the
+    verdict's limit :data:`contact.study.verdicts.LTE_LIMIT` (2 × 60 µrad).
+
+    Parameters
+    ----------
+    e : DevelopmentEvaluation
+        A design; only one checked at ``ltca run``'s sampling (``checked``, its
+        ``metrics``' ``lte_peak_to_peak`` [µrad] at the light and the design torque) can
+        fail (the coarse search's LTE is its own sampling's, not the verdict's).
+
+    Returns
+    -------
+    bool
+        True where the checked LTE p-p exceeds the verdict's FAIL level at any torque.
+
+    Notes
+    -----
+    Source: the ``lte`` check of ``ltca run``'s verdict (:mod:`contact.study.verdicts`);
+    issue 71: the face-hobbed hypoid 8x35 at Σ 85° (k_d 2.16) ended on 605 / 600 µrad
+    after its steps had seen 24 / 21 µrad (not tolerant) and 204 / 37 µrad (pattern
+    length), docs/synthesis.md "A verdict the design does not deserve".
+    """
+    from contact.study.verdicts import LTE_FAIL_FACTOR, LTE_LIMIT  # imports contact.ltca
+
+    if not e.checked or e.metrics is None:
+        return False
+    lte = np.asarray(e.metrics["lte_peak_to_peak"], float)
+    return bool(np.any(lte > LTE_FAIL_FACTOR * LTE_LIMIT))
+
+
+def check_rank(e: DevelopmentEvaluation) -> tuple[bool, bool, float]:
+    """A checked design's rank: a design whose LTE ``ltca run``'s verdict FAILs last
+    (:func:`lte_fails`), then every target met first, then the least objective.
 
     Parameters
     ----------
@@ -81,14 +117,19 @@ def check_rank(e: DevelopmentEvaluation) -> tuple[bool, float]:
 
     Returns
     -------
-    (bool, float)
-        Sorts first the design that meets every target, then the least objective [1].
+    (bool, bool, float)
+        Sorts last the design whose checked LTE fails the verdict, first the design that
+        meets every target, then the least objective [1].
 
     Notes
     -----
     Source: the issue-71 development's check (docs/synthesis.md, "Development bearing").
+    The LTE's squared shortfall alone did not keep a FAIL-level bearing behind a nearer
+    one that missed a softer target: the 8x35 k_d 2.16's steps refused 24 / 21 µrad (not
+    tolerant) and 204 / 37 µrad (pattern length) and ended on 605 / 600 µrad
+    (docs/synthesis.md, "A verdict the design does not deserve").
     """
-    return (not e.full[2], e.full[0])
+    return (lte_fails(e), not e.full[2], e.full[0])
 
 
 def pattern_length(e: DevelopmentEvaluation) -> float:
