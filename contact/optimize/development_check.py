@@ -132,6 +132,8 @@ from contact.optimize.development_pattern_steps import (  # noqa: F401  (re-expo
     CENTRE_U_SLOPE,
     LENGTH_AIM_MARGIN,
     LENGTH_DESIGNS,
+    LENGTH_RELIEF_FRACTION,
+    LENGTH_RELIEF_LTE,
     LENGTH_SLOPE_MIN,
     LENGTH_TE_STEP,
     NEAR_MISS,

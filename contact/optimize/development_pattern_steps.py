@@ -56,6 +56,23 @@ LENGTH_AIM_MARGIN = 0.0125
 #: :data:`NEAR_MISS` of its unit (5 µrad): measured 2.3-2.4 µrad less LTE at both torques
 #: for ``te_level`` 25 → 15 on the 7x39 (:func:`checked_length`)
 LENGTH_TE_STEP = 10.0
+#: the root relief of :func:`checked_length`'s design that meets the length and misses,
+#: of the targets the design met, the LTE alone by at most :data:`LENGTH_RELIEF_LTE` (after
+#: the lower ``te_level``, or where it is at its bound): this fraction of the design's, tried
+#: once. The relief is the long bearing's (:func:`~contact.optimize.development_lte_steps.
+#: checked_long` sizes it for its longer ellipse), deeper than the shorter ellipse's
+#: pattern needs at the design torque: measured on the FH hypoid 10x37 at Σ 95° of
+#: benchmarks/data/unseen_designs (``ltca run``'s sampling at 56.1 / 374.4 N m, ellipse
+#: 0.681, path −75°, ``te_level`` 10 at its bound; ``benchmarks/development_levers.py
+#: --check --tolerance``, 2026-11-27): root relief 23.0 µm from 0.5: pattern 0.60 long,
+#: LTE 23.4 / 45.2 µrad (the target 40 missed at the design torque); 19.6 µm (× 0.85):
+#: 21.7 / 35.5; 17.3 (× 0.75): 21.5 / 35.1, edge 0.9 %; 15.0: 21.2 / 34.6, edge 1.2 %
+#: — every target met, tolerant; 11.5 (× 0.5): 21.3 / 41.0, the pattern on the tip row
+LENGTH_RELIEF_FRACTION = 0.75
+#: the most LTE shortfall (:func:`development_score`'s units: 10 µrad) of
+#: :data:`LENGTH_RELIEF_FRACTION`'s try: the 10x37's 45.2 µrad at its design torque (0.52:
+#: beyond :data:`NEAR_MISS`, which gates the lower ``te_level``) fell 10 µrad by it
+LENGTH_RELIEF_LTE = 1.0
 
 
 def length_aim(length: float, targets: DevelopmentTargets) -> float:
@@ -84,7 +101,9 @@ def checked_length(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     tolerant is kept (:func:`kept_why`); where one meets the length and gives up the LTE
     alone, by at most :data:`NEAR_MISS` of its unit, it is tried once more with
     ``te_level`` :data:`LENGTH_TE_STEP` lower (``level`` [µrad]: the flank's own, where
-    the design's values carry none) before the search goes on.
+    the design's values carry none), then once more with its root relief ×
+    :data:`LENGTH_RELIEF_FRACTION` where the LTE is missed by at most
+    :data:`LENGTH_RELIEF_LTE` (:func:`_shallower_relief`), before the search goes on.
 
     Why: no other check step moves a pattern into its length band. The path step turns
     the path (and shortens the ellipse only with a turn, lengthens it only where no turn
@@ -161,7 +180,38 @@ def checked_length(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                                 "the ellipse for the length with the lower TE level",
                                 lost=_lost_targets):
                     return f
+        if (_lost_targets(best, e) == ["lte"] and e.full[1]["lte"] <= LENGTH_RELIEF_LTE
+                and (f := _shallower_relief(best, e, x, targets, setup, teeth, say,
+                                            placed)) is not None):
+            return f
     return best
+
+
+def _shallower_relief(best: DevelopmentEvaluation, e: DevelopmentEvaluation, x: float,
+                      targets: DevelopmentTargets, setup: Mapping[str, Any],
+                      teeth: KeptTeeth | None, say: Callable[[str], None],
+                      placed: Callable[[Mapping[str, float]], Case]
+                      ) -> DevelopmentEvaluation | None:
+    """:func:`checked_length`'s design ``e`` (the ellipse ``x``) that meets the length
+    and gives up the LTE alone, by at most :data:`LENGTH_RELIEF_LTE`, tried with its root relief
+    × :data:`LENGTH_RELIEF_FRACTION` (within its bounds; step 7 only); the design kept
+    (:func:`kept_why`), else None."""
+    name = "root_relief"
+    if name not in targets.variables or not float(e.values.get(name, 0.0)) > 0.0:
+        return None
+    r_lo, r_hi = (float(v) for v in targets.variables[name])
+    now = float(e.values[name])
+    r = float(np.clip(LENGTH_RELIEF_FRACTION * now, r_lo, r_hi))
+    if not r < now - 1e-9:
+        return None
+    f = _said_variant(best, e.values | {name: r}, "length",
+                      f"with the ellipse {x:.3g} and {name} {r:.3g} um (the length met, "
+                      "its LTE missed)", targets, setup, teeth, say, placed)
+    if kept_why(best, f, targets, setup, teeth, say,
+                "the ellipse for the length with the shallower root relief",
+                lost=_lost_targets):
+        return None
+    return f
 
 
 #: the near-miss step (:func:`checked_near_miss`): a missed target is near where its
