@@ -195,7 +195,34 @@ class KeptTeeth:
 
     def __init__(self) -> None:
         self._teeth: dict[tuple, Any] = {}
+        self._ease_offs: dict[tuple, Any] = {}
         self.built = 0
+        self.ease_offs_reused = 0
+
+    def ease_off(self, case: Case, flank: str):
+        """The ease-off (:func:`contact.utca.easeoff.ease_off`) of ``case``'s ``flank``
+        [rad], each design's computed once per development: keyed by its teeth
+        (:meth:`~geometry.case.Case.teeth_key`), misalignment and flank — what the
+        ease-off is a function of, not of the torque. Inside a trial's
+        :class:`~geometry.machine.meshing.WarmSeeds` block the process memo is off
+        (:func:`~contact.utca.easeoff.ease_off`), so the coast flank developed again at its
+        own design torque (:func:`~contact.optimize.development_coast_flank.coast_at_its_torque`:
+        the same designs, their syntheses from the memo) computed each trial's ease-off a
+        second time (issue 75: 0.07 s each on the passenger-car hypoid 10x43); kept here,
+        for the development's own analyses alone. Outside a block the process memo serves."""
+        from contact.utca.easeoff import ease_off
+        from geometry.machine.meshing import warm_seeds_active
+
+        if not warm_seeds_active():
+            return ease_off(case, flank=flank)
+        key = (case.teeth_key(), repr(case.misalignment), flank)
+        eo = self._ease_offs.get(key)
+        if eo is None:
+            eo = ease_off(case, flank=flank)
+            self._ease_offs[key] = eo
+        else:
+            self.ease_offs_reused += 1
+        return eo
 
     def _tooth(self, case: Case, member: str, key: tuple, options: LTCAOptions):
         from contact.compliance.tooth import shell_tooth_from_case
@@ -255,7 +282,7 @@ def analyse_design(case: Case, torques: list[float], misalignment: Misalignment 
     c = case if misalignment is None else dataclasses.replace(case, misalignment=misalignment)
     if teeth is not None:
         options = dataclasses.replace(options, compliance=teeth.compliance(pinion_key))
-    eo = ease_off(c, flank=flank)
+    eo = ease_off(c, flank=flank) if teeth is None else teeth.ease_off(c, flank)
     ltca = loaded_tca(c, torques, flank=flank, options=options, easeoff=eo)
     return ltca_metrics(ltca, c), (*grid_bounds(ltca), static_strength(ltca))
 
