@@ -389,3 +389,34 @@ def test_a_blade_tip_width_is_its_point_width_less_the_edge_inset():
     twenty = dataclasses.replace(square, blade_angle=math.radians(20.0))
     assert _tip_width(twenty) == pytest.approx(2.0 - 0.5 * math.tan(math.radians(35.0)))
     assert _tip_width(dataclasses.replace(square, point_width=0.0)) == 0.0
+
+
+def test_the_union_far_side_leans_by_its_blade_angle():
+    """The deeper cut's blade's far side (not case data) rises from the far end of its
+    tip leaning towards the other side by its blade angle (``far_angles``; a blade point
+    symmetric about its tip): the slot path then advances across the section all the way
+    between the two fillets' feet, so the mapped mesh's rim columns under it keep a width
+    (straight up, two path points share one φ and the columns under them collapse: the
+    15×28 β_m 43.9° pinion's element 2218, docs/fe.md). The convex corner where it meets
+    the other tip line (h = 0.95 over the first tip, which ends at x = 1 + 2.5) moves to
+    x = 3.5 + 0.95 tan 20°, still short of the other side's foot (x = 4)."""
+    h, width, lean = 0.95, 2.5, math.radians(20.0)
+    for angle, strict in ((0.0, False), (lean, True)):
+        right, left_next, _, kind = _slot_bottom(_side(), _next_left(h), 1.0, 1.0, R,
+                                                 (S_TOP, S_TOP), tips=(width, width),
+                                                 far_angles=(angle, angle))
+        assert kind == "tip meets fillet, union of the cuts"
+        path = np.r_[np.column_stack([right[1], right[0]])[::-1],
+                     np.column_stack([left_next[1], left_next[0]])[1:]]  # one meeting point
+        between = path[(path[:, 0] > 1.0 + 1e-9) & (path[:, 0] < 4.0 - 1e-9)
+                       & (path[:, 1] < h + 1e-9)]
+        dx = np.diff(between[:, 0])
+        assert bool(np.all(dx > 1e-9)) is strict
+    d = np.diff(path, axis=0)
+    keep = np.linalg.norm(d, axis=1) > 1e-12
+    pts, d = path[1:][keep], d[keep]
+    cos = np.sum(d[1:] * d[:-1], axis=1) / (np.linalg.norm(d[1:], axis=1)
+                                           * np.linalg.norm(d[:-1], axis=1))
+    sharp = pts[:-1][np.degrees(np.arccos(np.clip(cos, -1.0, 1.0))) > 20.0]
+    assert sharp == pytest.approx(np.array([[1.0 + width + h * math.tan(lean), h]]),
+                                  abs=1e-9)

@@ -49,11 +49,13 @@ placed on the root cone, :mod:`geometry.synthesis.tip_plane`) left a 0.55 mm ste
 0.8 mm gap at the heel, a bottom that changes kind along the face faster than the mapped
 mesh follows. ``_slot_bottom`` can take step 2's crossing as the union where the crossing
 tip ends short of the fillet it crosses (``tips``: the crossed fillet whole, the deeper
-tip out to its blade's far side), but :func:`tooth_sections` does not use it yet: where
-the bottom changes kind between neighbouring sections the mapped mesh inverts (docs/fe.md,
-"after the union of the cuts"). :attr:`ToothSections.root_line` gives each cut's
-generated root line, :meth:`ToothSections.root_depth` its depth below the blank's root
-cone (docs/fe.md, "Root and slot bottom").
+tip out to its blade's far side, which leans by its blade angle, ``far_angles``), but
+:func:`tooth_sections` does not use it yet: where the bottom changes kind between
+neighbouring sections the slot's middle jumps and the mapped mesh inverts or nearly
+collapses (docs/fe.md, "after the union of the cuts", "The far side leaned").
+:attr:`ToothSections.root_line` gives each cut's generated root line,
+:meth:`ToothSections.root_depth` its depth below the blank's root cone (docs/fe.md,
+"Root and slot bottom").
 
 Public names
 ------------
@@ -427,7 +429,8 @@ def _keeps_fillet(curve, where: tuple[int, float], s_junction: float,
 
 def _slot_bottom(right, left_next, rho_ref: float, length_v: float, radius: float,
                  s_junction: tuple[float, float], one_cut: bool = False,
-                 tips: tuple[float, float] | None = None):
+                 tips: tuple[float, float] | None = None,
+                 far_angles: tuple[float, float] = (0.0, 0.0)):
     """Cut the right side and the next tooth's left side (each (v, φ, s), bottom → top)
     where they meet; return both cut curves, the bottom segment (2, 2) and how they met.
 
@@ -448,7 +451,8 @@ def _slot_bottom(right, left_next, rho_ref: float, length_v: float, radius: floa
        cost of part of the fillet (kind "…, rounded into a fillet"); with ``tips`` (the
        blades' tip widths from their fillets' feet [mm]) and a tip that ends before the
        fillet it crosses, the union of the two cuts instead (:func:`_union`: that fillet
-       whole, kind "tip meets fillet, union of the cuts").
+       whole, kind "tip meets fillet, union of the cuts"; ``far_angles`` [rad] the
+       blades' angles, by which the deeper blade's far side leans).
 
     The radius is thus continuous along the face: it falls to a tenth of the edge radius
     where step 1 stops fitting, and step 2 takes over from that tenth. Until issue 71 step
@@ -498,7 +502,7 @@ def _slot_bottom(right, left_next, rho_ref: float, length_v: float, radius: floa
         blend = _largest_fit(fits, 0.1 * radius, radius)
         if blend is None and tips is not None and kind == "tip meets fillet":
             union = _union(ra, lb, a, b, (i, t, j, w), on_tip, radius, tips, rho_ref,
-                           length_v, s_junction)
+                           length_v, s_junction, far_angles)
             if union is not None:
                 return union
         if blend is None:
@@ -532,7 +536,8 @@ def _tip_width(blade) -> float:
 
 
 def _union(ra, lb, a, b, crossing, on_tip, radius: float, tips, rho_ref: float,
-           length_v: float, s_junction: tuple[float, float]):
+           length_v: float, s_junction: tuple[float, float],
+           far_angles: tuple[float, float] = (0.0, 0.0)):
     """Step 2's crossing replaced by the union of the two cuts (issue 71), or None where
     the other cut's tip does reach the fillet it crosses (there the crossing is a real
     corner of the union, shaped by that blade's far corner: not case data), the blades'
@@ -546,23 +551,28 @@ def _union(ra, lb, a, b, crossing, on_tip, radius: float, tips, rho_ref: float,
     before the crossing it never reaches the deeper cut's fillet (side A), which the
     machine leaves whole (material either cut removes is gone): the boundary runs down A's
     whole fillet, along A's deeper tip to the far side of A's blade, up that side to B's
-    curve and on up B. A's far side is taken straight up the section (its shape is not
-    case data), where A's tip width ends but no further towards B than B's fillet foot (a
-    point width is the slot width at the mean root: a deeper tip carried on would cut the
-    other, finished flank's fillet); the re-entrant corner at its foot is rounded by the
-    largest arc up to the edge radius that fits the step (down to a tenth of it) and keeps
-    A's fillet whole, the convex corner on B's tip line is left.
+    curve and on up B. A's far side rises, leaning towards B by A's blade angle (its
+    shape is not case data), from where A's tip width ends but no further towards B than
+    B's fillet foot (a point width is the slot width at the mean root: a deeper tip
+    carried on would cut the other, finished flank's fillet); the re-entrant corner at
+    its foot is rounded by the largest arc up to the edge radius that fits the step (down
+    to a tenth of it) and keeps A's fillet whole, the convex corner on B's tip line is
+    left.
 
-    Not yet used by :func:`tooth_sections`: where the bottom changes kind between
-    neighbouring sections (step 2's union beside step 1's or the toe's crossings) the
-    mapped mesh inverts an element (docs/fe.md, "after the union of the cuts")."""
+    ``far_angles`` [rad]: the two blades' angles; A's far side leans by A's towards B
+    (0: straight up, which puts two points of the slot's path at one φ and collapses the
+    mapped mesh's rim columns under them). Not yet used by :func:`tooth_sections`: where
+    the bottom changes kind between neighbouring sections the slot's middle jumps (docs/fe.md,
+    "after the union of the cuts", "The far side leaned")."""
     i, t, j, w = crossing
     if on_tip[1]:  # the next left side's tip crosses the right side's fillet
         A, B, ax, bx, sgn, wa, wb = ra, lb, a, b, 1.0, tips[0], tips[1]
+        lean = far_angles[0]
         s_junction_b = s_junction[1]
         s_cross = lb[2][j] + w * (lb[2][j + 1] - lb[2][j])
     else:
         A, B, ax, bx, sgn, wa, wb = lb, ra, b, a, -1.0, tips[1], tips[0]
+        lean = far_angles[1]
         s_junction_b = s_junction[0]
         s_cross = ra[2][i] + t * (ra[2][i + 1] - ra[2][i])
     if not (wa > 0.0 and wb > 0.0) or not np.isfinite(s_cross) or s_cross >= -wb:
@@ -593,7 +603,11 @@ def _union(ra, lb, a, b, crossing, on_tip, radius: float, tips, rho_ref: float,
     e = _point_on(ax, k, (x_e - ax[k, 0]) / (ax[k + 1, 0] - ax[k, 0])
                   if ax[k + 1, 0] != ax[k, 0] else 0.0)
     reach = 4.0 * max(abs(foot_b[1] - e[1]), radius) + radius
-    ray = np.array([e, e + np.array([0.0, reach])])
+    # A's far side leans towards B by A's blade angle (a blade point symmetric about its
+    # tip: its far side is not case data); straight up (angle 0) it would put two points
+    # of the slot's path at one angle φ, and the mapped mesh's rim columns under them
+    # collapse (issue 71: the 15x28's element 2218)
+    ray = np.array([e, e + reach * np.array([sgn * math.tan(lean), 1.0])])
     hits = _polyline_crossing(ray, bx)
     if not hits:
         return None
