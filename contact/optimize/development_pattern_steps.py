@@ -17,6 +17,7 @@ from typing import Any
 
 import numpy as np
 
+from contact.optimize.development_band_edge import band_edge_designs
 from contact.optimize.development_evaluate import KeptTeeth
 from contact.optimize.development_keep import (
     kept_why,
@@ -264,7 +265,10 @@ def checked_near_miss(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     the same TE level), towards the same aim. At most
     :data:`NEAR_MISS_DESIGNS` designs; a design is kept only where it meets more targets,
     gives up none it met and is tolerant (:func:`_tolerant_variant`) — not on the
-    objective, whose LTE term may prefer the design as it was.
+    objective, whose LTE term may prefer the design as it was. Where every design was
+    refused for the LTE alone, two more
+    (:func:`~contact.optimize.development_band_edge.band_edge_designs`): the smallest
+    blade step into the band, then with the path turned.
 
     Why: the search and the check's other steps develop the height with large levers
     (the root-find of the height stage, the tip and root reliefs); where the check leaves
@@ -298,6 +302,7 @@ def checked_near_miss(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     s = slope if slope is not None and slope > 0.05 else HEIGHT_SLOPE
     te_text = f", {TE_NAME} {lowered:.3g} urad" if lowered is not None else ""
     steps: list[tuple[float, float]] = []  # (blade angle, centre v) of each design
+    refused: list[DevelopmentEvaluation] = []  # the designs analysed and not kept
     for _ in range(NEAR_MISS_DESIGNS):
         xa, va = steps[-1] if steps else (x0, v0)
         x = float(np.clip(xa - (va - aim) / s, lo, hi))
@@ -315,6 +320,7 @@ def checked_near_miss(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                         lost=_lost_targets, lost_first=True,
                         better=lambda b, x: _met_count(x) > _met_count(b)):
             return e
+        refused.append(e)
         v = footprint_centre_v(e)
         if not math.isfinite(v):
             break  # no pattern to step from
@@ -323,7 +329,11 @@ def checked_near_miss(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         if not (vb - va) / (xb - xa) > 0.05:
             break  # no slope to step on
         s = (vb - va) / (xb - xa)  # the slope measured: the next design a secant
-    return best
+    values = dict(best.values) | ({TE_NAME: lowered} if lowered is not None else {})
+    return band_edge_designs(best, refused, targets, setup, teeth, say, placed,
+                             centre_v=footprint_centre_v,
+                             better=lambda b, x: _met_count(x) > _met_count(b),
+                             values=values, te_text=te_text)
 
 
 #: the lever of the pattern's centre along the face (toe–heel): the mean point M placed
