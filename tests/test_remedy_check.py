@@ -144,6 +144,11 @@ def test_the_lte_diagnosis_names_the_unloaded_te_where_it_sets_the_lte():
     assert not ute_sets_lte(45.0, [70.0, 133.1], 60.0)
     assert not ute_sets_lte(200.0, [UTE_KEPT_SHARE * 200.0 - 1.0, 133.0], 60.0)
     assert not ute_sets_lte(math.nan, [605.0, 600.0], 60.0)
+    # the modified roll prescribed on purpose (the 15x28 at Sigma 110 deg on the tree of
+    # the sixteenth session: te_level 128 urad matched to its deflection, unloaded TE 90
+    # urad, LTE 90/103 urad) is not blamed; 609 urad at a te_level of 10 is
+    assert not ute_sets_lte(90.0, [90.0, 103.0], 60.0, prescribed=128.1)
+    assert ute_sets_lte(609.0, [605.0, 600.0], 60.0, prescribed=10.0)
     dev = types.SimpleNamespace(
         best=types.SimpleNamespace(metrics={"lte_peak_to_peak": np.array([605.0, 600.0])},
                                    values={"path_angle": -58.75, "ellipse_length": 0.25,

@@ -262,8 +262,9 @@ def reach_text(development, limit: float,
         why = f", not written: {reach['why']}" if reach.get("why") else ""
         said = (f"; the development's least drive LTE p-p {reach['light']:.0f}/"
                 f"{reach['design']:.0f} urad ({reach['what']}{why})")
-    if written_ute is not None and ute_sets_lte(written_ute[0], lte, limit):
-        values = getattr(development.best, "values", None) or {}
+    values = getattr(development.best, "values", None) or {}
+    prescribed = float(values.get("te_level", math.nan))
+    if written_ute is not None and ute_sets_lte(written_ute[0], lte, limit, prescribed):
         written = ", ".join(f"{k} {float(values[k]):.3g}" for k in
                             ("path_angle", "ellipse_length", "te_level") if k in values)
         return said + "; " + ute_lte_text(written_ute[0], written_ute[1], lte, limit,

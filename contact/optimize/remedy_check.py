@@ -276,7 +276,8 @@ def checked_remedy_text(checks: Sequence[ChangeCheck], target: float, none: str,
             "before they are offered')")
 
 
-def ute_sets_lte(ute: float, lte: Sequence[float], limit: float) -> bool:
+def ute_sets_lte(ute: float, lte: Sequence[float], limit: float,
+                 prescribed: float = math.nan) -> bool:
     """Whether a written flank's unloaded TE is what its LTE is.
 
     Parameters
@@ -287,17 +288,26 @@ def ute_sets_lte(ute: float, lte: Sequence[float], limit: float) -> bool:
         Its LTE p-p at (light, design) torque.
     limit : float — [µrad]
         The verdict's LTE limit.
+    prescribed : float, optional — [µrad]
+        The TE parabola's level the development prescribed for that flank (its
+        ``te_level``); NaN (default): not known.
 
     Returns
     -------
     bool
-        True where ``ute`` exceeds ``limit`` and the light torque's LTE p-p keeps at least
-        :data:`UTE_KEPT_SHARE` of it: no contact ratio brings the LTE within the limit
-        while the unloaded TE alone exceeds it.
+        True where ``ute`` exceeds ``limit``, the light torque's LTE p-p keeps at least
+        :data:`UTE_KEPT_SHARE` of it and — where ``prescribed`` is known — ``ute`` exceeds
+        :data:`UTE_GROWTH_MAX` times it: no contact ratio brings the LTE within the limit
+        while the unloaded TE alone exceeds it, and that TE is not the modified roll the
+        development chose on purpose (the 15×28 at Σ 110°: a te_level of 128 µrad matched
+        to its deflection, unloaded TE 90 µrad, where a higher face contact ratio is the
+        lever — docs/synthesis.md, "The TE parabola matched to the load where the contact
+        ratios are low"; the 8×35 at k_d 2.16: 609 µrad at a te_level of 10).
     """
     light = float(lte[0])
+    on_purpose = math.isfinite(prescribed) and ute <= UTE_GROWTH_MAX * prescribed
     return (math.isfinite(ute) and ute > limit and math.isfinite(light)
-            and light >= UTE_KEPT_SHARE * ute)
+            and light >= UTE_KEPT_SHARE * ute and not on_purpose)
 
 
 def ute_lte_text(ute: float, span: float, lte: Sequence[float], limit: float,
