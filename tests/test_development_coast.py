@@ -368,6 +368,58 @@ def test_the_coast_lte_steps_run_again_at_a_lowered_coast_torque_only_above_the_
     assert run() is None
 
 
+def test_a_fail_level_coast_lte_never_outranks_a_passing_coast_design(monkeypatch):
+    """The coast flank developed again at its own design torque (coast_at_its_torque)
+    keeps the design developed there only where it ranks before the first one by the
+    check's one rank (development_keep.ranks_better, development_variant.check_rank): a
+    checked coast LTE ``ltca run``'s verdict FAILs (above 2 x 60 urad) ranks last, however
+    its objective compares. Stand-in designs (no LTCA): a first design that misses the LTE
+    target but passes the verdict (110 / 68 urad) and one of 605 / 600 urad whose
+    objective is 0 (issue 71, "A verdict the design does not deserve")."""
+    import dataclasses as dc
+    from pathlib import Path
+
+    from contact.optimize import development_coast_flank as dcoast
+    from contact.optimize import development_keep
+    from contact.optimize.development_coast import CoastCapacity, CoastCheck
+    from contact.optimize.development_targets import DevelopmentTargets
+    from contact.optimize.development_variant import lte_fails
+    from geometry.synthesis.basic_design import load_basic
+
+    # one rule, not a private copy of it
+    assert dcoast.ranks_better is development_keep.ranks_better
+    targets = DevelopmentTargets()
+    basic = load_basic(Path(__file__).parent / "data" / "designs" / "hypoid_12x41_s85.toml")
+    passing = _coast_design(COAST_13X37, _coast_metrics(lte_peak_to_peak=[110.0, 68.0]),
+                            targets)
+    loud = _coast_design(COAST_13X37 | {"ellipse_length": 0.7},
+                         _coast_metrics(lte_peak_to_peak=[605.0, 600.0]), targets)
+    loud = dc.replace(loud, full=(0.0, loud.full[1], False))  # the lower objective
+    assert not passing.met and passing.full[0] > loud.full[0]
+    assert lte_fails(loud) and not lte_fails(passing)
+    drive = dc.replace(passing, values={"path_angle": -80.0, "ellipse_length": 0.5})
+    held = CoastCheck(89.6, 1389.0, 2400.0, pitting_safety=1.2, s_h_min=1.0)
+    cap = CoastCapacity(89.6, 89.6, (held,), "", True)
+
+    def run(first, again):
+        monkeypatch.setattr(dcoast, "coast_development",
+                            lambda *a, **k: again)
+        coast = dcoast._CoastOutcome(basic, first, [], "developed", None, (13.4, 89.6))
+        return dcoast.coast_at_its_torque(basic, drive, targets,
+                                          {"centre_v": 0.6, "torques": [13.4, 279.2]},
+                                          None, {}, lambda line: None, None, coast, cap,
+                                          279.2)
+
+    def outcome(e):
+        return dcoast._CoastOutcome(basic, e, [], "developed", None, (13.4, 89.6))
+
+    # the FAIL-level design developed at the new torque does not replace the passing one
+    assert run(passing, outcome(loud)) is None
+    # the passing one replaces a FAIL-level first design, whatever their objectives
+    again = outcome(passing)
+    assert run(loud, again) is again
+
+
 #: the unseen face-hobbed spiral bevel 9x33's coast flank as written (15.4 / 79.9 N m):
 #: path −45°, ellipse 0.75, root relief 40 µm from 0.2, tip relief 15 µm from 0.85
 COAST_9X33 = {"path_angle": -45.0, "ellipse_length": 0.75, "tip_relief": 15.0,

@@ -43,6 +43,7 @@ from contact.optimize.development_evaluate import (
     grid_bounds,
     static_strength,
 )
+from contact.optimize.development_keep import ranks_better
 from contact.optimize.development_result import (
     DevelopmentEvaluation,
     floor_torque,
@@ -315,8 +316,9 @@ def coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
         best = checked_long(best, targets, setup, teeth, say, placed, flank="coast",
                             key_prefix=prefix)
         as_synthesised = all(round(v, 9) == round(start[k], 9) for k, v in best.values.items())
-        if (best.checked and not as_synthesised
-                and (not best.full[2], best.full[0]) < (not full[2], full[0])):
+        # the check's one rank (check_rank): a coast LTE ltca run's verdict FAILs (above
+        # 2 x 60 urad) last, then every target met, then the objective (issue 71)
+        if best.checked and not as_synthesised and ranks_better(synthesised, best):
             chosen = best
     if chosen is synthesised:
         say(f"development: coast flank {side}: no design of its search did better than "
@@ -390,8 +392,10 @@ def coast_at_its_torque(pre_coast: BasicDesign, drive: DevelopmentEvaluation,
     prescriptions),
     with the budget ``coast_max_evaluations``, its flank peak pressure bounded by what the
     new coast design torque allows (:func:`pitting_pressure`). Returns its outcome where
-    its chosen design scores better at those torques than the design chosen first does
-    there (``coast``, whose metrics :func:`coast_flank_capacity` measured at them), else None.
+    its chosen design ranks before the design chosen first at those torques
+    (:func:`~contact.optimize.development_keep.ranks_better`: a checked LTE ``ltca run``'s
+    verdict FAILs last, then every target met, then the objective; ``coast``'s metrics
+    :func:`coast_flank_capacity` measured there), else None.
 
     Why: the relief that keeps a coast bearing elastic at a torque its flank cannot carry
     costs LTE at the torque it can (issue 71, the e-axle 11×39 at Σ 80°: developed at
@@ -432,7 +436,7 @@ def coast_at_its_torque(pre_coast: BasicDesign, drive: DevelopmentEvaluation,
     old, new = coast.best, again.best
     if new is None or old.full is None or new.full is None:
         return None
-    if (not new.full[2], new.full[0]) < (not old.full[2], old.full[0]):
+    if ranks_better(old, new):  # a FAIL-level coast LTE never replaces a passing one
         say(f"development: coast flank at {cap.torque:.4g} N m: the design developed there "
             f"(objective {new.full[0]:.3g}) kept, not the first ({old.full[0]:.3g})")
         return again

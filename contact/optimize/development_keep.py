@@ -108,11 +108,15 @@ def ranks_better(best: DevelopmentEvaluation, e: DevelopmentEvaluation) -> bool:
     Returns
     -------
     bool
-        ``e`` meets every target and ``best`` does not, or as many and a lower objective.
+        ``best``'s checked LTE fails ``ltca run``'s verdict and ``e``'s does not, or
+        both or neither do and ``e`` meets every target and ``best`` does not, or as many
+        and a lower objective.
 
     Notes
     -----
-    Source: the issue-71 development's check (docs/synthesis.md, "Development bearing").
+    Source: the issue-71 development's check (docs/synthesis.md, "Development bearing",
+    "A verdict the design does not deserve"); the coast flank's development ranks its
+    designs by it too (:mod:`contact.optimize.development_coast_flank`).
     """
     return _check_rank(e) < _check_rank(best)
 
