@@ -89,7 +89,8 @@ def lte_fails(e: DevelopmentEvaluation) -> bool:
     Returns
     -------
     bool
-        True where the checked LTE p-p exceeds the verdict's FAIL level at any torque.
+        True where the checked LTE p-p exceeds the verdict's FAIL level at any torque;
+        False where the design is not checked or its metrics carry no LTE.
 
     Notes
     -----
@@ -100,8 +101,8 @@ def lte_fails(e: DevelopmentEvaluation) -> bool:
     """
     from contact.study.verdicts import LTE_FAIL_FACTOR, LTE_LIMIT  # imports contact.ltca
 
-    if not e.checked or e.metrics is None:
-        return False
+    if not e.checked or e.metrics is None or "lte_peak_to_peak" not in e.metrics:
+        return False  # no checked LTE: nothing the verdict's LTE check could fail
     lte = np.asarray(e.metrics["lte_peak_to_peak"], float)
     return bool(np.any(lte > LTE_FAIL_FACTOR * LTE_LIMIT))
 
