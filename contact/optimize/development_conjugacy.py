@@ -42,7 +42,7 @@ import numpy as np
 
 from geometry.case import Case
 
-__all__ = ["TRIAL_LTE_FACTOR", "VALID_NODE_FRACTION_MIN", "Conjugacy", "conjugacy",
+__all__ = ["TRIAL_LTE_FACTOR", "VALID_NODE_FRACTION_MIN", "Conjugacy", "conjugacy", "conjugacy_of",
            "misjudged_trial_text", "non_conjugate_text", "trial_lte_ratio"]
 
 #: least share [1] of valid ease-off nodes of flanks that are near conjugate (module
@@ -102,6 +102,32 @@ def conjugacy(case: Case, flank: str = "drive") -> Conjugacy:
         eo = ease_off(case, flank=flank)
     except InputError:
         return Conjugacy(0, nodes, math.nan)
+    return conjugacy_of(eo)
+
+
+def conjugacy_of(eo: Any) -> Conjugacy:
+    """The valid nodes and span of an ease-off already computed (:func:`conjugacy`'s
+    measure, for a caller that needs the ease-off itself too).
+
+    Parameters
+    ----------
+    eo : contact.utca.easeoff.EaseOff
+        Its ``valid`` (bool, shape (nv, nu)) and ``ease_off`` [mm] on the gear grid.
+
+    Returns
+    -------
+    Conjugacy
+        Valid nodes of the grid, its node count and the span [µm] (NaN: no valid node).
+
+    Raises
+    ------
+    AttributeError
+        Where ``eo`` has no ``valid`` or ``ease_off``.
+
+    Notes
+    -----
+    The ease-off of seed §4.2 (:func:`contact.utca.easeoff.ease_off`).
+    """
     valid = eo.valid
     span = (1e3 * float(np.max(eo.ease_off[valid])) if valid.any() else math.nan)
     return Conjugacy(int(np.count_nonzero(valid)), int(valid.size), span)

@@ -85,15 +85,9 @@ def profile_ratio(case: Case) -> float:
     -----
     Source: ISO 10300-1:2014, Annex A, A.2 (``contact.load_capacity.iso10300``).
     """
-    from contact.load_capacity.iso10300.rating import case_gear_data
-    from contact.load_capacity.iso10300.virtual_gears import virtual_gears
+    from contact.optimize.development_matched_te import contact_ratios
 
-    try:
-        gear_data, _ = case_gear_data(case)
-        return float(virtual_gears(gear_data).eps_va)
-    except Exception as exc:  # no [design] table: the step has no ratio to read
-        log.info("development: no profile contact ratio of the case (%s)", exc)
-        return math.nan
+    return contact_ratios(case)[0]
 
 
 def profile_ratio_bearing(values: Mapping[str, float], targets: DevelopmentTargets

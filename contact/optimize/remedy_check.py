@@ -44,8 +44,6 @@ import time
 from collections.abc import Sequence
 from typing import Any, NamedTuple
 
-import numpy as np
-
 from contact.optimize.development_conjugacy import VALID_NODE_FRACTION_MIN
 
 __all__ = ["UTE_GROWTH_MAX", "UTE_KEPT_SHARE", "ChangeCheck", "check_change",
@@ -107,15 +105,14 @@ def unloaded_te_pp(case, flank: str = "drive") -> tuple[float, float, float]:
     §2.3.2.2 (the lower envelope of the pairs' unloaded TE,
     :func:`contact.utca.datasets.unloaded_cycle`, 30 rolls).
     """
+    from contact.optimize.development_conjugacy import conjugacy_of
     from contact.utca.datasets import unloaded_cycle
     from contact.utca.easeoff import ease_off
 
     eo = ease_off(case, flank=flank)
     cycle = unloaded_cycle(eo)
-    valid = eo.valid
-    span = 1e3 * float(np.max(eo.ease_off[valid])) if valid.any() else math.nan
-    return (1e6 * float(cycle.te_range[1] - cycle.te_range[0]), span,
-            float(np.count_nonzero(valid)) / valid.size)
+    c = conjugacy_of(eo)
+    return 1e6 * float(cycle.te_range[1] - cycle.te_range[0]), c.span, c.fraction
 
 
 def check_change(basic, change) -> ChangeCheck:
