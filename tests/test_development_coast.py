@@ -491,6 +491,79 @@ def test_a_coast_lte_above_the_limit_gets_a_shallower_root_relief(monkeypatch):
     assert any("misses centre_v" in x for x in lines)
 
 
+def test_the_coast_steps_keep_on_the_verdict_first(monkeypatch):
+    """The coast LTE steps' keep rule (development_coast_steps._coast_kept) is the check
+    steps' one rule (development_keep.kept_why, verdict_lost first): a coast design whose
+    checked LTE ``ltca run``'s verdict FAILs (above 2 x 60 urad) is replaced by a step's
+    design it passes that gives up only the pattern's centre (the rank alone refused it
+    for the centre v lost, and the case was written with the FAIL); one that also raises
+    the peak above the design's is still refused, as is a FAIL-level design over a
+    passing one whatever its objective; between two designs the verdict passes the coast
+    rule is as before (the centre v lost: refused, said). Stand-ins on the 9x33's coast
+    prescriptions (no LTCA): root relief 40 um LTE 130 / 125 urad (FAIL), 20 um 50 / 55
+    urad with the centre v 0.70 off its band 0.6 +/- 0.08."""
+    from contact.optimize import development_check as dcheck
+    from contact.optimize import development_coast_steps as dsteps
+    from contact.optimize import development_keep
+    from contact.optimize.development_variant import lte_fails
+
+    assert dsteps._kept_why is development_keep.kept_why  # one rule, not a private copy
+    seen = []
+
+    def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
+             flank="drive"):
+        seen.append(round(case["root_relief"], 6))
+        if case["root_relief"] > 30.0:
+            m = {"lte_peak_to_peak": [130.0, 125.0], "pressure_max_flank": [700.0, 1369.0]}
+        else:
+            m = {"lte_peak_to_peak": [50.0, 55.0], "pressure_max_flank": [680.0, peak[0]],
+                 "pattern_centre_v": [0.7, 0.7]}
+        return _coast_metrics(**m), (0.0, 1.0, 0.0, 1.0, 2400.0)
+
+    peak = [1272.0]
+    targets, setup, chosen = stand_in(monkeypatch, fake, [15.4, 79.9])
+    start = chosen(dict(COAST_9X33))
+    assert lte_fails(start)
+    seen.clear()
+    lines = []
+    got = dcheck.checked_coast_relief(start, targets, setup, None, lines.append,
+                                      lambda v: dict(v))
+    # the half (20 um) passes the verdict, gives up only the centre v: kept, within the
+    # limit, so the third (13.3 um) is not tried
+    assert seen == [20.0]
+    assert got.values == COAST_9X33 | {"root_relief": 20.0}
+    assert not lte_fails(got) and "centre_v" in {k for k, v in got.full[1].items() if v > 0}
+    assert not any("not kept" in x for x in lines)
+    # the same with the peak raised (1500 MPa above 1369): refused, said, and the third
+    # tried (refused as well)
+    peak[0] = 1500.0
+    seen.clear()
+    lines.clear()
+    assert dcheck.checked_coast_relief(start, targets, setup, None, lines.append,
+                                       lambda v: dict(v)) is start
+    assert seen == [20.0, pytest.approx(40.0 / 3.0)]
+    assert any("the shallower root relief step misses pressure (1500 MPa above 1369)" in x
+               for x in lines)
+    assert not any("centre_v" in x for x in lines)  # the soft target is not a reason
+    # a FAIL-level design never replaces a passing one, whatever its objective
+    say = []
+    passing = _coast_design(COAST_9X33, _coast_metrics(lte_peak_to_peak=[50.0, 55.0]),
+                            targets)
+    loud = _coast_design(COAST_9X33, _coast_metrics(lte_peak_to_peak=[605.0, 600.0]),
+                         targets)
+    loud = dataclasses.replace(loud, full=(0.0, loud.full[1], True))
+    assert not dsteps._coast_kept(passing, loud, targets, "x", say.append) and say == []
+    # both passing: the centre v lost refuses it, said, as the coast rule did before
+    off = _coast_design(COAST_9X33 | {"root_relief": 20.0},
+                        _coast_metrics(lte_peak_to_peak=[30.0, 35.0],
+                                       pattern_centre_v=[0.7, 0.7]), targets)
+    worse = _coast_design(COAST_9X33, _coast_metrics(lte_peak_to_peak=[80.0, 90.0]),
+                          targets)
+    assert off.full[0] < worse.full[0]
+    assert not dsteps._coast_kept(worse, off, targets, "x", say.append)
+    assert say == ["  not kept: the x step misses centre_v"]
+
+
 def _lighter_fake(seen):
     """Stand-in coast analyses after the 9x33's coast flank as ``ltca synthesize`` wrote it
     (root relief 20 µm, tip relief 15 µm; ``benchmarks/development_levers.py --flank

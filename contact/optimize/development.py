@@ -102,7 +102,6 @@ design_torque_of     the torque the bearing is checked at
 
 from __future__ import annotations
 
-import dataclasses
 import functools
 import math
 import time
@@ -133,7 +132,10 @@ from contact.optimize.development_coast import (  # noqa: F401
     CoastCheck,
     coast_capacity,
 )
-from contact.optimize.development_coast_capacity_lte import coast_lte_within_capacity
+from contact.optimize.development_coast_capacity_lte import (
+    coast_lte_within_capacity,
+    coast_torque_that_holds,
+)
 from contact.optimize.development_coast_flank import (  # noqa: F401
     COAST_BEARING_DESIGNS,
     COAST_REDEVELOP,
@@ -539,19 +541,24 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                                                 float(coast.torques[1]), root_stress,
                                                 False, say)
         # its LTE still above the verdict's limit: a bearing whose peak may rise past the
-        # local pitting bound, up to the static strength (development_coast_capacity_lte)
+        # local pitting bound, up to the static strength (development_coast_capacity_lte),
+        # written, and the coast design torque searched again on it (the local pitting
+        # safety among its criteria), kept where its LTE is within the limit there
         within = coast_lte_within_capacity(developed, best, targets, setup, teeth, memo,
                                            say, coast, coast_cap)
         if within is not None:  # written, and analysed as `ltca run --flank coast` does
-            coast, text = within
+            held = (coast, developed, case, report)
+            coast = within[0]
             developed = coast.basic
-            if text:  # the coast design torque's source says what the LTE cost
-                coast_cap = dataclasses.replace(coast_cap,
-                                                reason=f"{coast_cap.reason}; then {text}")
             case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
             _both_flanks_built(case, root_stress, built, say)
-            coast, _ = coast_flank_capacity(case, basic, coast, targets, setup,
-                                            float(coast.torques[1]), root_stress, False, say)
+            holds = coast_torque_that_holds(case, basic, coast, coast_cap, targets, setup,
+                                            root_stress, say)
+            if holds is None:  # no torque that holds with it: the design before the step
+                coast, developed, case, report = held
+                _both_flanks_built(case, root_stress, built, say)
+            else:
+                coast, coast_cap = holds
     coast_seconds += time.process_time() - c_cap
     tolerance = final_tolerance(case, targets, setup, teeth, best.values)
     # not tolerant at the design torque: the torque up to which it is, stated (the design
