@@ -153,7 +153,7 @@ def check_change(basic, change) -> ChangeCheck:
     :func:`geometry.synthesis.case_synthesis.synthesize` with ``tip_planes=False``: the
     flanks are the written ones' (the placement moves only fillets and root lines).
     """
-    from geometry.core.errors import InputError, ModelUnavailableError
+    from geometry.core.errors import LTCAError
     from geometry.synthesis.case_synthesis import synthesize
 
     t0 = time.process_time()
@@ -162,7 +162,9 @@ def check_change(basic, change) -> ChangeCheck:
                                                                         **change.design))
         case = synthesize(changed, tip_planes=False)[0]
         ute, span, valid = unloaded_te_pp(case)
-    except (InputError, ModelUnavailableError, ValueError) as exc:
+    except (LTCAError, ValueError, ArithmeticError) as exc:
+        # a new blank's synthesis that fails in any way the toolkit names is a remedy
+        # refused with its message, never a note that ends the command
         log.info("remedy %s not checked: %s", change.text, exc)
         return ChangeCheck(change, math.nan, math.nan, 0.0, str(exc),
                            time.process_time() - t0)
