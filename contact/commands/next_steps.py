@@ -193,7 +193,12 @@ def overlap_lines(case, what: str = "the LTE spread", lte: Sequence[float] | Non
     """
     from contact.load_capacity.design_table import design_blank, design_table
     from contact.load_capacity.iso10300.face_contact import low_ratio_text
-    from contact.optimize.remedy_check import lte_diagnosis, read_record, recorded_judge
+    from contact.optimize.remedy_check import (
+        RATIO_TRIAL_TEXT,
+        lte_diagnosis,
+        read_record,
+        recorded_judge,
+    )
     from contact.study.verdicts import LTE_LIMIT
     from geometry.core.errors import InputError
 
@@ -206,8 +211,6 @@ def overlap_lines(case, what: str = "the LTE spread", lte: Sequence[float] | Non
                           else None)
     if said is None:
         return []
-    from contact.optimize.remedy_check import RATIO_TRIAL_TEXT
-
     cause = RATIO_TRIAL_TEXT
     if lte is not None and side == "drive":
         development = case.extra.get("development")
