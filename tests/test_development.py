@@ -1997,6 +1997,7 @@ def test_synthesizes_note_says_the_lte_the_development_reached():
     import types
 
     from contact.commands.synthesize import reach_text
+    from contact.optimize.remedy_check import RATIO_TRIAL_TEXT
 
     dev = types.SimpleNamespace(
         best=types.SimpleNamespace(metrics={"lte_peak_to_peak": np.array([70.0, 133.1])}),
@@ -2007,10 +2008,7 @@ def test_synthesizes_note_says_the_lte_the_development_reached():
     assert text == ("; the development's least drive LTE p-p 58/120 urad (design 2 with "
                     "te_level 80 urad, not written: it misses length): LTE p-p <= 60 urad "
                     "at every torque is out of this basic data's reach (the modified roll's "
-                    "TE parabola deepened tried): only higher contact ratios are left, and "
-                    "the change above, which takes them to their limits, is a trial whose LTE "
-                    "is not estimated (measured: a 21x29's beta_m 35 -> 38.5 deg 135 -> 46 "
-                    "urad, an 18x27's 35 -> 39.5 deg 80 -> 81 urad)")
+                    "TE parabola deepened tried); " + RATIO_TRIAL_TEXT)
     # nothing left to try (the 17x29: crowning 0, te_level at its bound): said so
     dev.lte_reach = {"light": 70.0, "design": 133.1, "what": "design 1 as checked",
                      "why": "", "tried": ()}

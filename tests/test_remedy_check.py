@@ -22,6 +22,7 @@ from contact.load_capacity.iso10300.face_contact import (
     profile_remedy,
 )
 from contact.optimize.remedy_check import (
+    RATIO_TRIAL_TEXT,
     UTE_GROWTH_MAX,
     UTE_KEPT_SHARE,
     ChangeCheck,
@@ -68,7 +69,9 @@ def test_the_8x35s_changes_are_the_ones_its_note_printed():
     seen = []
     judged = low_ratio_text(design, judge=lambda ch, t, none: seen.append((ch, t)) or "JUDGED")
     assert judged.endswith("which a localised bearing shortens; JUDGED")
-    assert [c.field for c in seen[0][0]] == ["k_d", "alpha_dD"] and seen[0][1] == 1.0
+    # both ratios' remedies are judged: its ε_vβ 1.24 (b2, β_m for 1.25), then its ε_vα
+    assert [([c.field for c in ch], t) for ch, t in seen] == [(["b2", "beta_m"], 1.25),
+                                                              (["k_d", "alpha_dD"], 1.0)]
 
 
 def test_a_change_that_moves_the_synthesis_te_is_refused_with_its_numbers():
@@ -173,7 +176,9 @@ def test_the_lte_diagnosis_names_the_unloaded_te_where_it_sets_the_lte():
     dev.lte_reach = {"light": 70.0, "design": 133.1, "what": "design 1 as checked",
                      "why": "", "tried": ()}
     dev.best.metrics["lte_peak_to_peak"] = np.array([70.0, 133.1])
-    assert "only higher contact ratios are left" in reach_text(dev, 60.0, (45.0, 80.0))
+    text = reach_text(dev, 60.0, (45.0, 80.0))
+    assert text.endswith("out of this basic data's reach (no flatter profile or deeper TE "
+                         "parabola left to try); " + RATIO_TRIAL_TEXT)
 
 
 def test_the_remedies_are_synthesised_with_the_written_cases_gear_process():
@@ -256,3 +261,138 @@ def test_the_8x35s_remedies_are_checked_and_ordered_by_what_they_do_to_the_te():
     assert at[2.16] == pytest.approx(609.0, rel=0.05)
     assert at[2.0] == pytest.approx(666.0, rel=0.05)
     assert ute_sets_lte(at[2.16], [605.0, 599.0], 60.0)
+
+
+#: stand-ins of the face contact ratio's remedies (issue 71, session 17): the hypoid 15x31
+#: at a = 0.056 d_e2 of round 16, whose β_m 46.3° takes ε_vα to 0.98
+B2 = RatioChange("b2", 32.6, {"b2": 32.6}, "a gear face width b2 of 32.6 mm (now 28)")
+BETA = RatioChange("beta_m", 46.3, {"beta_m": math.radians(46.3)},
+                   "a mean spiral angle beta_m of 46.3 deg (now 40; eps_va then 0.98, below "
+                   "1)", "eps_va then 0.98, below 1")
+FIFTEEN = UNSEEN / "hypoid_15x31_a10.toml"
+
+
+def test_the_face_ratios_changes_say_which_lowers_the_profile_ratio():
+    """overlap_changes on the 15x31 (ε_vβ 1.00): the two changes its note printed (b2
+    32.6 mm, β_m 46.3°), each reaching ε_vβ 1.25 on the virtual gears (overlap_remedy of
+    the changed design, independent of the rounding), the spiral angle's saying that ε_vα
+    falls to 0.98 (its ``other``; round 16 measured 0.98 on the synthesised design)."""
+    import dataclasses
+
+    from contact.load_capacity.iso10300.face_contact import (
+        overlap_changes,
+        overlap_remedy,
+        profile_remedy,
+    )
+
+    design = load_basic(FIFTEEN).design
+    r = overlap_remedy(design)
+    assert r.eps_vb == pytest.approx(1.00, abs=0.005)
+    b2, beta = overlap_changes(r, design)
+    assert (b2.field, b2.value, beta.field, beta.value) == ("b2", 32.6, "beta_m", 46.3)
+    assert b2.other == "" and beta.other == "eps_va then 0.98, below 1"
+    assert beta.text.endswith("(now 40; eps_va then 0.98, below 1)")
+    for c in (b2, beta):
+        changed = dataclasses.replace(design, **c.design)
+        assert overlap_remedy(changed).eps_vb >= 1.25
+    assert profile_remedy(dataclasses.replace(design, **beta.design)).eps_va < 1.0
+
+
+def test_a_face_ratio_remedy_that_lowers_the_profile_ratio_comes_last():
+    """ranked_changes with ε_vβ stand-ins: the spiral angle's unloaded TE is the lower (80
+    against 95 µrad) but it takes ε_vα below 1 (the 15x31's β_m 46.3°: LTE 99 -> 64 µrad,
+    still above 60, round 16), so the face width comes first; a face width whose synthesis
+    fails is refused with why and the spiral angle offered alone, its ε_vα said."""
+    checks = [_check(BETA, 80.0), _check(B2, 95.0)]
+    passed, refused = ranked_changes(checks, 90.0, 60.0)
+    assert [c.change.field for c in passed] == ["b2", "beta_m"] and refused == []
+    text = checked_remedy_text(checks, 1.25, "none", 90.0, 60.0)
+    assert text.startswith("a gear face width b2 of 32.6 mm (now 28) (checked: unloaded TE "
+                           "p-p 95 urad (no lower than the written case's 90), ease-off 80 "
+                           "um), or, next best, a mean spiral angle beta_m of 46.3 deg (now "
+                           "40; eps_va then 0.98, below 1) (checked: unloaded TE p-p 80 urad")
+    failed = _check(B2, math.nan, math.nan, 0.0, "synthesis: no mean point")
+    text = checked_remedy_text([failed, _check(BETA, 80.0)], 1.25, "none", 90.0, 60.0)
+    assert text.startswith("a mean spiral angle beta_m of 46.3 deg (now 40; eps_va then "
+                           "0.98, below 1) (checked: unloaded TE p-p 80 urad (lower than the "
+                           "written case's 90), ease-off 80 um) reaches 1.25; not a gear "
+                           "face width b2 of 32.6 mm (now 28), which reaches 1.25 too: its "
+                           "synthesis has no solution (synthesis: no mean point)")
+
+
+def _recorded_sample3(record, prescriptions):
+    """ISO/TR 10300-30 sample 3 (ε_vβ 0.86) as if `ltca synthesize` had written it: the
+    remedy record and the [development] table's prescriptions given."""
+    import dataclasses
+    import json
+    import tomllib
+    from types import MappingProxyType
+
+    from contact.optimize.remedy_check import RECORD_TABLE, remedy_record
+    from geometry.case import load_case
+    from geometry.core.toml_files import dump_toml
+
+    case = load_case(ROOT / "cases" / "iso10300_30_sample3.toml")
+    # through the TOML text, as the case file holds it
+    table = tomllib.loads(dump_toml({RECORD_TABLE: remedy_record(record)}))
+    extra = {**case.extra, **table, "development": {"prescriptions": prescriptions}}
+    return dataclasses.replace(case, extra=MappingProxyType(json.loads(json.dumps(extra))))
+
+
+def test_ltca_run_offers_the_remedies_as_synthesize_checked_them():
+    """The checks recorded in the written case (remedy_record -> TOML -> read_record) give
+    ``ltca run``'s next step the sentence ``ltca synthesize``'s note printed
+    (checked_remedy_text of the same checks): the refused face width is never offered, only
+    named after "not" with why; the CPU the checks took is the one stated."""
+    from contact.commands.next_steps import overlap_lines
+    from contact.optimize.remedy_check import RemedyRecord, read_record, recorded_judge
+
+    checks = (_check(B2, 700.0, 900.0), _check(BETA, 80.0))
+    record = RemedyRecord(checks, 90.0, 94.0, 60.0)
+    case = _recorded_sample3(record, {"te_level": 128.0})
+    back = read_record(case.extra)
+    assert back.reference_ute == 90.0 and back.limit == 60.0
+    note = checked_remedy_text(checks, 1.25, "none", 90.0, 60.0)
+    assert recorded_judge(back)([B2, BETA], 1.25, "none") == note
+    assert note.startswith("a mean spiral angle beta_m of 46.3 deg") and "6 s of CPU" in note
+    (line,) = overlap_lines(case, "the LTE", [90.0, 103.0], "drive")
+    assert note in line
+    offered = line.split(note)[0] + note.split("; not ")[0]
+    assert "b2 of 32.6" not in offered and "; not a gear face width b2 of 32.6 mm" in line
+    assert "not checked by a synthesis" not in line
+
+
+def test_synthesize_and_run_say_the_same_of_what_sets_the_lte():
+    """One diagnosis (lte_diagnosis) in both commands: ``ltca synthesize``'s note
+    (reach_text of the development) and ``ltca run``'s next step (overlap_lines of the
+    written case, its LTE at the same torques) on the same numbers. The 8x35 at k_d 2.16
+    of round 15 (unloaded TE 609 µrad at a te_level of 10, LTE 605/600 µrad): both name
+    the unloaded TE, and the run offers no contact-ratio change as the trial. The 15x28 at
+    Σ 110° (unloaded TE 90 µrad at a te_level of 128 prescribed on purpose, LTE 90/103
+    µrad): both name the contact ratios, a trial."""
+    from contact.commands.next_steps import overlap_lines
+    from contact.commands.synthesize import reach_text
+    from contact.optimize.remedy_check import RemedyRecord, lte_diagnosis
+
+    for ute, lte, level, cause in ((609.0, [605.0, 600.0], 10.0, "unloaded_te"),
+                                   (90.0, [90.0, 103.0], 128.1, "contact_ratios")):
+        values = {"path_angle": -58.75, "ellipse_length": 0.25, "te_level": level}
+        record = RemedyRecord((_check(B2, 95.0), _check(BETA, 80.0)), ute, 94.0, 60.0)
+        case = _recorded_sample3(record, values)
+        dev = types.SimpleNamespace(
+            best=types.SimpleNamespace(metrics={"lte_peak_to_peak": np.array(lte)},
+                                       values=values),
+            lte_reach={"light": 96.0, "design": 101.0, "what": "design 35", "why": "",
+                       "tried": ("the TE parabola matched to the load",)})
+        diagnosis = lte_diagnosis(lte, 60.0, (ute, 94.0), values)
+        assert diagnosis.cause == cause
+        said = reach_text(dev, 60.0, (ute, 94.0))
+        (line,) = overlap_lines(case, "the LTE", lte, "drive")
+        assert diagnosis.text in said and diagnosis.text in line
+        blamed = "that, not the contact ratios, sets its LTE"
+        assert (blamed in said) == (blamed in line) == (cause == "unloaded_te")
+        # where the unloaded TE sets it, no contact-ratio change is the run's trial
+        assert ("b2 of 32.6" in line) == (cause == "contact_ratios")
+    # a coast flank's LTE is not judged by the drive flank's unloaded TE
+    (line,) = overlap_lines(case, "the LTE", [605.0, 600.0], "coast")
+    assert RATIO_TRIAL_TEXT in line

@@ -150,7 +150,8 @@ def bearing_lines(case, shown: str, side: str, torques: str, variables: Mapping[
             [f"    ltca rate {shown} --torque {torques}"] if rate else [])
 
 
-def overlap_lines(case, what: str = "the LTE spread") -> list[str]:
+def overlap_lines(case, what: str = "the LTE spread", lte: Sequence[float] | None = None,
+                  side: str = "drive") -> list[str]:
     """The next-step line of an LTE finding (the LTE-spread FAIL, or ``ltca run``'s ``lte``
     attention) whose cause may be the design's own low contact ratios: ε_vβ below 1.25 and the
     face width and spiral angle that reach it, ε_vα below 1 and the depth factor and
@@ -158,6 +159,14 @@ def overlap_lines(case, what: str = "the LTE spread") -> list[str]:
     (:func:`contact.load_capacity.iso10300.face_contact.low_ratio_text`); a bearing change
     offsets it only in part (docs/own_gear_set.md, "A face contact ratio below 1.25").
     Empty where the case has no ``[design]`` table or both ratios meet their limits.
+
+    The remedies are those ``ltca synthesize``'s note offered, as its checks (one synthesis
+    each) recorded them in the case
+    (:func:`contact.optimize.remedy_check.recorded_judge`): the same order and numbers,
+    never a change the check refused; a case without the record offers them unchecked,
+    said so. What sets the LTE is stated as ``ltca synthesize`` states it
+    (:func:`contact.optimize.remedy_check.lte_diagnosis`): where the written drive flank's
+    unloaded TE is what its LTE is, that, and no contact-ratio change as the trial.
 
     The change is printed as a trial, never as the LTE's remedy: no estimate from the basic
     data supports one (the LTE is the bearing the development finds on the new blank; the
@@ -171,6 +180,12 @@ def overlap_lines(case, what: str = "the LTE spread") -> list[str]:
     case : geometry.case.Case
     what : str
         The finding named: ``"the LTE spread"`` (default) or ``"the LTE"``.
+    lte : sequence of float, optional — [µrad]
+        The analysed flank's LTE p-p at (light, design) torque (``ltca run``'s); None: the
+        unloaded TE is not judged (``ltca duty-cycle``).
+    side : str
+        The analysed flank's role, ``"drive"`` (default) or ``"coast"``: the unloaded TE
+        judged is the drive flank's, so only a drive flank's LTE is judged by it.
 
     Returns
     -------
@@ -178,21 +193,64 @@ def overlap_lines(case, what: str = "the LTE spread") -> list[str]:
     """
     from contact.load_capacity.design_table import design_blank, design_table
     from contact.load_capacity.iso10300.face_contact import low_ratio_text
+    from contact.optimize.remedy_check import (
+        RATIO_TRIAL_TEXT,
+        lte_diagnosis,
+        read_record,
+        recorded_judge,
+    )
+    from contact.study.verdicts import LTE_LIMIT
     from geometry.core.errors import InputError
 
     try:
         design = design_blank(design_table(case, "")).design
     except (InputError, KeyError, ValueError, AttributeError):
         return []
-    said = low_ratio_text(design)
+    record = read_record(case.extra)
+    said = low_ratio_text(design, judge=recorded_judge(record) if record is not None
+                          else None)
     if said is None:
         return []
-    return [f"  next, {what} may be the design's: {said}; whether that lowers the LTE is "
-            "not estimated from the basic data: the LTE is the bearing developed on the new "
-            "blank (measured: a 21x29 at beta_m 35 -> 38.5 deg 135/93 -> 46/47 urad, an 18x27 "
-            "at 35 -> 39.5 deg 80 -> 81 urad; docs/own_gear_set.md, 'The overlap change is a "
-            "trial'); a trial: ltca synthesize BASIC.toml with it, then ltca run of the case "
-            "it writes"]
+    cause = RATIO_TRIAL_TEXT
+    if lte is not None and side == "drive":
+        development = case.extra.get("development")
+        prescriptions = (development.get("prescriptions")
+                         if hasattr(development, "get") else None)
+        diagnosis = lte_diagnosis(lte, LTE_LIMIT, _written_ute(case, record), prescriptions)
+        if diagnosis.cause == "unloaded_te":
+            return [f"  next, {what} is not the design's contact ratios: {diagnosis.text}; a "
+                    "trial: ltca synthesize BASIC.toml with other [synthesis] prescriptions, "
+                    "then ltca run of the case it writes"]
+        cause = diagnosis.text
+    unchecked = ("" if record is not None else
+                 " (not checked by a synthesis: this case records no check; `ltca "
+                 "synthesize` of its basic file checks each)")
+    return [f"  next, {what} may be the design's: {said}{unchecked}; {cause}; a trial: ltca "
+            "synthesize BASIC.toml with it, then ltca run of the case it writes"]
+
+
+def _written_ute(case, record) -> tuple[float, float] | None:
+    """The written drive flank's unloaded TE p-p [µrad] and ease-off span [µm]: as the
+    case's remedy record holds it (``ltca synthesize`` measured it), else, for a case a
+    development wrote (its ``[development]`` table: the prescriptions that set that TE),
+    measured (:func:`contact.optimize.remedy_check.unloaded_te_pp`); None otherwise (a case
+    of settings given by hand: no prescriptions to name) or where it cannot be measured
+    (said in the log)."""
+    if record is not None and math.isfinite(record.reference_ute):
+        return record.reference_ute, record.reference_span
+    if not hasattr(case.extra.get("development"), "get"):
+        return None
+    from contact.optimize.remedy_check import unloaded_te_pp
+    from geometry.core.errors import InputError, ModelUnavailableError
+
+    try:
+        ute, span, _ = unloaded_te_pp(case)
+    except (InputError, ModelUnavailableError, ValueError) as exc:
+        import logging
+
+        logging.getLogger(__name__).info("the case's unloaded TE not measured: %s", exc)
+        return None
+    return ute, span
 
 
 def spread_failed(findings: Sequence) -> bool:

@@ -473,13 +473,18 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
     from contact.utca.easeoff import FLANK_ROLES
 
     v = verdict(tree)
+    side = flank or "drive"
+    if side not in FLANK_ROLES:  # a pinion flank by name: its role, as `ltca optimize` takes
+        side = "drive" if side == case.pair.drive_flank else "coast"
+    lte = _light_design_lte(tree)
     if v.severity != "fail":
         # an LTE above the verdict's limit whose cause is the design's low contact ratios:
-        # the basic-file change that raises them (issue 71)
+        # the basic-file change that raises them (issue 71), or what `ltca synthesize`
+        # said sets it instead (the written flank's unloaded TE)
         if any(f.check == "lte" for f in v.findings):
             from contact.commands.next_steps import overlap_lines
 
-            return overlap_lines(case, "the LTE")
+            return overlap_lines(case, "the LTE", lte, side)
         return []
     failed = {f.check for f in v.findings}
     shown = case_arg if case_arg is not None else case.name
@@ -492,9 +497,6 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
              and "pinion_speed" in tree["rating"].variables
              and tree["rating"]["pinion_speed"].ndim == 0 else 0.0)
     torques = " ".join(f"{t:g}" for t in tree["ltca"]["torque"].values)
-    side = flank or "drive"
-    if side not in FLANK_ROLES:  # a pinion flank by name: its role, as `ltca optimize` takes
-        side = "drive" if side == case.pair.drive_flank else "coast"
     out: list[str] = []
     capacity: list[str] = []
     if failed & set(CAPACITY_CHECKS):
@@ -524,9 +526,9 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
 
     if "implausible" in failed and spread_failed(v.findings):
         # an LTE spread that is the design's low face contact ratio
-        out = overlap_lines(case) + out
+        out = overlap_lines(case, lte=lte, side=side) + out
     elif "lte" in failed:  # an LTE beyond twice its limit: the same remedy, said once
-        out = overlap_lines(case, "the LTE") + out
+        out = overlap_lines(case, "the LTE", lte, side) + out
     if "scuffing" in failed:
         op = case.operating
         out += ["  next, scuffing: the flash temperature falls with a cooler oil inlet, smoother "
@@ -537,6 +539,24 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
                 f"    ltca run {shown} --flank {side} --torque {torques} --temperature "
                 f"{op.temperature - 20.0:g} --roughness {op.roughness / 2.0:g}"]
     return out
+
+
+def _light_design_lte(tree) -> list[float] | None:
+    """The analysis' LTE p-p [µrad] at its lightest and its heaviest torque (as
+    ``ltca synthesize``'s development states it: light/design), None where the tree has
+    none."""
+    import numpy as np
+
+    if "ltca" not in tree.children or "lte_peak_to_peak" not in tree["ltca"].variables:
+        return None
+    ds = tree["ltca"]
+    lte = np.asarray(ds["lte_peak_to_peak"].values, float)
+    torque = np.asarray(ds["torque"].values, float) if "torque" in ds.variables else None
+    if lte.ndim != 1 or lte.size == 0:
+        return None
+    if torque is not None and torque.shape == lte.shape:
+        lte = lte[np.argsort(torque)]
+    return [float(lte[0]), float(lte[-1])]
 
 
 def check_certified(tree, path) -> None:

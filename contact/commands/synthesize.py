@@ -246,12 +246,14 @@ def reach_text(development, limit: float,
         E.g. "; the development's least drive LTE p-p 109/96 urad (design 35 with
         profile_crowning 0 um, not written: it scores no better): LTE p-p <= 60 urad at
         every torque is out of this basic data's reach (the profile crowning flattened
-        tried): only higher contact ratios are left, and the change above, which takes
-        them to their limits, is a trial whose LTE is not estimated (…)" (the spiral bevel
-        19x23 at beta_m 46 deg of benchmarks/data/unseen_designs;
-        the change is no promise of 60 urad: its k_d 2.06, eps_va 1.00, gave 75/107 urad).
+        tried); a higher contact ratio is the lever left, and the change that takes it
+        to its limit is a trial (…)" (the spiral bevel 19x23 at beta_m 46 deg of
+        benchmarks/data/unseen_designs; the change is no promise of 60 urad: its k_d
+        2.06, eps_va 1.00, gave 75/107 urad). The cause stated is
+        :func:`contact.optimize.remedy_check.lte_diagnosis`'s, which ``ltca run``'s next
+        step states too.
     """
-    from contact.optimize.remedy_check import ute_lte_text, ute_sets_lte
+    from contact.optimize.remedy_check import lte_diagnosis
 
     reach = getattr(development, "lte_reach", None)
     lte = development.best.metrics["lte_peak_to_peak"]
@@ -262,13 +264,11 @@ def reach_text(development, limit: float,
         why = f", not written: {reach['why']}" if reach.get("why") else ""
         said = (f"; the development's least drive LTE p-p {reach['light']:.0f}/"
                 f"{reach['design']:.0f} urad ({reach['what']}{why})")
-    values = getattr(development.best, "values", None) or {}
-    prescribed = float(values.get("te_level", math.nan))
-    if written_ute is not None and ute_sets_lte(written_ute[0], lte, limit, prescribed):
-        written = ", ".join(f"{k} {float(values[k]):.3g}" for k in
-                            ("path_angle", "ellipse_length", "te_level") if k in values)
-        return said + "; " + ute_lte_text(written_ute[0], written_ute[1], lte, limit,
-                                          written)
+    # what sets the LTE: the one statement `ltca run`'s next step makes too
+    diagnosis = lte_diagnosis(lte, limit, written_ute,
+                              getattr(development.best, "values", None) or {})
+    if diagnosis.cause == "unloaded_te":
+        return said + "; " + diagnosis.text
     if not reach:
         return ""
     least = max(reach["light"], reach["design"])
@@ -277,10 +277,7 @@ def reach_text(development, limit: float,
              "left to try")
     if least > limit:
         return (said + f": LTE p-p <= {limit:g} urad at every torque is out of this basic "
-                f"data's reach ({tried}): only higher contact ratios are left, and the "
-                "change above, which takes them to their limits, is a trial whose LTE is not "
-                "estimated (measured: a 21x29's beta_m 35 -> 38.5 deg 135 -> 46 urad, an "
-                "18x27's 35 -> 39.5 deg 80 -> 81 urad)")
+                f"data's reach ({tried}); " + diagnosis.text)
     return said + f": within {limit:g} urad, but not written"
 
 
@@ -328,56 +325,75 @@ def gear_process_note(development, case) -> str | None:
     return text
 
 
-def _lte_notes(basic, case, development, ratios) -> None:
-    """Print ``ltca synthesize``'s notes on the written drive flank's LTE: flanks far from
+def _lte_notes(basic, case, development, ratios) -> tuple[list[str], object]:
+    """``ltca synthesize``'s notes on the written drive flank's LTE: flanks far from
     conjugate (:func:`_conjugacy_notes`) or else low contact ratios, and a coarse trial the
-    check contradicts."""
+    check contradicts; made before the case is written, so that the contact-ratio remedies'
+    checks go into it (:data:`contact.optimize.remedy_check.RECORD_TABLE`, which ``ltca
+    run``'s next step reads).
+
+    Returns
+    -------
+    (lines, record) : (list of str, contact.optimize.remedy_check.RemedyRecord or None)
+        The notes to print (each without its "note: "), and the remedies' checks where the
+        contact-ratio note checked any.
+    """
+    lines: list[str] = []
+    record = None
     far, misjudged = _conjugacy_notes(case, development, ratios)
     if far is not None:
-        print("note: " + far)
+        lines.append(far)
     elif ratios is not None and (ratios[1] < FACE_CONTACT_RATIO_NOTE
                                  or ratios[0] < PROFILE_CONTACT_RATIO_NOTE):
         # the cause and the remedy in numbers: the face width and the spiral angle that
         # reach the least face contact ratio, the depth factor and the pressure angle that
         # reach the least profile contact ratio (contact.load_capacity.iso10300.face_contact),
-        # the latter each checked by a synthesis before it is offered; the written case's
-        # unloaded TE, where it is what the LTE is, named instead of the contact ratios
+        # each checked by a synthesis before it is offered; the written case's unloaded TE,
+        # where it is what the LTE is, named instead of the contact ratios
         from contact.load_capacity.iso10300.face_contact import low_ratio_text
+        from contact.optimize.remedy_check import RemedyRecord
+        from contact.study.verdicts import LTE_LIMIT
 
         written = _written_ute(case, development, ratios)
-        judge = (_remedy_judge(_prescribed(basic, case, development), written)
-                 if ratios[0] < PROFILE_CONTACT_RATIO_NOTE else None)
+        checks: list = []
+        judge = _remedy_judge(_prescribed(basic, case, development), written, checks)
         said = low_ratio_text(basic.design, FACE_CONTACT_RATIO_NOTE,
                               PROFILE_CONTACT_RATIO_NOTE, judge=judge)
-        print("note: " + (said if said is not None else
-                          f"contact ratios eps_va {ratios[0]:.2f}, eps_vb {ratios[1]:.2f}: "
-                          f"below {PROFILE_CONTACT_RATIO_NOTE:g} / {FACE_CONTACT_RATIO_NOTE:g}"
-                          ", the least bevel-gear design practice asks for (AGMA 2005-D03); "
-                          "a wider face (b2) or a larger spiral angle (beta_m) raises eps_vb, "
-                          "a deeper tooth (k_d) or a smaller pressure angle (alpha_dD) eps_va")
-              + (f"; {low_overlap_lte(development, written)}" if development is not None
-                 else ""))
+        lines.append((said if said is not None else
+                      f"contact ratios eps_va {ratios[0]:.2f}, eps_vb {ratios[1]:.2f}: "
+                      f"below {PROFILE_CONTACT_RATIO_NOTE:g} / {FACE_CONTACT_RATIO_NOTE:g}"
+                      ", the least bevel-gear design practice asks for (AGMA 2005-D03); "
+                      "a wider face (b2) or a larger spiral angle (beta_m) raises eps_vb, "
+                      "a deeper tooth (k_d) or a smaller pressure angle (alpha_dD) eps_va")
+                     + (f"; {low_overlap_lte(development, written)}"
+                        if development is not None else ""))
+        if checks:
+            record = RemedyRecord(tuple(checks),
+                                  *(written if written is not None else (math.nan,) * 2),
+                                  LTE_LIMIT)
     if misjudged is not None:
-        print("note: " + misjudged)
+        lines.append(misjudged)
     if far is None and development is not None:
         said = _deflection_note(case, development)
         if said is not None:
-            print("note: " + said)
+            lines.append(said)
+    return lines, record
 
 
 def _written_ute(case, development, ratios) -> tuple[float, float] | None:
     """The written drive flank's unloaded TE p-p [µrad] and ease-off span [µm]
     (:func:`contact.optimize.remedy_check.unloaded_te_pp`, < 1 s: the ease-off is the one
-    the conjugacy check made), where the note needs it: a profile contact ratio below
-    :data:`PROFILE_CONTACT_RATIO_NOTE` (the remedies' reference) or a drive LTE above the
-    verdict's limit (its diagnosis); None otherwise or where it cannot be measured (said in
-    the log)."""
+    the conjugacy check made), where the note needs it: a contact ratio below
+    :data:`PROFILE_CONTACT_RATIO_NOTE` or :data:`FACE_CONTACT_RATIO_NOTE` (the remedies'
+    reference) or a drive LTE above the verdict's limit (its diagnosis); None otherwise or
+    where it cannot be measured (said in the log)."""
     from contact.study.verdicts import LTE_LIMIT
     from geometry.core.errors import InputError, ModelUnavailableError
 
     high = (development is not None
             and float(max(development.best.metrics["lte_peak_to_peak"])) > LTE_LIMIT)
-    if not (high or ratios[0] < PROFILE_CONTACT_RATIO_NOTE):
+    if not (high or ratios[0] < PROFILE_CONTACT_RATIO_NOTE
+            or ratios[1] < FACE_CONTACT_RATIO_NOTE):
         return None
     from contact.optimize.remedy_check import unloaded_te_pp
 
@@ -407,21 +423,46 @@ def _prescribed(basic, case, development):
     return prescribed
 
 
-def _remedy_judge(prescribed, written):
-    """The check of each profile-ratio remedy before the note offers it
+def _remedy_judge(prescribed, written, checks: list | None = None):
+    """The check of each contact-ratio remedy before the note offers it
     (:func:`contact.optimize.remedy_check.checked_remedy_text`): a synthesis of the changed
     basic data at ``prescribed``'s prescriptions (the written case's) each, measured
-    against the written case's unloaded TE p-p (``written``: (µrad, µm) or None)."""
+    against the written case's unloaded TE p-p (``written``: (µrad, µm) or None); each
+    check appended to ``checks`` where given (the case's record)."""
     from contact.optimize.remedy_check import check_change, checked_remedy_text
     from contact.study.verdicts import LTE_LIMIT
 
     reference = written[0] if written is not None else math.nan
 
     def judge(changes, target, none):
-        checks = [check_change(prescribed, c) for c in changes]
-        return checked_remedy_text(checks, target, none, reference, LTE_LIMIT)
+        made = [check_change(prescribed, c) for c in changes]
+        if checks is not None:
+            checks.extend(made)
+        return checked_remedy_text(made, target, none, reference, LTE_LIMIT)
 
     return judge
+
+
+def _noted(basic, case, development):
+    """(case, contact ratios, LTE notes) of the case to write: :func:`_lte_notes` made
+    before it is written, the remedies' checks recorded in it (:func:`_with_record`) for
+    ``ltca run``'s next step."""
+    ratios = _contact_ratios(case)
+    notes, record = _lte_notes(basic, case, development, ratios)
+    return (case if record is None else _with_record(case, record)), ratios, notes
+
+
+def _with_record(case, record):
+    """``case`` with the remedies' checks as its informational
+    :data:`~contact.optimize.remedy_check.RECORD_TABLE` table."""
+    import dataclasses
+    import json
+    from types import MappingProxyType
+
+    from contact.optimize.remedy_check import RECORD_TABLE, remedy_record
+
+    extra = json.loads(json.dumps({**case.extra, RECORD_TABLE: remedy_record(record)}))
+    return dataclasses.replace(case, extra=MappingProxyType(extra))
 
 
 def _deflection_note(case, development) -> str | None:
@@ -632,6 +673,7 @@ def _run_synthesize(args: argparse.Namespace) -> int:
         case, coast_capacity = development.with_coast_capacity(case)
         if math.isfinite(coast_capacity):
             coast_torque, coast_why = coast_capacity, development.coast_capacity_text
+    case, ratios, notes = _noted(basic, case, development)
     text = _HEADER.format(basic=shown) + case.to_toml()
     # the written text must load back to the same case
     case_from_dict(tomllib.loads(text))
@@ -653,7 +695,6 @@ def _run_synthesize(args: argparse.Namespace) -> int:
     above = _above_capacity_note(case, torque) if given else None
     if above is not None:
         print("note: " + above)
-    ratios = _contact_ratios(case)
     if ratios is not None:
         print(f"  contact ratios (ISO 10300-1 virtual cylindrical gears): profile eps_va "
               f"{ratios[0]:.2f}, face eps_vb {ratios[1]:.2f}, total {sum(ratios):.2f}")
@@ -668,7 +709,8 @@ def _run_synthesize(args: argparse.Namespace) -> int:
     if process is not None:
         print("note: " + process)
     print(f"wrote {path}")
-    _lte_notes(basic, case, development, ratios)
+    for line in notes:
+        print("note: " + line)
     if basic.optimize:
         print(f"note: {shown} carries an [optimize] table: the synthesis alone is written; "
               f"`ltca optimize {shown}` also optimises the settings it names (the bundled "

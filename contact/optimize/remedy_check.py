@@ -29,10 +29,22 @@ and says why each refused one is refused, with its numbers.
 written case's own unloaded TE is what its LTE is: its p-p above the verdict's limit and
 kept by the load at the light torque (:data:`UTE_KEPT_SHARE`).
 
+The face contact ratio's remedies (gear face width b2, mean spiral angle β_m:
+:func:`contact.load_capacity.iso10300.face_contact.overlap_changes`) are checked the same
+way (issue 71, session 17): a wider face or a larger spiral angle at the same
+prescriptions is a new blank whose synthesis may fail or depart from the conjugate as a
+deeper tooth may; a change that takes ε_vα below 1 comes after one that does not.
+:func:`remedy_record` writes the checks into the written case (:data:`RECORD_TABLE`),
+and ``ltca run``'s next step offers the remedies from there (:func:`read_record`,
+:func:`recorded_judge`): the same sentence, never a change the check refused.
+:func:`lte_diagnosis` is the one statement both commands make of what sets the LTE.
+
 Public names
 ------------
 UTE_GROWTH_MAX, UTE_KEPT_SHARE, ChangeCheck, check_change, unloaded_te_pp, refusal,
-ranked_changes, checked_remedy_text, ute_sets_lte, ute_lte_text
+ranked_changes, checked_remedy_text, ute_sets_lte, ute_lte_text, RECORD_TABLE,
+RemedyRecord, remedy_record, read_record, recorded_judge, LteDiagnosis, RATIO_TRIAL_TEXT,
+lte_diagnosis
 """
 
 from __future__ import annotations
@@ -46,9 +58,11 @@ from typing import Any, NamedTuple
 
 from contact.optimize.development_conjugacy import VALID_NODE_FRACTION_MIN
 
-__all__ = ["UTE_GROWTH_MAX", "UTE_KEPT_SHARE", "ChangeCheck", "check_change",
-           "checked_remedy_text", "ranked_changes", "refusal", "unloaded_te_pp",
-           "ute_lte_text", "ute_sets_lte"]
+__all__ = ["RATIO_TRIAL_TEXT", "RECORD_TABLE", "UTE_GROWTH_MAX", "UTE_KEPT_SHARE",
+           "ChangeCheck", "LteDiagnosis", "RemedyRecord", "check_change",
+           "checked_remedy_text", "lte_diagnosis", "ranked_changes", "read_record",
+           "recorded_judge", "refusal", "remedy_record", "unloaded_te_pp", "ute_lte_text",
+           "ute_sets_lte"]
 
 log = logging.getLogger(__name__)
 
@@ -139,7 +153,7 @@ def check_change(basic, change) -> ChangeCheck:
     :func:`geometry.synthesis.case_synthesis.synthesize` with ``tip_planes=False``: the
     flanks are the written ones' (the placement moves only fillets and root lines).
     """
-    from geometry.core.errors import InputError, ModelUnavailableError
+    from geometry.core.errors import LTCAError
     from geometry.synthesis.case_synthesis import synthesize
 
     t0 = time.process_time()
@@ -148,7 +162,9 @@ def check_change(basic, change) -> ChangeCheck:
                                                                         **change.design))
         case = synthesize(changed, tip_planes=False)[0]
         ute, span, valid = unloaded_te_pp(case)
-    except (InputError, ModelUnavailableError, ValueError) as exc:
+    except (LTCAError, ValueError, ArithmeticError) as exc:
+        # a new blank's synthesis that fails in any way the toolkit names is a remedy
+        # refused with its message, never a note that ends the command
         log.info("remedy %s not checked: %s", change.text, exc)
         return ChangeCheck(change, math.nan, math.nan, 0.0, str(exc),
                            time.process_time() - t0)
@@ -198,7 +214,10 @@ def refusal(check: ChangeCheck, reference_ute: float, limit: float) -> str | Non
 def ranked_changes(checks: Sequence[ChangeCheck], reference_ute: float, limit: float
                    ) -> tuple[list[ChangeCheck], list[tuple[ChangeCheck, str]]]:
     """The remedies that pass :func:`refusal`, the lowest unloaded TE p-p first (then the
-    smaller ease-off), and the refused ones with their reasons, in the given order.
+    smaller ease-off), and the refused ones with their reasons, in the given order; a
+    change that takes the other contact ratio below its limit (its ``other``: a larger
+    spiral angle's ε_vα, the hypoid 15×31 of round 16 at β_m 46.3°: ε_vα 0.98, LTE 99 → 64
+    µrad, still above 60) after every one that does not.
 
     Parameters
     ----------
@@ -217,7 +236,8 @@ def ranked_changes(checks: Sequence[ChangeCheck], reference_ute: float, limit: f
             passed.append(c)
         else:
             refused.append((c, why))
-    passed.sort(key=lambda c: (c.ute, c.span if math.isfinite(c.span) else math.inf))
+    passed.sort(key=lambda c: (bool(getattr(c.change, "other", "")), c.ute,
+                               c.span if math.isfinite(c.span) else math.inf))
     return passed, refused
 
 
@@ -347,3 +367,188 @@ def ute_lte_text(ute: float, span: float, lte: Sequence[float], limit: float,
             "(a path angle or an ellipse length of a design whose LTE the development's "
             "lines show lower) are the lever (docs/synthesis.md, 'Contact-ratio remedies "
             "checked before they are offered')")
+
+
+#: the written case's informational table in which ``ltca synthesize`` records the checks
+#: of the contact-ratio remedies its note offers (:func:`remedy_record`); ``ltca run``
+#: reads it back (:func:`recorded_judge`), so its next step offers what the note offered
+#: and never a change the check refused
+RECORD_TABLE = "contact_ratio_remedies"
+
+
+#: the contact ratio each remedy's field raises
+_RATIO_OF = {"b2": "eps_vb", "beta_m": "eps_vb", "k_d": "eps_va", "alpha_dD": "eps_va"}
+
+
+class RemedyRecord(NamedTuple):
+    """The checks of a written case's contact-ratio remedies as its case file records them
+    (:func:`remedy_record`, :func:`read_record`)."""
+
+    checks: tuple[ChangeCheck, ...]
+    reference_ute: float  # [µrad] the written drive flank's unloaded TE p-p (NaN: not known)
+    reference_span: float  # [µm] its ease-off's extent (NaN: not known)
+    limit: float  # [µrad] the verdict's LTE limit the checks were judged against
+
+
+def remedy_record(record: RemedyRecord) -> dict[str, Any]:
+    """A :class:`RemedyRecord` as the case's informational :data:`RECORD_TABLE` table
+    (TOML-safe: a value not measured is left out, never written as NaN).
+
+    Parameters
+    ----------
+    record : RemedyRecord
+
+    Returns
+    -------
+    dict
+        ``note``, ``limit_urad``, ``unloaded_te_pp_urad`` and ``ease_off_um`` of the written
+        drive flank where measured, ``cpu_seconds``, and ``change``: one table per checked
+        change (``field``, ``value``, ``text``, ``other``, its measures, ``failed``,
+        ``cpu_seconds``, and ``refused``: :func:`refusal`'s reason, "" where offered).
+    """
+    def kept(**values: float) -> dict[str, float]:
+        return {k: round(float(v), 3) for k, v in values.items() if math.isfinite(v)}
+
+    changes = []
+    for c in record.checks:
+        why = refusal(c, record.reference_ute, record.limit)
+        changes.append({"field": c.change.field, "value": float(c.change.value),
+                        "text": c.change.text, "other": getattr(c.change, "other", ""),
+                        **kept(unloaded_te_pp_urad=c.ute, ease_off_um=c.span,
+                               valid_share=c.valid, cpu_seconds=c.seconds),
+                        "failed": c.failed, "refused": why or ""})
+    return {"note": "informational (contact.optimize.remedy_check): each contact-ratio "
+                    "remedy ltca synthesize's note offers, checked by one synthesis at the "
+                    "written prescriptions before it is offered (refused: not offered, with "
+                    "why); ltca run's next step reads it",
+            "limit_urad": float(record.limit),
+            **kept(unloaded_te_pp_urad=record.reference_ute,
+                   ease_off_um=record.reference_span),
+            "cpu_seconds": round(sum(c.seconds for c in record.checks), 1),
+            "change": changes}
+
+
+def read_record(extra) -> RemedyRecord | None:
+    """The :class:`RemedyRecord` a case's :data:`RECORD_TABLE` table holds; None where the
+    case has none (not written by ``ltca synthesize``, or no contact ratio was low) or it
+    cannot be read (said in the log).
+
+    Parameters
+    ----------
+    extra : mapping
+        The case's other tables (``geometry.case.Case.extra``).
+    """
+    from contact.load_capacity.iso10300.face_contact import RatioChange
+
+    table = extra.get(RECORD_TABLE) if hasattr(extra, "get") else None
+    if not hasattr(table, "get"):
+        return None
+    try:
+        checks = tuple(
+            ChangeCheck(RatioChange(str(c["field"]), float(c["value"]), {}, str(c["text"]),
+                                    str(c.get("other", ""))),
+                        float(c.get("unloaded_te_pp_urad", math.nan)),
+                        float(c.get("ease_off_um", math.nan)),
+                        float(c.get("valid_share", 0.0)), str(c.get("failed", "")),
+                        float(c.get("cpu_seconds", 0.0)))
+            for c in table.get("change", ()))
+        return RemedyRecord(checks, float(table.get("unloaded_te_pp_urad", math.nan)),
+                            float(table.get("ease_off_um", math.nan)),
+                            float(table["limit_urad"]))
+    except (KeyError, TypeError, ValueError) as exc:
+        log.info("the case's %s table not read: %s", RECORD_TABLE, exc)
+        return None
+
+
+def recorded_judge(record: RemedyRecord):
+    """The judge (:func:`contact.load_capacity.iso10300.face_contact.low_ratio_text`'s
+    ``judge``) that says each remedy as the checks ``record`` holds say it: the same
+    sentence ``ltca synthesize``'s note printed (:func:`checked_remedy_text`), refused
+    changes not offered; a ratio whose changes the record does not hold, as unchecked
+    equals (the plain sentence) with that said. The record's changes of the same contact
+    ratio are said, whatever changes the case's own design data give (the note's).
+
+    Parameters
+    ----------
+    record : RemedyRecord
+
+    Returns
+    -------
+    callable
+        ``judge(changes, target, none) -> str``.
+    """
+    def judge(changes, target, none):
+        ratios = {_RATIO_OF.get(c.field, c.field) for c in changes}
+        mine = [c for c in record.checks
+                if _RATIO_OF.get(c.change.field, c.change.field) in ratios]
+        if mine:
+            return checked_remedy_text(mine, target, none, record.reference_ute,
+                                       record.limit)
+        ways = [c.text for c in changes]
+        return (" or ".join(ways) + (", the other kept," if len(ways) > 1 else "")
+                + f" reaches {target:g} (not checked by a synthesis: the case records no "
+                "check of it)")
+
+    return judge
+
+
+class LteDiagnosis(NamedTuple):
+    """What sets a written flank's LTE where it exceeds the verdict's limit and a contact
+    ratio is low (:func:`lte_diagnosis`)."""
+
+    cause: str  # "unloaded_te" or "contact_ratios"
+    text: str
+
+
+#: what a higher contact ratio is, where the unloaded TE is not what the LTE is: a trial
+#: (docs/own_gear_set.md, "The overlap change is a trial")
+RATIO_TRIAL_TEXT = ("a higher contact ratio is the lever left, and the change that takes it "
+                    "to its limit is a trial: whether it lowers the LTE is not estimated from "
+                    "the basic data, the LTE is the bearing developed on the new blank "
+                    "(measured: a 21x29 at beta_m 35 -> 38.5 deg 135/93 -> 46/47 urad, an "
+                    "18x27 at 35 -> 39.5 deg 80 -> 81 urad, a 15x31 at 40 -> 46.3 deg 99 -> 64 "
+                    "urad at its design torque; docs/own_gear_set.md, 'The overlap change is "
+                    "a trial')")
+
+
+def lte_diagnosis(lte: Sequence[float], limit: float,
+                  written: tuple[float, float] | None,
+                  prescriptions: Any = None) -> LteDiagnosis:
+    """What sets the written drive flank's LTE, said the same way by ``ltca synthesize``'s
+    note (:func:`contact.commands.synthesize.reach_text`) and ``ltca run``'s next step
+    (:func:`contact.commands.next_steps.overlap_lines`): its unloaded TE
+    (:func:`ute_sets_lte`, :func:`ute_lte_text`) or, else, the low contact ratios, whose
+    change is a trial (:data:`RATIO_TRIAL_TEXT`).
+
+    Parameters
+    ----------
+    lte : sequence of float — [µrad]
+        The flank's LTE p-p at (light, design) torque.
+    limit : float — [µrad]
+        The verdict's LTE limit.
+    written : (float, float) or None
+        The written drive flank's unloaded TE p-p [µrad] and ease-off span [µm]
+        (:func:`unloaded_te_pp`; ``ltca run``: as the case records it); None: not known.
+    prescriptions : mapping, optional
+        The drive prescriptions the development wrote (its best design's values; the case's
+        ``[development] prescriptions``): ``te_level`` [µrad], the level prescribed on
+        purpose (:func:`ute_sets_lte`), and the path angle, ellipse length and TE level
+        named in the statement.
+
+    Returns
+    -------
+    LteDiagnosis
+        ``cause`` "unloaded_te" with :func:`ute_lte_text`'s statement, or
+        "contact_ratios" with :data:`RATIO_TRIAL_TEXT`.
+    """
+    values = prescriptions if hasattr(prescriptions, "get") else {}
+    try:
+        prescribed = float(values.get("te_level", math.nan))
+    except (TypeError, ValueError):
+        prescribed = math.nan
+    if written is not None and ute_sets_lte(written[0], lte, limit, prescribed):
+        named = ", ".join(f"{k} {float(values[k]):.3g}" for k in
+                          ("path_angle", "ellipse_length", "te_level") if k in values)
+        return LteDiagnosis("unloaded_te", ute_lte_text(written[0], written[1], lte, limit,
+                                                        named))
+    return LteDiagnosis("contact_ratios", RATIO_TRIAL_TEXT)

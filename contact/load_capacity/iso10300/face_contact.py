@@ -29,6 +29,7 @@ them (``ltca run``'s ``lte`` finding, issue 71).
 Public functions
 ----------------
 overlap_remedy     ε_vβ of a design and the b2, β_m that reach the target
+overlap_changes    those as basic-file changes (RatioChange), as the note prints them
 overlap_text       that as a sentence, or None where ε_vβ meets the target
 profile_remedy     ε_vα of a design and the k_d, α_dD that reach the target
 profile_changes    those as basic-file changes (RatioChange), as the note prints them
@@ -44,8 +45,8 @@ from dataclasses import dataclass
 
 __all__ = ["FACE_CONTACT_RATIO_MIN", "FACE_WIDTH_LIMIT", "PROFILE_CONTACT_RATIO_MIN",
            "OverlapRemedy", "ProfileRemedy", "RatioChange", "loaded_ratio_text",
-           "low_ratio_text", "overlap_remedy", "overlap_text", "profile_changes",
-           "profile_remedy"]
+           "low_ratio_text", "overlap_changes", "overlap_remedy", "overlap_text",
+           "profile_changes", "profile_remedy"]
 
 #: the least face contact ratio ε_vβ bevel-gear design practice asks for (AGMA 2005-D03,
 #: face contact ratio m_F); below it ``ltca synthesize`` adds a note and the LTE-spread
@@ -222,7 +223,42 @@ def _profile_after(design, **change) -> str:
            f"{PROFILE_CONTACT_RATIO_MIN:g}"
 
 
-def overlap_text(design, target: float = FACE_CONTACT_RATIO_MIN) -> str | None:
+def overlap_changes(r: OverlapRemedy, design) -> list[RatioChange]:
+    """The basic-file changes of an :class:`OverlapRemedy` that reach its target, as the
+    note prints them: the gear face width rounded up to 0.1 mm, the mean spiral angle up to
+    0.1° (each then reaches the target), each saying where it takes the profile contact
+    ratio below :data:`PROFILE_CONTACT_RATIO_MIN` (its ``other``).
+
+    Parameters
+    ----------
+    r : OverlapRemedy
+    design : geometry.iso23509.design_data.BevelGearDesign
+        The design ``r`` is of (for ε_vα after each change).
+
+    Returns
+    -------
+    list of RatioChange
+        The face width's change first, then the spiral angle's; a change that no value
+        within the tried range makes is left out (empty where neither).
+    """
+    ways = []
+    if math.isfinite(r.b2_needed):
+        b2 = math.ceil(r.b2_needed * 10) / 10
+        over = (f", above the usual {FACE_WIDTH_LIMIT:g} R_e2 = {r.b2_limit:.1f} mm"
+                if r.b2_needed > r.b2_limit else "")
+        other = _profile_after(design, b2=b2)
+        ways.append(RatioChange("b2", b2, {"b2": b2}, f"a gear face width b2 of {b2:.1f} mm"
+                                f"{over} (now {r.b2:g}{other})", other.lstrip("; ")))
+    if math.isfinite(r.beta_m_needed):
+        beta = math.ceil(r.beta_m_needed * 10) / 10
+        other = _profile_after(design, beta_m=math.radians(beta))
+        ways.append(RatioChange("beta_m", beta, {"beta_m": math.radians(beta)},
+                                f"a mean spiral angle beta_m of {beta:.1f} deg (now "
+                                f"{r.beta_m:g}{other})", other.lstrip("; ")))
+    return ways
+
+
+def overlap_text(design, target: float = FACE_CONTACT_RATIO_MIN, judge=None) -> str | None:
     """The cause and the remedy of a low face contact ratio in one sentence (``ltca
     synthesize``'s note, the LTE-spread next step of ``ltca run`` and ``ltca duty-cycle``);
     None where ε_vβ meets ``target`` or the blank cannot be computed.
@@ -232,6 +268,11 @@ def overlap_text(design, target: float = FACE_CONTACT_RATIO_MIN) -> str | None:
     design : geometry.iso23509.design_data.BevelGearDesign
     target : float — [1]
         Default :data:`FACE_CONTACT_RATIO_MIN`.
+    judge : callable, optional
+        ``judge(changes, target, none) -> str``: the end of the sentence from the
+        :class:`RatioChange` list (:func:`overlap_changes`), where each change is checked
+        before it is offered (:func:`low_ratio_text`); by default they are offered as
+        equals.
 
     Returns
     -------
@@ -249,19 +290,10 @@ def overlap_text(design, target: float = FACE_CONTACT_RATIO_MIN) -> str | None:
         return None
     if r.eps_vb >= r.target:
         return None
-    ways = []
-    if math.isfinite(r.b2_needed):
-        b2 = math.ceil(r.b2_needed * 10) / 10
-        over = (f", above the usual {FACE_WIDTH_LIMIT:g} R_e2 = {r.b2_limit:.1f} mm"
-                if r.b2_needed > r.b2_limit else "")
-        ways.append(f"a gear face width b2 of {b2:.1f} mm{over} (now {r.b2:g}"
-                    f"{_profile_after(design, b2=b2)})")
-    if math.isfinite(r.beta_m_needed):
-        beta = math.ceil(r.beta_m_needed * 10) / 10
-        ways.append(f"a mean spiral angle beta_m of {beta:.1f} deg (now {r.beta_m:g}"
-                    f"{_profile_after(design, beta_m=math.radians(beta))})")
-    remedy = _either(ways, r.target, "no face width up to R_e2/2 nor spiral angle up to 50 "
-                     "deg")
+    changes = overlap_changes(r, design)
+    none = "no face width up to R_e2/2 nor spiral angle up to 50 deg"
+    remedy = (judge(changes, r.target, none) if judge is not None and changes
+              else _either([c.text for c in changes], r.target, none))
     return (f"face contact ratio eps_vb {_below(r.eps_vb, r.target)} is below {r.target:g}, "
             "the least "
             "bevel-gear design practice asks for (AGMA 2005-D03): a localised bearing then "
@@ -389,8 +421,8 @@ class RatioChange:
     Attributes
     ----------
     field : str
-        The ``[design]`` field changed (``"k_d"``, ``"alpha_dD"``).
-    value : float — [file unit: 1, deg]
+        The ``[design]`` field changed (``"k_d"``, ``"alpha_dD"``, ``"b2"``, ``"beta_m"``).
+    value : float — [file unit: 1, deg, mm]
         Its new value as the basic file gives it (rounded as the note prints it).
     design : dict of str to float
         The same change as :class:`~geometry.iso23509.design_data.BevelGearDesign`
@@ -398,12 +430,18 @@ class RatioChange:
     text : str
         The phrase the note prints, e.g. "a depth factor k_d of 2.16, above the usual 2
         (now 2)".
+    other : str
+        Where the change takes the other contact ratio below its limit, that said (e.g.
+        "eps_va then 0.98, below 1": a larger spiral angle lowers ε_vα); "" otherwise. A
+        checked remedy that does so is offered after one that does not
+        (:func:`contact.optimize.remedy_check.ranked_changes`).
     """
 
     field: str
     value: float
     design: dict
     text: str
+    other: str = ""
 
 
 def profile_changes(r: ProfileRemedy) -> list[RatioChange]:
@@ -465,11 +503,12 @@ def low_ratio_text(design, face_target: float = FACE_CONTACT_RATIO_MIN,
     face_target, profile_target : float — [1]
         Defaults :data:`FACE_CONTACT_RATIO_MIN`, :data:`PROFILE_CONTACT_RATIO_MIN`.
     judge : callable, optional
-        ``judge(changes, target, none) -> str``: the end of the profile remedy's sentence
-        from its :class:`RatioChange` list (:func:`profile_changes`), the target and the
-        phrase for none, where each change is checked before it is offered (``ltca
-        synthesize``: :func:`contact.optimize.remedy_check.checked_remedy_text`); by
-        default the changes are offered as equals ("… or …, the other kept, reaches 1").
+        ``judge(changes, target, none) -> str``: the end of each remedy's sentence from
+        its :class:`RatioChange` list (:func:`overlap_changes`, :func:`profile_changes`),
+        the target and the phrase for none, where each change is checked before it is
+        offered (``ltca synthesize``: :func:`contact.optimize.remedy_check.
+        checked_remedy_text`; ``ltca run``: the checks the case records); by default the
+        changes are offered as equals ("… or …, the other kept, reaches 1").
 
     Returns
     -------
@@ -481,7 +520,7 @@ def low_ratio_text(design, face_target: float = FACE_CONTACT_RATIO_MIN,
     from geometry.core.errors import InputError
 
     parts = []
-    face = overlap_text(design, face_target)
+    face = overlap_text(design, face_target, judge)
     if face is not None:
         parts.append(face)
     try:
