@@ -604,7 +604,9 @@ def fill_missing(values: np.ndarray, valid: np.ndarray) -> np.ndarray:
     Each pass fills the invalid nodes next to valid ones, with the mean over the four grid
     directions of the linear continuation of the two nearest valid nodes (2 a₁ − a₂), or
     of the nearest one where only it is valid; passes repeat until every node is filled
-    or none can be.
+    or none can be. A pass reads each direction's neighbours through shifted views of the
+    grid, the fields first (the same sums, bit for bit, as the rolled copies of the grid
+    it read before: ~2× faster on the ease-off's 41 × 21 grids, issue 75).
 
     Parameters
     ----------
@@ -629,6 +631,50 @@ def fill_missing(values: np.ndarray, valid: np.ndarray) -> np.ndarray:
     have = np.array(valid, dtype=bool)
     if not have.any():
         raise InputError("valid: must hold at least one valid node, got none")
+    if have.ndim != 2 or out.shape[:2] != have.shape:
+        return _fill_missing_rolled(out, have)
+    nu, nv = have.shape
+    # the fields first, the grid last (T, nu, nv): the masks broadcast over the fields
+    # and each product runs along the grid's rows
+    grid = np.moveaxis(out.reshape(nu, nv, -1), 2, 0).copy()
+    # each direction's continuation reaches the nodes two beyond the grid's edge on its
+    # side: the node, its nearest neighbour a₁ and the next a₂, as three shifted views
+    # (the nodes nearer the edge take nothing from that side)
+    views = []
+    for axis, n in ((0, nu), (1, nv)):
+        for step in (1, -1):
+            if n < 3:
+                continue
+            at, n1, n2 = ((slice(2, None), slice(1, -1), slice(0, -2)) if step == 1
+                          else (slice(0, -2), slice(1, -1), slice(2, None)))
+            views.append(tuple((slice(None),) * axis + (k,) for k in (at, n1, n2)))
+    with np.errstate(invalid="ignore", over="ignore"):
+        while not have.all():
+            acc = np.zeros(grid.shape)
+            cnt = np.zeros(have.shape)
+            for at, n1, n2 in views:
+                lack, h1, h2 = ~have[at], have[n1], have[n2]
+                two = lack & h1 & h2
+                one = lack & h1 & ~h2
+                a1, a2 = grid[(slice(None), *n1)], grid[(slice(None), *n2)]
+                acc_at = acc[(slice(None), *at)]
+                # (the sums of the selected nodes alone, in the same order: as boolean
+                # indexing wrote them; an unfilled node's value is never read)
+                np.add(acc_at, 2 * a1 - a2, out=acc_at, where=two)
+                np.add(acc_at, a1, out=acc_at, where=one)
+                cnt_at = cnt[at]
+                np.add(cnt_at, 1.0, out=cnt_at, where=two | one)
+            new = ~have & (cnt > 0)
+            if not new.any():
+                break
+            grid[:, new] = acc[:, new] / cnt[new]
+            have = have | new
+    return np.ascontiguousarray(np.moveaxis(grid, 0, 2)).reshape(out.shape)
+
+
+def _fill_missing_rolled(out: np.ndarray, have: np.ndarray) -> np.ndarray:
+    """:func:`fill_missing`'s passes by rolled copies of the grid (the general path: a
+    mask that is not the field's first two axes)."""
     trail = (1,) * (out.ndim - have.ndim)
     while not have.all():
         acc = np.zeros(out.shape)
