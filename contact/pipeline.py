@@ -216,8 +216,9 @@ def _case_as_run(case: Same, point):
     """``dataclasses.replace(case.obj, operating=point)``, the same object for the same
     case object and operating point: the case as run keeps its TOML text and teeth key
     (made once per case object, ~0.5 ms each), so an analysis repeated at the same
-    torques does not make them again (issue 75)."""
-    return dataclasses.replace(case.obj, operating=point)
+    torques does not make them again (issue 75); its teeth key is the case's
+    (:meth:`~geometry.case.Case.replaced`: a study's points share the study case's)."""
+    return case.obj.replaced(operating=point)
 
 
 def check_analysis_arguments(case, torque, misalignment, flank, options, **flags) -> None:
@@ -507,7 +508,7 @@ def run_analysis(
                              progress=progress, theoretical=theoretical, **flags)
     c = catalogue.resolve_case(case)
     if misalignment is not None:
-        c = dataclasses.replace(c, misalignment=misalignment)
+        c = c.replaced(misalignment=misalignment)
     fe_options = None
     if root_stress not in (None, False, True):
         from contact.compliance.fe import FEOptions

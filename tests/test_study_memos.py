@@ -54,6 +54,22 @@ def test_teeth_alone_are_solved_once_per_process_and_change_nothing(case):
     assert not np.allclose(np.nan_to_num(a.ease_off_angle), np.nan_to_num(b.ease_off_angle))
 
 
+def test_replaced_case_carries_the_teeth_key_only_where_the_teeth_stay(case):
+    """Case.replaced (a study's points, the case as run): a new misalignment, operating
+    point or deviations carry the case's teeth key, the same object and equal to the key
+    the new case would make from its repr; a change of the teeth makes its own."""
+    mis = case.replaced(misalignment=Misalignment(delta_E=0.07, delta_G=-0.02))
+    run = mis.replaced(operating=dataclasses.replace(case.operating, torque=(321.0,)))
+    assert mis.misalignment == Misalignment(delta_E=0.07, delta_G=-0.02)
+    assert mis.teeth_key() is case.teeth_key() and run.teeth_key() is case.teeth_key()
+    fresh = dataclasses.replace(run)  # a new object: its key made from its repr
+    assert fresh.teeth_key() is not case.teeth_key()
+    assert fresh.teeth_key() == run.teeth_key()
+    assert fresh.teeth_key().text == run.teeth_key().text
+    other = case.replaced(name="other teeth")
+    assert other.teeth_key() != case.teeth_key()
+
+
 def test_an_ease_off_is_computed_once_per_teeth_and_misalignment(case):
     """The ease-off of the same teeth, misalignment and flank (a torque series in one
     process, an analysis repeated) is computed once: the same object, its arrays

@@ -182,6 +182,35 @@ def test_spline_interpolation_error_between_nodes():
     assert err.max() < 0.5e-6
 
 
+def test_fill_missing_linear_field_and_rolled_passes():
+    """fill_missing continues a linear field exactly (each filled node the mean of
+    two-point continuations 2 a₁ − a₂, exact on integers), and its shifted-view passes
+    (issue 75) give bit for bit what the passes over rolled copies of the grid gave (kept
+    as its general path): random masks, two and three fields at once, grids of 1 to 11
+    nodes a side, unfilled nodes NaN, inf or ±0."""
+    from contact.utca.conjugate_map import _fill_missing_rolled, fill_missing
+
+    ii, jj = np.meshgrid(np.arange(9.0), np.arange(7.0), indexing="ij")
+    lin = 3.0 + 2.0 * ii - jj
+    have = np.zeros(lin.shape, bool)
+    have[3:6, 2:5] = True
+    got = fill_missing(np.where(have, lin, np.nan), have)
+    assert np.array_equal(got, lin)
+    rng = np.random.default_rng(75)
+    for t in range(600):
+        nu, nv = (int(x) for x in rng.integers(1, 12, 2))
+        vals = rng.standard_normal((nu, nv, *[(), (2,), (3, 2)][t % 3]))
+        ok = rng.random((nu, nv)) < rng.uniform(0.05, 0.9)
+        ok[rng.integers(nu), rng.integers(nv)] = True
+        vals[~ok] = rng.choice([np.nan, np.inf, 0.0, -0.0])
+        with np.errstate(invalid="ignore", over="ignore"):
+            ref = _fill_missing_rolled(vals.copy(), ok.copy())
+        out = fill_missing(vals, ok)
+        assert out.shape == ref.shape
+        assert np.array_equal(out, ref, equal_nan=True)
+        assert np.array_equal(np.signbit(out), np.signbit(ref))
+
+
 def _mean_contact_u(mis):
     """Lengthwise place (gear u, toe 0 → heel 1) of the contact at the lowest UTE."""
     eo = _easeoff(mis)

@@ -45,8 +45,9 @@ def _spline(eo: EaseOff, field: np.ndarray) -> RectBivariateSpline:
 
 def pinion_curvature(case, eo: EaseOff, u, v, w_gear, phi):
     """Normal curvature [1/mm] of the real pinion, at the mates of gear places (u, v),
-    along gear-frame directions ``w_gear`` (..., 3), the pinion turned by φ [rad] and the
-    gear at its ideal rotation (the directions are carried to the pinion frame).
+    along gear-frame directions ``w_gear`` (..., 3), the pinion turned by φ [rad] (any
+    shape that broadcasts against ``u``: one per curve, for instance) and the gear at its
+    ideal rotation (the directions are carried to the pinion frame).
 
     Notes
     -----
@@ -58,7 +59,7 @@ def pinion_curvature(case, eo: EaseOff, u, v, w_gear, phi):
                   _spline(eo, eo.pinion_radius).ev(u, v),
                   guess=_node_guess(eo, eo.pinion_parameters, eo.pinion_section, u, v))
     w_pair = gear_to_pair(kin, eo.gear_phase - phi / eo.ratio, w_gear, vec=True)
-    w_p = rotate_about_axis(kin.pinion_axis, -np.broadcast_to(phi, u.shape), w_pair) @ \
+    w_p = rotate_about_axis(kin.pinion_axis, np.broadcast_to(-phi, u.shape), w_pair) @ \
         kin.pinion_place[:3, :3]
     return normal_curvature(ps.kappa1, ps.kappa2, ps.dir1, w_p)
 

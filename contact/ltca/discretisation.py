@@ -191,7 +191,7 @@ def blank_measure(case, kin, member: str, points_pair: np.ndarray,
     """
     axis, origin = getattr(kin, f"{member}_axis"), getattr(kin, f"{member}_origin")
     place = getattr(kin, f"{member}_place")[:3, :3]
-    x = rotate_about_axis(axis, -np.broadcast_to(turn[..., None], points_pair.shape[:-1]),
+    x = rotate_about_axis(axis, np.broadcast_to(-turn[..., None], points_pair.shape[:-1]),
                 points_pair - origin) @ place
     fu, fv = projection_fractions(blank_outline(case.member(member).blank).corners, x[..., 2],
                         np.hypot(x[..., 0], x[..., 1]))

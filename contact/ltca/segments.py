@@ -398,7 +398,9 @@ def _curve_r_eq(case, eo: EaseOff, u, v, pos_g, nrm_g, tangent, phi) -> np.ndarr
         # across-line direction w = n × t in the gear frame (carried to the pinion frame
         # at each curve's pinion rotation)
         w_g = np.nan_to_num(np.cross(nrm_g, tangent)).reshape(J * K, S, 3)[rows]
-        phi_r = np.broadcast_to(phi[..., None], u.shape).reshape(J * K, S)[rows]
+        # (one rotation a curve, broadcast along its segments: its trigonometry taken
+        # once, geometry.pair.assembly.rotate_about_axis)
+        phi_r = phi.reshape(J * K)[rows][:, None]
         kg = gear_curvature(case, eo, pg, w_g)
         kp = pinion_curvature(case, eo, uu, vv, w_g, phi_r)
         krel = np.where(okc, kp + kg, np.nan)

@@ -140,8 +140,7 @@ def analyse_point(shared: StudyInputs, index: int, point: Mapping[str, float]) -
         # compliance's stores of mapped points and columns would keep nothing it reads
         with rows_not_kept():
             tree = run_analysis(
-                dataclasses.replace(case,
-                                    misalignment=misalignment_of(case.misalignment, point)),
+                case.replaced(misalignment=misalignment_of(case.misalignment, point)),
                 list(shared.torque), flank=shared.flank, options=shared.options,
                 deviations=shared.deviations_at(point.get("deviation_scale")),
                 theoretical=False,

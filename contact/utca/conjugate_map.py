@@ -44,7 +44,7 @@ from geometry.core.kernels import kernels_module
 from geometry.machine.curvature import surface_curvatures
 from geometry.machine.cutter import working_sections
 from geometry.machine.flank import FlankSurface, blank_outline, flank_surface
-from geometry.machine.meshing import solve_envelope, warm_seeds_active
+from geometry.machine.meshing import envelope_family, solve_envelope, warm_seeds_active
 
 if TYPE_CHECKING:
     from geometry.case import Case
@@ -117,18 +117,22 @@ class Mates(NamedTuple):
     good: np.ndarray  # generated and on the surface of action
     conjugate: np.ndarray  # conjugate-gear point (gear frame, ψ₀ = 0)
     image: np.ndarray  # (..., 2) its (z, ρ) on the gear projection plane
-    kappa1: np.ndarray  # [1/mm] pinion principal curvatures and direction (pinion frame)
-    kappa2: np.ndarray
-    dir1: np.ndarray
+    # [1/mm] pinion principal curvatures and direction (pinion frame); None in the
+    # placement's trial mates (:func:`_with_curvatures` adds them to the placed ones)
+    kappa1: np.ndarray | None
+    kappa2: np.ndarray | None
+    dir1: np.ndarray | None
     section: np.ndarray  # blade section that generates the pinion point
     params: np.ndarray  # (..., 3) its envelope parameters (s, θ, q) [mm, rad, rad]
 
 
-def _pinion_points(case: Case, flank: str, z, rho, guess=None):
+def _pinion_points(case: Case, flank: str, z, rho, guess=None, curvatures: bool = True):
     """Real pinion surface at projection-plane places: position, normal, reason, curvatures.
 
     ``guess`` (params (..., 3), section) from nearby earlier points starts the envelope solver
     (:func:`geometry.machine.meshing.solve_envelope`) there instead of at its seed search.
+    ``curvatures=False``: κ₁, κ₂ and e₁ are None (the placement's trial places: only the
+    placed mates' are read, :func:`_with_curvatures`).
     """
     mem = case.pinion
     tool = mem.flank(flank)
@@ -139,23 +143,66 @@ def _pinion_points(case: Case, flank: str, z, rho, guess=None):
     sol = solve_envelope(tool.blade, tool.machine, z, rho, length_scale=bl.outer_cone_distance,
                          depth=bl.outer_addendum + bl.outer_dedendum, guess=guess)
     mirror = _MIRROR if mem.hand == "left" else np.ones(3)
+    k1 = k2 = e1 = None
+    if curvatures:
+        k1, k2, e1 = _curvatures_of(case, flank, sol.family)
+    return (sol.position * mirror, sol.normal * mirror, sol.reason, k1, k2, e1, sol.section,
+            np.stack([sol.s, sol.theta, sol.q], -1))
+
+
+def _curvatures_of(case: Case, flank: str, family):
+    """κ₁, κ₂ [1/mm] and e₁ (mirrored into the pinion frame) of the pinion's generated
+    surface (:func:`geometry.machine.curvature.surface_curvatures`) of ``family``."""
+    mem = case.pinion
+    tool = mem.flank(flank)
     with np.errstate(invalid="ignore", divide="ignore"):
-        pc = surface_curvatures(sol.family, tool.machine.process == "Generate",
-                                bl.outer_cone_distance)
-    return (sol.position * mirror, sol.normal * mirror, sol.reason, pc.kappa1, pc.kappa2,
-            pc.dir1 * mirror, sol.section, np.stack([sol.s, sol.theta, sol.q], -1))
+        pc = surface_curvatures(family, tool.machine.process == "Generate",
+                                mem.blank.outer_cone_distance)
+    mirror = _MIRROR if mem.hand == "left" else np.ones(3)
+    return pc.kappa1, pc.kappa2, pc.dir1 * mirror
+
+
+def _with_curvatures(case: Case, flank: str, mates: Mates) -> Mates:
+    """``mates`` (flat (n,)) with the pinion curvatures at their places.
+
+    The family is evaluated at the mates' envelope parameters and blade sections
+    (:func:`geometry.machine.meshing.envelope_family`: the buffer the envelope solve gave
+    at them, bit for bit), so the curvatures are those a solve with curvatures gives its
+    valid points; where a mate has no solution (NaN parameters) they are NaN. The
+    placement's trial places (~4 a node) need none: only the placed mates' are read
+    (issue 75: ~4 ms a study point)."""
+    mem = case.pinion
+    tool = mem.flank(flank)
+    par = mates.params
+    fin = np.isfinite(par).all(axis=-1)
+    k1, k2 = np.full(fin.shape, np.nan), np.full(fin.shape, np.nan)
+    e1 = np.full(par.shape, np.nan)
+    if fin.any():
+        p = par[fin]
+        fam = envelope_family(tool.blade, tool.machine, p[:, 0], p[:, 1], p[:, 2],
+                              mates.section[fin], length_scale=mem.blank.outer_cone_distance)
+        k1[fin], k2[fin], e1[fin] = _curvatures_of(case, flank, fam)
+    return mates._replace(kappa1=k1, kappa2=k2, dir1=e1)
+
+
+def _take(mates: Mates, sel) -> Mates:
+    """The mates ``sel`` (an index or mask of the first axis; fields without curvatures
+    stay None)."""
+    return Mates(*(None if a is None else np.asarray(a)[sel] for a in mates))
 
 
 def _mates(case: Case, flank: str, kin: MeshKinematics, corners, u, v, *, branch=None,
-           reference=None, guess=None, points=None) -> tuple[Mates, int]:
+           reference=None, guess=None, points=None, curvatures: bool = True
+           ) -> tuple[Mates, int]:
     """Evaluate the real pinion at fractions (u, v) and map it through the action surface.
 
     ``guess``: (params, section) of nearby pinion points, see :func:`_pinion_points`;
-    ``points``: those pinion points already computed (:func:`_pinion_points` at (u, v)).
+    ``points``: those pinion points already computed (:func:`_pinion_points` at (u, v));
+    ``curvatures``: as :func:`_pinion_points`'.
     """
     z, rho = _bilinear(corners, u, v)
     if points is None:
-        points = _pinion_points(case, flank, z, rho, guess)
+        points = _pinion_points(case, flank, z, rho, guess, curvatures)
     pos, nrm, reason, k1, k2, e1, sec, par = points
     roll, branch = action_roll_angle(kin, pos, nrm, branch=branch, reference=reference)
     good = (reason == 0) & np.isfinite(roll)
@@ -199,9 +246,10 @@ class _ForwardMap:
     image: SplineGroup
 
     def mates(self, u, v, guess) -> Mates:
-        """Mates at the fractions (u, v), the envelope solver started at ``guess``."""
+        """Mates at the fractions (u, v), the envelope solver started at ``guess``; without
+        curvatures (the placement's trial places, :func:`_with_curvatures`)."""
         m, _ = _mates(self.case, self.flank, self.kin, self.corners, u, v, branch=self.branch,
-                      guess=guess)
+                      guess=guess, curvatures=False)
         return m
 
     def jacobian(self, u, v) -> np.ndarray:
@@ -235,7 +283,8 @@ class _Placement:
     def accept(self, idx: np.ndarray, mates: Mates, u: np.ndarray, v: np.ndarray) -> None:
         """Move the nodes ``idx`` to the places (u, v) of their new ``mates``."""
         for full, part in zip(self.mates, mates, strict=True):
-            full[idx] = part
+            if full is not None:
+                full[idx] = part
         self.error[idx] = _placement_error(self.target[idx], mates)
         self.u[idx], self.v[idx] = u, v
 
@@ -461,7 +510,8 @@ def _exact_start(fm: _ForwardMap, u: np.ndarray, v: np.ndarray, zt: np.ndarray,
     iu = np.clip(np.rint((u - fm.u[0]) / (fm.u[1] - fm.u[0])), 0, len(fm.u) - 1).astype(int)
     iv = np.clip(np.rint((v - fm.v[0]) / (fm.v[1] - fm.v[0])), 0, len(fm.v) - 1).astype(int)
     m0 = fm.mates(u, v, guess=(fm.nodes.params[iu, iv], fm.nodes.section[iu, iv]))
-    flat = Mates(*(np.array(a).reshape(n, *np.shape(a)[zt.ndim:]) for a in m0))
+    flat = Mates(*(None if a is None else np.array(a).reshape(n, *np.shape(a)[zt.ndim:])
+                   for a in m0))
     uf, vf = u.ravel().copy(), v.ravel().copy()
     target = np.stack([zt, rt], -1).reshape(n, 2)
     return _Placement(flat, uf, vf, target, fm.jacobian(uf, vf),
@@ -476,7 +526,7 @@ def _mates_with_jacobian(fm: _ForwardMap, u: np.ndarray, v: np.ndarray, guess):
     params, section = guess
     m3 = fm.mates(np.r_[u, u + h, u], np.r_[v, v, v + h],
                   guess=(np.tile(params, (3, 1)), np.tile(section, 3)))
-    at, du, dv = (Mates(*(np.asarray(a)[i * k:(i + 1) * k] for a in m3)) for i in range(3))
+    at, du, dv = (_take(m3, slice(i * k, (i + 1) * k)) for i in range(3))
     ok = at.good & du.good & dv.good
     return at, np.stack([(du.image - at.image) / h, (dv.image - at.image) / h], -1), ok
 
@@ -519,8 +569,7 @@ def _place_exactly(fm: _ForwardMap, st: _Placement) -> None:
         if j_fd is not None:
             jac = np.where((better & ok_fd)[:, None, None], j_fd, jac)
         st.jacobian[idx] = jac
-        st.accept(idx[better], Mates(*(np.asarray(a)[better] for a in mm)), un[better],
-                  vn[better])
+        st.accept(idx[better], _take(mm, better), un[better], vn[better])
         st.error[idx[~mm.good]] = np.inf
         log.debug("map iteration: %d of %d nodes placed", int((st.error < _MAP_TOL).sum()),
                   st.error.size)
@@ -540,10 +589,11 @@ def map_gear_nodes(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray,
     st = _exact_start(fm, u, v, zt, rt)
     _place_exactly(fm, st)
     shape = zt.shape
+    mates = _with_curvatures(case, pf, st.mates)
     u, v = st.u.reshape(shape), st.v.reshape(shape)
     pinned = (np.isclose(u, fm.u[0]) | np.isclose(u, fm.u[-1]) | np.isclose(v, fm.v[0])
               | np.isclose(v, fm.v[-1]))
-    return GearMates(u, v, Mates(*(a.reshape(shape + a.shape[1:]) for a in st.mates)),
+    return GearMates(u, v, Mates(*(a.reshape(shape + a.shape[1:]) for a in mates)),
                       st.error.reshape(shape), pinned)
 
 
@@ -554,7 +604,9 @@ def fill_missing(values: np.ndarray, valid: np.ndarray) -> np.ndarray:
     Each pass fills the invalid nodes next to valid ones, with the mean over the four grid
     directions of the linear continuation of the two nearest valid nodes (2 a₁ − a₂), or
     of the nearest one where only it is valid; passes repeat until every node is filled
-    or none can be.
+    or none can be. A pass reads each direction's neighbours through shifted views of the
+    grid, the fields first (the same sums, bit for bit, as the rolled copies of the grid
+    it read before: ~2× faster on the ease-off's 41 × 21 grids, issue 75).
 
     Parameters
     ----------
@@ -579,6 +631,50 @@ def fill_missing(values: np.ndarray, valid: np.ndarray) -> np.ndarray:
     have = np.array(valid, dtype=bool)
     if not have.any():
         raise InputError("valid: must hold at least one valid node, got none")
+    if have.ndim != 2 or out.shape[:2] != have.shape:
+        return _fill_missing_rolled(out, have)
+    nu, nv = have.shape
+    # the fields first, the grid last (T, nu, nv): the masks broadcast over the fields
+    # and each product runs along the grid's rows
+    grid = np.moveaxis(out.reshape(nu, nv, -1), 2, 0).copy()
+    # each direction's continuation reaches the nodes two beyond the grid's edge on its
+    # side: the node, its nearest neighbour a₁ and the next a₂, as three shifted views
+    # (the nodes nearer the edge take nothing from that side)
+    views = []
+    for axis, n in ((0, nu), (1, nv)):
+        for step in (1, -1):
+            if n < 3:
+                continue
+            at, n1, n2 = ((slice(2, None), slice(1, -1), slice(0, -2)) if step == 1
+                          else (slice(0, -2), slice(1, -1), slice(2, None)))
+            views.append(tuple((slice(None),) * axis + (k,) for k in (at, n1, n2)))
+    with np.errstate(invalid="ignore", over="ignore"):
+        while not have.all():
+            acc = np.zeros(grid.shape)
+            cnt = np.zeros(have.shape)
+            for at, n1, n2 in views:
+                lack, h1, h2 = ~have[at], have[n1], have[n2]
+                two = lack & h1 & h2
+                one = lack & h1 & ~h2
+                a1, a2 = grid[(slice(None), *n1)], grid[(slice(None), *n2)]
+                acc_at = acc[(slice(None), *at)]
+                # (the sums of the selected nodes alone, in the same order: as boolean
+                # indexing wrote them; an unfilled node's value is never read)
+                np.add(acc_at, 2 * a1 - a2, out=acc_at, where=two)
+                np.add(acc_at, a1, out=acc_at, where=one)
+                cnt_at = cnt[at]
+                np.add(cnt_at, 1.0, out=cnt_at, where=two | one)
+            new = ~have & (cnt > 0)
+            if not new.any():
+                break
+            grid[:, new] = acc[:, new] / cnt[new]
+            have = have | new
+    return np.ascontiguousarray(np.moveaxis(grid, 0, 2)).reshape(out.shape)
+
+
+def _fill_missing_rolled(out: np.ndarray, have: np.ndarray) -> np.ndarray:
+    """:func:`fill_missing`'s passes by rolled copies of the grid (the general path: a
+    mask that is not the field's first two axes)."""
     trail = (1,) * (out.ndim - have.ndim)
     while not have.all():
         acc = np.zeros(out.shape)

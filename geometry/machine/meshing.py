@@ -79,7 +79,8 @@ from geometry.machine.family import (
 if TYPE_CHECKING:
     from scipy.spatial import cKDTree
 
-__all__ = ["REASONS", "EnvelopeSolution", "WarmSeeds", "solve_envelope", "warm_seeds_active"]
+__all__ = ["REASONS", "EnvelopeSolution", "WarmSeeds", "envelope_family", "solve_envelope",
+           "warm_seeds_active"]
 
 log = logging.getLogger(__name__)
 
@@ -1020,6 +1021,60 @@ def _solve_guesses(ctx: _Context, guess, shape: tuple, seed: int, zf, pf, depth:
     far = np.any(np.abs(x[idx] - xg[idx]) > _STEP_LIMIT[:m], axis=-1)
     reason[idx[far]] = 1
     return early
+
+
+def envelope_family(blade: Blade, settings: MachineSettings, s, theta, q, section, *,
+                    length_scale: float, kernels: str | None = None) -> GeneratedFamily:
+    """The generated family r_g and its derivatives at solved envelope parameters, as
+    :func:`solve_envelope` evaluates them at its solution (seed Eq. 2.7a).
+
+    Parameters
+    ----------
+    blade : Blade
+        The blade that cuts this flank.
+    settings : MachineSettings
+        Right-hand reference settings of this flank.
+    s : array_like — [mm]
+        Arc length along the blade edge (:attr:`EnvelopeSolution.s`), any shape.
+    theta : array_like — [rad]
+        Blade angle about the cutter axis, the shape of ``s``.
+    q : array_like — [rad]
+        Cradle rotation (0 in Formate), the shape of ``s``.
+    section : array_like of int
+        Blade section of each point (:attr:`EnvelopeSolution.section`), the shape of ``s``.
+    length_scale : float — [mm]
+        As :func:`solve_envelope`'s (it selects the same solve context).
+    kernels : {"numpy", "numba"}, optional
+        As :func:`solve_envelope`'s.
+
+    Returns
+    -------
+    geometry.machine.family.GeneratedFamily
+        Arrays ``s.shape + (3,)``: bit for bit :attr:`EnvelopeSolution.family` at the same
+        parameters (the same buffer function, point by point), so a caller that needs the
+        family (its curvatures) at a few of many solved points evaluates it there alone.
+
+    Raises
+    ------
+    InputError
+        Where the parameter arrays' shapes differ.
+
+    Notes
+    -----
+    Source: seed §2.2 (Eq. 2.7a, the family of cutter surfaces in the blank frame), through
+    :func:`geometry.machine.family.family_buffer` or its compiled kernel.
+    """
+    s = np.asarray(s, dtype=float)
+    arrays = (np.asarray(theta, dtype=float), np.asarray(q, dtype=float),
+              np.asarray(section, dtype=np.intp))
+    if any(a.shape != s.shape for a in arrays):
+        raise InputError("theta, q, section: must have the shape of s "
+                         f"{s.shape}, got {[a.shape for a in arrays]}")
+    shape = s.shape
+    ctx = _context(blade, settings, length_scale, kernels)
+    buf = _family(ctx, s.ravel(), *(a.ravel() for a in arrays))
+    return GeneratedFamily(*(a.reshape((*shape, 3))
+                             for a in family_views(buf, (s.size,))))
 
 
 def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,

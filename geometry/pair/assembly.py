@@ -276,7 +276,22 @@ def rotate_about_axis(axis: np.ndarray, angle, v: np.ndarray) -> np.ndarray:
     Notes
     -----
     Rodrigues' rotation formula; points about an axis through O: O + R(p − O).
+
+    An ``angle`` of v's leading shape that is a broadcast view (``np.broadcast_to``: one
+    angle per curve for all its points) has its cosine and sine taken once per distinct
+    angle and kept broadcast through the products (the same numbers, element by element;
+    ~4× faster on the LTCA's (rolls, pairs, points) arrays, issue 75).
     """
+    angle = _compact(angle, np.shape(v)[:-1])
     c = np.cos(angle)[..., None]
     s = np.sin(angle)[..., None]
     return v * c + cross(axis, v) * s + axis * (v @ axis)[..., None] * (1.0 - c)
+
+
+def _compact(angle, lead: tuple):
+    """``angle`` with each axis it is broadcast along (stride 0) cut to length 1, where it
+    has the shape ``lead`` (so it still broadcasts to the same result); else itself."""
+    if (type(angle) is np.ndarray and angle.ndim and angle.shape == lead
+            and 0 in angle.strides):
+        return angle[tuple(slice(0, 1) if st == 0 else slice(None) for st in angle.strides)]
+    return angle
