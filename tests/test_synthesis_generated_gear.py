@@ -862,6 +862,15 @@ def test_a_pair_no_gear_process_synthesises_names_every_process_s_reason(monkeyp
             raise InputError(f"{err} (the basic design as given)") from err
     except InputError as outer:
         assert cs.tried_text(outer) == said
+    # an error re-raised "from None" while another was handled (the development's
+    # generated-gear fallback re-raising the Formate gear's): not the handled one's
+    try:
+        try:
+            cs.synthesize(load_basic(MITER))
+        except InputError:
+            raise InputError("the Formate gear's error") from None
+    except InputError as outer:
+        assert cs.tried_text(outer) == ""
     # one process tried (a hypoid's): nothing to add
     monkeypatch.setattr(cs, "gear_processes", lambda basic: ("Formate",))
     with pytest.raises(InputError) as info:

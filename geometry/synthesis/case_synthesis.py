@@ -544,7 +544,7 @@ def tried_text(err: BaseException) -> str:
     ----------
     err : BaseException
         An error raised by :func:`synthesize`, or one raised from it (its ``__cause__``
-        or ``__context__`` chain is followed).
+        chain is followed, and ``__context__`` where not suppressed).
 
     Returns
     -------
@@ -563,7 +563,9 @@ def tried_text(err: BaseException) -> str:
         text = getattr(e, "tried_text", "")
         if text:
             return str(text)
-        e = e.__cause__ or e.__context__
+        # the explicit cause, else the context unless suppressed (``raise … from None``:
+        # the development's generated-gear fallback re-raises the Formate gear's error so)
+        e = e.__cause__ or (None if e.__suppress_context__ else e.__context__)
     return ""
 
 
