@@ -371,3 +371,19 @@ def test_warm_start_from_the_previous_roll_leaves_the_solution_unchanged():
         forces = ds["force"].isel(torque=0, roll=j).values
         stored = forces[ds["in_problem"].isel(torque=0, roll=j).values > 0]
         np.testing.assert_allclose(cold.force, stored, rtol=0, atol=1e-9 * cold.force.max())
+
+
+def test_a_roll_without_a_pair_in_contact_is_said_without_numpys_warning():
+    """``Screening.of`` on segments whose one roll has no pair in contact (every UTE NaN):
+    the InputError, and no "All-NaN slice encountered" RuntimeWarning printed before it
+    (the 12x12 miter of round 17's development trials showed it to the user)."""
+    import types
+    import warnings
+
+    from contact.ltca.screening import Screening
+
+    ute = np.array([[np.nan, 1.0e-4], [np.nan, np.nan]])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(InputError, match="no tooth pair is in contact at some roll"):
+            Screening.of(types.SimpleNamespace(ute=ute), 100.0, 3.0, None)

@@ -119,6 +119,12 @@ def test_the_remedies_that_pass_come_first_lowest_unloaded_te_first():
         checks, 1.0, "none", math.nan, 60.0)
     assert "(no lower than the written case's 80)" in checked_remedy_text(
         [_check(K_D, 90.0)], 1.0, "none", 80.0, 60.0)
+    # "lower" as the printed whole numbers read (the 6x43 at Sigma 80 of round 17 printed
+    # "25 urad (lower than the written case's 25)" for two values 0.5-1 urad apart)
+    assert ("unloaded TE p-p 25 urad (no lower than the written case's 25)"
+            in checked_remedy_text([_check(K_D, 24.6)], 1.0, "none", 25.4, 60.0))
+    assert ("unloaded TE p-p 24 urad (lower than the written case's 25)"
+            in checked_remedy_text([_check(K_D, 24.4)], 1.0, "none", 25.4, 60.0))
     # the 8x35: one offered, the other refused with its number
     checks = [_check(K_D, 609.0, 859.0), _check(ALPHA, 28.0, 60.0)]
     text = checked_remedy_text(checks, 1.0, "none", 137.0, 60.0)

@@ -822,3 +822,57 @@ def test_the_pinion_crown_gears_are_tried_in_order_and_a_relief_error_is_raised(
     with pytest.raises(ReliefError):
         cs.synthesize(basic)
     assert tried == [("Formate", "gear"), ("Generate", "gear")]
+
+
+def test_a_pair_no_gear_process_synthesises_names_every_process_s_reason(monkeypatch):
+    """With the synthesis body replaced by a stub: where every gear process fails (the
+    12x12 miter at beta_m 35 deg of round 17, benchmarks/data/unseen_designs), the error
+    raised is the last try's, of its own class, fields and message, and `tried_text`
+    names each earlier try's reason with its process (its Formate gear's was the telling
+    one), also through an error raised from it (the development's); where one process
+    was tried, there is none."""
+    import geometry.synthesis.case_synthesis as cs
+    from geometry.core.errors import InputError
+    from geometry.machine.relief import ReliefError
+
+    last = "relief: the flank is not generated at its M (mean section)"
+    reasons = {("Formate", "gear"): InputError("synthesis: the working depth does not cross "
+                                               "the surface of action monotonically"),
+               ("Generate", "gear"): InputError("synthesis: the contact near the mean point "
+                                                "could not be followed"),
+               ("Generate", "own"): ReliefError(last, "relief_start")}
+
+    def body(basic, *, process, pinion_crown="gear", progress=None, memo=None, **kw):
+        raise reasons[(process, pinion_crown)]
+
+    monkeypatch.setattr(cs, "_synthesize", body)
+    with pytest.raises(ReliefError) as info:
+        cs.synthesize(load_basic(MITER))
+    assert str(info.value).startswith(last) and info.value.field == "relief_start"
+    said = (" (with the generated gear, its pinion on its own crown gear, the last of 3 gear "
+            "processes tried; before it (1) the Formate gear: synthesis: the working depth "
+            "does not cross the surface of action monotonically. (2) the generated gear, its "
+            "pinion on the gear's crown gear: synthesis: the contact near the mean point "
+            "could not be followed.)")
+    assert cs.tried_text(info.value) == said
+    try:  # as the development re-raises it
+        try:
+            cs.synthesize(load_basic(MITER))
+        except InputError as err:
+            raise InputError(f"{err} (the basic design as given)") from err
+    except InputError as outer:
+        assert cs.tried_text(outer) == said
+    # an error re-raised "from None" while another was handled (the development's
+    # generated-gear fallback re-raising the Formate gear's): not the handled one's
+    try:
+        try:
+            cs.synthesize(load_basic(MITER))
+        except InputError:
+            raise InputError("the Formate gear's error") from None
+    except InputError as outer:
+        assert cs.tried_text(outer) == ""
+    # one process tried (a hypoid's): nothing to add
+    monkeypatch.setattr(cs, "gear_processes", lambda basic: ("Formate",))
+    with pytest.raises(InputError) as info:
+        cs.synthesize(load_basic(MITER))
+    assert cs.tried_text(info.value) == ""

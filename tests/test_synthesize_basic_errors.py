@@ -291,3 +291,47 @@ def test_an_iso_method_not_available_names_its_basic_file_field(tmp_path):
                        match=r"^design\.method = 3 is implemented for face hobbing only.*"
                              r"use method 0 or 1"):
         load_basic(path)
+
+
+def test_a_pair_no_gear_process_synthesises_says_each_process_s_reason(tmp_path, capsys):
+    """The 12x12 miter at beta_m 35 deg with a 3.5-in cutter (round 17 of the unseen
+    designs; tests/data/limits): no gear process synthesises it. ``ltca synthesize
+    --no-development`` stopped on the last process's "relief: the flank is not generated
+    at its M (mean section)" alone; rc 2 now with the earlier processes' reasons too, the
+    Formate gear's first (its working depth does not cross the surface of action), and
+    no case written."""
+    miter = Path(__file__).parent / "data" / "limits" / "spiral_bevel_12x12_miter_b35.toml"
+    out = tmp_path / "case.toml"
+    rc = main(["synthesize", str(miter), "--no-development", "--no-progress", "-o", str(out)])
+    err = capsys.readouterr().err
+    assert rc == 2 and not out.exists()
+    assert "relief: the flank is not generated at its M (mean section) (with the generated " \
+           "gear, its pinion on its own crown gear, the last of 3 gear processes tried; " \
+           "before it (1) the Formate gear: synthesis: the working depth does not cross the " \
+           "surface of action monotonically" in " ".join(err.split())
+    assert "(2) the generated gear, its pinion on the gear's crown gear: synthesis: the " \
+           "contact near the mean point could not be followed" in " ".join(err.split())
+
+
+def test_a_relief_the_blade_cannot_make_reaches_the_command_as_itself(monkeypatch):
+    """Where no trial of the development synthesises because the default relief is one
+    the blade's profile cannot make (the 12x12 miter with a 5-in cutter of round 17: "15
+    um over 3.94 mm of blade ... give tip_relief >= 128.6 um"), ``develop`` raises that
+    ReliefError itself, its field and flank kept, for ``ltca synthesize`` to raise the
+    default relief and develop again as it does with --no-development (which wrote that
+    miter's case); it was wrapped in a plain InputError saying "--no-development says the
+    same", which was not so. With the synthesis replaced by a stub (no geometry)."""
+    import geometry.synthesis.case_synthesis as cs
+    from contact.optimize.development import develop
+    from geometry.machine.relief import ReliefError
+    from geometry.synthesis.basic_design import load_basic
+
+    def refuse(basic, **kw):
+        raise ReliefError("synthesis.concave.tip_relief: 15 um over 3.94 mm of blade",
+                          "tip_relief", least=0.1286, flank="concave")
+
+    monkeypatch.setattr(cs, "synthesize", refuse)
+    with pytest.raises(ReliefError) as info:
+        develop(load_basic(DESIGNS / "hypoid_6x41.toml"))
+    assert info.value.field == "tip_relief" and info.value.flank == "concave"
+    assert "--no-development says the same" not in str(info.value)

@@ -595,9 +595,19 @@ def run_synthesize(args: argparse.Namespace) -> int:
     of CPU per new design on the 2-core machine, issue 75; a design whose FE models are
     cached imported neither)."""
     from contact.commands.run import dask_hidden
+    from geometry.core.errors import InputError
+    from geometry.synthesis.case_synthesis import tried_text
 
     with dask_hidden():
-        return _run_synthesize(args)
+        try:
+            return _run_synthesize(args)
+        except InputError as exc:
+            # a synthesis that no gear process made: each process's reason, not the
+            # last one's alone (geometry.synthesis.case_synthesis.tried_text)
+            extra = tried_text(exc)
+            if extra and extra not in str(exc):
+                exc.args = (f"{exc}{extra}", *exc.args[1:])
+            raise
 
 
 def _run_synthesize(args: argparse.Namespace) -> int:

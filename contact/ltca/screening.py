@@ -106,6 +106,11 @@ class Screening:
         InputError
             If some roll position has no tooth pair in contact.
         """
+        # a roll without a pair in contact is said before numpy's "All-NaN slice"
+        # warning reaches the user (the 12x12 miter of round 17's development trials)
+        if np.any(np.all(np.isnan(seg.ute), axis=1)):
+            raise InputError("no tooth pair is in contact at some roll position (check the "
+                             "case)")
         ute = np.nanmin(seg.ute, axis=1)  # (J,)
         if not np.all(np.isfinite(ute)):
             raise InputError("no tooth pair is in contact at some roll position (check the "

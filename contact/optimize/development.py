@@ -344,7 +344,8 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     "Development bearing"). The search is the Nelder–Mead simplex (Nelder & Mead 1965,
     *Computer Journal* 7, 308–313), as in :func:`scipy.optimize.minimize`.
     """
-    from geometry.synthesis.case_synthesis import synthesize
+    from geometry.machine.relief import ReliefError
+    from geometry.synthesis.case_synthesis import synthesize, tried_text
 
     if gear_fallback:  # the generated gear too where the Formate gear's design fails
         from contact.optimize.development_process import with_generated_gear
@@ -378,9 +379,16 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
         reasons = "; ".join(sorted({e.reason for e in evals}))
         try:  # the basic data as given: its own error is the one to fix, not the bounds
             synthesize(basic, memo=memo, tip_planes=False)
+        except ReliefError:
+            # a default relief the blade's profile cannot make: `ltca synthesize` raises it
+            # to the blade's need and develops again, as with --no-development (the 12x12
+            # miter with a 5-in cutter of round 17 was told "--no-development says the
+            # same", which wrote its case with the raised relief)
+            raise
         except InputError as err:
-            raise InputError(f"{err} (the basic design as given, before any development; "
-                             "ltca synthesize --no-development says the same)") from err
+            raise InputError(f"{err}{tried_text(err)} (the basic design as given, before "
+                             "any development; ltca synthesize --no-development says the "
+                             "same)") from err
         # a tooth the FE model finds too thin at the toe is the basic data's face width,
         # which no bounds change (tooth_measurement._toe_hint names it)
         change = ("change the basic data's design.b2" if "design.b2" in reasons

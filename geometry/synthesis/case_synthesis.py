@@ -499,6 +499,7 @@ def _synthesize_tried(basic: BasicDesign, *, progress: Callable[[str], None] | N
     tries = ((decided,) if decided else tuple(
         (p, crown) for p in gear_processes(basic)
         for crown in (PINION_CROWNS if p == "Generate" else ("gear",))))
+    failed: list[str] = []
     for k, (process, crown) in enumerate(tries):
         last = k == len(tries) - 1
         held: list[str] = []
@@ -510,8 +511,21 @@ def _synthesize_tried(basic: BasicDesign, *, progress: Callable[[str], None] | N
             # a relief the blade's profile cannot make is the caller's to raise (`ltca
             # synthesize` raises the default relief and tries again), not a reason to
             # leave the gear's crown gear
+            if last and failed:
+                # the last try's reason alone hides the earlier ones, often the telling
+                # ones (the 12x12 miter of round 17: "relief: the flank is not generated
+                # at its M", where its Formate gear's working depth did not cross the
+                # surface of action): kept on the exception for the command's message
+                # (:func:`tried_text`), not in it (a development's every failed trial
+                # would repeat them)
+                exc.tried_text = (f" (with {_process_text(process, crown)}, the last of "
+                                  f"{len(tries)} gear processes tried; before it "
+                                  + " ".join(f"({i}) {t}." for i, t in enumerate(failed, 1))
+                                  + ")")
+                raise
             if last or (isinstance(exc, ReliefError) and process == tries[k + 1][0]):
                 raise
+            failed.append(f"{_process_text(process, crown)}: {exc}")
             log.info("synthesis: the %s gear (pinion on the %s crown gear) has no solution "
                      "(%s); trying %s", process, crown, exc, tries[k + 1])
             continue
@@ -521,6 +535,49 @@ def _synthesize_tried(basic: BasicDesign, *, progress: Callable[[str], None] | N
             progress(line)
         return out
     raise AssertionError("unreachable")  # pragma: no cover
+
+
+def tried_text(err: BaseException) -> str:
+    """The gear processes a failed synthesis tried before its last, with their reasons.
+
+    Parameters
+    ----------
+    err : BaseException
+        An error raised by :func:`synthesize`, or one raised from it (its ``__cause__``
+        chain is followed, and ``__context__`` where not suppressed).
+
+    Returns
+    -------
+    str
+        E.g. (the 12×12 miter at β_m 35° with a 3.5-in cutter,
+        benchmarks/data/unseen_designs) " (with the generated gear, its pinion on its own
+        crown gear, the last of 3 gear processes tried; before it (1) the Formate gear:
+        synthesis: the working depth does not cross the surface of action monotonically;
+        cannot centre the mean point. (2) …)", to append to the message of the command
+        that stops on it; "" where a single process was tried (or none failed so).
+    """
+    seen: set[int] = set()
+    e: BaseException | None = err
+    while e is not None and id(e) not in seen:
+        seen.add(id(e))
+        text = getattr(e, "tried_text", "")
+        if text:
+            return str(text)
+        # the explicit cause, else the context unless suppressed (``raise … from None``:
+        # the development's generated-gear fallback re-raises the Formate gear's error so)
+        e = e.__cause__ or (None if e.__suppress_context__ else e.__context__)
+    return ""
+
+
+def _process_text(process: str, crown: str) -> str:
+    """A gear process of :func:`_synthesize_tried` in words, e.g. "the generated gear, its
+    pinion on its own crown gear"."""
+    if process == "Formate":
+        return "the Formate gear"
+    if process == "Generate":
+        return ("the generated gear, its pinion on "
+                + ("the gear's crown gear" if crown == "gear" else "its own crown gear"))
+    return f"the {process} gear"
 
 
 def _synthesize(basic: BasicDesign, *, process: str, conjugate: bool = False,
