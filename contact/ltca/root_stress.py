@@ -546,7 +546,8 @@ def root_stress_notes(ltca: xr.Dataset) -> list[str]:
 NOTCHED_KIND = ", rounded into a fillet"
 
 
-def slot_bottom_notes(case, ltca: xr.Dataset, flank: str = "drive") -> list[str]:
+def slot_bottom_notes(case, ltca: xr.Dataset, flank: str = "drive",
+                      slot_bottom: str | None = None) -> list[str]:
     """Where a member's peak root stress lies at a slot bottom that the FE model rounds
     into a fillet: one line per such member, as ``ltca run`` prints under its table.
 
@@ -570,6 +571,10 @@ def slot_bottom_notes(case, ltca: xr.Dataset, flank: str = "drive") -> list[str]
         name (:func:`contact.compliance.fe.options.member_flank`). Only a fillet of a
         member's loaded flank counts (the tension side of its loaded tooth): the other
         fillet's rounding does not set that member's peak
+    slot_bottom : str, optional — the FE model's slot-bottom rule (``FEOptions.
+        slot_bottom``) the root stress was computed with (default: ``FEOptions()``'s):
+        ``"edge_radius"`` rounds every crossing by the edge radius (no step-2 notch), so
+        no line is said
 
     Returns
     -------
@@ -594,11 +599,13 @@ def slot_bottom_notes(case, ltca: xr.Dataset, flank: str = "drive") -> list[str]
     The sections are computed again at the FE model's face stations (~0.4 s CPU per
     separately cut member). Source: the slot-bottom rules of :mod:`contact.compliance.fe.section`.
     """
-    from contact.compliance.fe.options import member_flank
+    from contact.compliance.fe.options import FEOptions, member_flank
     from contact.compliance.fe.section import tooth_sections
 
+    if slot_bottom is None:
+        slot_bottom = FEOptions().slot_bottom
     loaded = {m: member_flank(case, m, flank) for m in MEMBERS}
-    if "root_stress" not in ltca.variables:
+    if "root_stress" not in ltca.variables or slot_bottom == "edge_radius":
         return []
     rs = ltca["root_stress"]
     torques = np.asarray(ltca["torque"].values, float)

@@ -11,6 +11,7 @@ FEOptions          the options, validated on construction
 ELEMENTS           element name → (scikit-fem element class, nodes per element)
 CONSTRAINTS        support name → what is held fixed (words; the facets are chosen in
                    :mod:`contact.compliance.fe.solid`)
+SLOT_BOTTOMS       slot-bottom rule of separately cut teeth → what it rounds (words)
 FLANK_ROLES        flank role of the pinion ("drive", "coast") → pinion flank
 MATING_FLANK       pinion flank → the gear flank it meshes with
 member_flank       the flank of a member that plays a role
@@ -34,6 +35,7 @@ __all__ = [
     "ELEMENTS",
     "FLANK_ROLES",
     "MATING_FLANK",
+    "SLOT_BOTTOMS",
     "FEOptions",
     "member_flank",
 ]
@@ -54,6 +56,15 @@ ELEMENTS: dict[str, tuple[type, int]] = {
 CONSTRAINTS: dict[str, str] = {
     "bore": "the rim's inner (bore) surface is fixed",
     "back_face": "the rim's back-cone face at the heel is fixed",
+}
+
+#: slot-bottom rule of separately cut teeth (:mod:`contact.compliance.fe.section`) → words
+SLOT_BOTTOMS: dict[str, str] = {
+    "crossing": "the two cuts' crossing rounded by the largest radius up to the edge "
+                "radius that keeps both fillets (down to a tenth of it), else by up to "
+                "that tenth",
+    "edge_radius": "the two cuts' crossing rounded by the blades' edge radius, the "
+                   "cutter tip's corner, also where it replaces a crossed fillet's top",
 }
 
 #: pinion flank → the gear flank it meshes with (concave pinion flanks mesh convex ones)
@@ -170,6 +181,18 @@ class FEOptions:
         builds where a design is only being searched, not the model a verdict rests on.
         Not part of the cache key nor of :meth:`to_json` at its default (the default
         model's keys unchanged).
+    slot_bottom : str
+        How the slot bottom of separately cut teeth (generated face-milled pinions) is
+        rounded where the two cuts cross (:data:`SLOT_BOTTOMS`;
+        :mod:`contact.compliance.fe.section`). ``"crossing"`` (default): by the edge
+        radius, or the largest smaller radius down to a tenth of it that keeps both
+        fillets whole, else by up to that tenth (a notch where the other cut's blade tip
+        crosses a fillet near its top). ``"edge_radius"``: every crossing by the blades'
+        edge radius, the corner of the cutter tip that makes it, replacing the top of a
+        crossed fillet (issue 71: the coast pinion's FE root stress at 1.5–3.2 × ISO
+        10300's σ_F at step 2's notch; docs/fe.md, "The slot bottom by the cutter's edge
+        radius"). One cut (both flanks in one setting): no effect. Not part of the cache
+        key nor of :meth:`to_json` at its default.
 
     Raises
     ------
@@ -179,8 +202,8 @@ class FEOptions:
         ``rim_depth``, ``root_element_size`` or ``youngs_modulus`` not > 0,
         ``poisson_ratio`` outside [0, 0.5), an unknown ``constraint`` or ``element``,
         ``load_v_limits`` not two fractions 0 ≤ low < high ≤ 1, ``load_row_step``
-        outside 1–5 or not dividing ``load_nv − 1``); the message names the field and
-        the accepted range.
+        outside 1–5 or not dividing ``load_nv − 1``, ``slot_bottom`` not one of
+        :data:`SLOT_BOTTOMS`); the message names the field and the accepted range.
 
     Notes
     -----
@@ -210,6 +233,8 @@ class FEOptions:
     load_nv: int = 11
     load_v_limits: tuple[float, float] | None = None
     load_row_step: int = dataclasses.field(default=1, metadata={"key_at_default": False})
+    slot_bottom: str = dataclasses.field(default="crossing",
+                                         metadata={"key_at_default": False})
 
     def __post_init__(self) -> None:
         teeth = integer("teeth", self.teeth, 3, 9)
@@ -252,6 +277,7 @@ class FEOptions:
                              f"(the first and last profile rows solved), an integer in "
                              f"[1, 5], got {step}")
         object.__setattr__(self, "load_row_step", step)
+        one_of("slot_bottom", self.slot_bottom, SLOT_BOTTOMS)
 
     @property
     def solved_rows(self) -> list[int]:

@@ -53,6 +53,12 @@ tip out to its blade's far side, which leans by its blade angle, ``far_angles``)
 :func:`tooth_sections` does not use it yet: where the bottom changes kind between
 neighbouring sections the slot's middle jumps and the mapped mesh inverts or nearly
 collapses (docs/fe.md, "after the union of the cuts", "The far side leaned").
+With ``FEOptions.slot_bottom = "edge_radius"`` (``tooth_sections(..., "edge_radius")``;
+not the default) every crossing of two separate cuts is rounded by the blades' edge
+radius, the corner a blade's tip leaves where it crosses the other side, also where
+that arc replaces the top of the crossed fillet: no step-2 notch, one radius along the
+face, the slot's middle (the arc's midpoint) continuous (docs/fe.md, "The slot bottom by
+the cutter's edge radius").
 :attr:`ToothSections.root_line` gives each cut's generated root line,
 :meth:`ToothSections.root_depth` its depth below the blank's root cone (docs/fe.md,
 "Root and slot bottom").
@@ -100,6 +106,11 @@ _KEEP_WHOLE = 0.9
 _KEEP_SOME = 0.999
 #: the kind of a slot bottom that is the union of the two cuts (:func:`_union`)
 _UNION = ", union of the cuts"
+#: the kind's ending of a crossing rounded by the edge radius where that arc replaces the
+#: top of a crossed fillet (``FEOptions.slot_bottom = "edge_radius"``)
+OVER_FILLET = ", rounded by the edge radius over a fillet"
+#: slot-bottom rules of :func:`tooth_sections` (``FEOptions.slot_bottom``)
+_RULES = ("crossing", "edge_radius")
 
 
 @dataclass(frozen=True, eq=False)
@@ -430,7 +441,7 @@ def _keeps_fillet(curve, where: tuple[int, float], s_junction: float,
 def _slot_bottom(right, left_next, rho_ref: float, length_v: float, radius: float,
                  s_junction: tuple[float, float], one_cut: bool = False,
                  tips: tuple[float, float] | None = None,
-                 far_angles: tuple[float, float] = (0.0, 0.0)):
+                 far_angles: tuple[float, float] = (0.0, 0.0), edge_rounding: bool = False):
     """Cut the right side and the next tooth's left side (each (v, φ, s), bottom → top)
     where they meet; return both cut curves, the bottom segment (2, 2) and how they met.
 
@@ -453,6 +464,16 @@ def _slot_bottom(right, left_next, rho_ref: float, length_v: float, radius: floa
        fillet it crosses, the union of the two cuts instead (:func:`_union`: that fillet
        whole, kind "tip meets fillet, union of the cuts"; ``far_angles`` [rad] the
        blades' angles, by which the deeper blade's far side leans).
+
+    With ``edge_rounding`` (``FEOptions.slot_bottom = "edge_radius"``) every crossing is
+    rounded by ``radius`` itself, whatever part of a fillet the arc replaces (or, where no
+    arc of that radius is tangent to both sides, the largest smaller one that is): the
+    corner a blade's tip leaves where it crosses the other side is the tip's own edge
+    radius (a blade point symmetric about its tip), not step 2's tenth of it; where the
+    arc replaces the top of a crossed fillet (kind "…, rounded by the edge radius over a
+    fillet") the arc is that side's fillet (:func:`_side`). One radius at every crossing:
+    the bottom varies continuously along the face, and so does the slot's middle (the
+    arc's midpoint) that the mapped mesh follows.
 
     The radius is thus continuous along the face: it falls to a tenth of the edge radius
     where step 1 stops fitting, and step 2 takes over from that tenth. Until issue 71 step
@@ -488,7 +509,17 @@ def _slot_bottom(right, left_next, rho_ref: float, length_v: float, radius: floa
     kind = ("tips cross" if all(on_tip) else "tip meets fillet" if any(on_tip)
             else "fillets cross")
     blend, whole = None, True
-    if angle > _CREASE_ANGLE and radius > 0.0:
+    if edge_rounding and angle > _CREASE_ANGLE and radius > 0.0:
+        blend = _largest_fit(lambda r: _blend(a, b, r, _point_on(a, i, t)), 0.0, radius)
+        if blend is not None:
+            whole = (_keeps_fillet(ra, blend[1], s_junction[0])
+                     and _keeps_fillet(lb, blend[3], s_junction[1]))
+            arc_a, (i, t), arc_b, (j, w) = blend
+            ra = _cut(ra, i, t, arc_a, rho_ref, length_v)
+            lb = _cut(lb, j, w, arc_b, rho_ref, length_v)
+            pt = (ra[0][0], ra[1][0])
+            return ra, lb, np.array([pt, pt]), kind + (", rounded" if whole else OVER_FILLET)
+    elif angle > _CREASE_ANGLE and radius > 0.0:
         def fits(r: float, keep: float = _KEEP_WHOLE):
             arc = _blend(a, b, r, _point_on(a, i, t))
             if arc is not None and _keeps_fillet(ra, arc[1], s_junction[0], keep) \
@@ -709,12 +740,14 @@ def _without_folds(v, phi, s, rho, length_v: float):
 
 
 def _side(flank: str, v, phi, s, corners, u: float, length_v: float, s_junction: float,
-          where: str, own_fillet: bool = False) -> SideCurve:
+          where: str, own_fillet: bool = False, arc_fillet: bool = False) -> SideCurve:
     """A :class:`SideCurve` from samples ordered bottom → top (a fold of the envelope cut
     off, :func:`_without_folds`). ``own_fillet``: the fillet is split on its own arc
     (s ≥ 0), not on the steep far side of the other cut's blade below it (the union of
     the cuts, :func:`_union`), where the tooth block's rows would start under the slot's
-    step."""
+    step. ``arc_fillet``: where the slot bottom's arc replaced the top of this side's
+    fillet (its first generated sample above the fillet's top, :data:`OVER_FILLET`), the
+    arc is the fillet: the junction is where the arc meets the generated side."""
     rho = _bilinear(corners, u, v)[0][..., 1]
     v, phi, s, rho = _without_folds(np.asarray(v, float), np.asarray(phi, float),
                                     np.asarray(s, float), rho, length_v)
@@ -726,11 +759,14 @@ def _side(flank: str, v, phi, s, corners, u: float, length_v: float, s_junction:
     ds = np.hypot(length_v * np.diff(v), 0.5 * (rho[1:] + rho[:-1]) * np.diff(phi))
     arc = np.r_[0.0, np.cumsum(ds)]
     fin = np.isfinite(s)
-    if not (fin.any() and s[fin].min() <= s_junction <= s[fin].max()):
+    if arc_fillet and fin.any() and s_junction < s[fin].min() and fin.argmax() > 0:
+        junction = float(arc[int(fin.argmax()) - 1])  # the arc's tangent point
+    elif not (fin.any() and s[fin].min() <= s_junction <= s[fin].max()):
         raise LTCAError(f"{where}: the slot bottom cuts the {flank} side above its fillet "
                         "(the blade's edge radius generates none of the tooth there); the "
                         "FE model needs a root fillet on both sides")
-    junction = float(np.interp(s_junction, s[fin], arc[fin]))
+    else:
+        junction = float(np.interp(s_junction, s[fin], arc[fin]))
     # slope of the curve in the section, at the midpoints of its pieces
     slope = np.arctan2(np.abs(length_v * np.diff(v)), np.abs(0.5 * (rho[1:] + rho[:-1])
                                                           * np.diff(phi)))
@@ -780,7 +816,7 @@ def _reference_tooth(case, member: str):
     return shifts[0], phi_v, pitch, left
 
 
-def tooth_sections(case, member: str, u) -> ToothSections:
+def tooth_sections(case, member: str, u, slot_bottom: str = "crossing") -> ToothSections:
     """Transverse sections of a member's generated tooth at lengthwise fractions ``u``.
 
     Parameters
@@ -788,6 +824,9 @@ def tooth_sections(case, member: str, u) -> ToothSections:
     case : geometry.case.Case — a loaded case, face milling or face hobbing
     member : str — ``"pinion"`` or ``"gear"``
     u : array_like (K,) — [1] lengthwise fractions, within [0, 1], increasing, K ≥ 2
+    slot_bottom : str — how separately cut slots' crossings are rounded
+        (``FEOptions.slot_bottom``): ``"crossing"`` (default; :func:`_slot_bottom`'s steps
+        1 and 2) or ``"edge_radius"`` (every crossing by the blades' edge radius)
 
     Returns
     -------
@@ -798,8 +837,9 @@ def tooth_sections(case, member: str, u) -> ToothSections:
     Raises
     ------
     InputError
-        A bad member name or fractions, or a blade without an edge radius (a sharp blade
-        tip cuts a sharp root corner, where the stress of an elastic solid is singular).
+        A bad member name, fractions or slot-bottom rule, or a blade without an edge
+        radius (a sharp blade tip cuts a sharp root corner, where the stress of an
+        elastic solid is singular).
     LTCAError
         The flanks are not generated well enough to build the sides (too few points in
         a section, or the slot bottom cuts a side above its fillet).
@@ -816,6 +856,8 @@ def tooth_sections(case, member: str, u) -> ToothSections:
     u = np.asarray(u, dtype=float)
     if u.ndim != 1 or u.size < 2 or np.any(np.diff(u) <= 0) or u[0] < 0 or u[-1] > 1:
         raise InputError("u: must be at least 2 increasing lengthwise fractions in [0, 1]")
+    if slot_bottom not in _RULES:
+        raise InputError(f"slot_bottom: must be one of {list(_RULES)}, got {slot_bottom!r}")
     mem = case.member(member)
     edge = {}
     for flank in ("convex", "concave"):
@@ -854,14 +896,15 @@ def tooth_sections(case, member: str, u) -> ToothSections:
         left_next = (sl.v[i], sl.phi[i] + pitch, sl.s[i])
         right, left_next, bottom, kind = _slot_bottom(
             right, left_next, rho_ref, length_v, radius,
-            (s_junction[right_flank], s_junction[left_flank]), one_cut)
+            (s_junction[right_flank], s_junction[left_flank]), one_cut,
+            edge_rounding=slot_bottom == "edge_radius" and not one_cut)
         kinds.append(kind)
         where = f"{member}, section at face fraction u = {ui:.3f}"
-        union = kind.endswith(_UNION)
+        union, over = kind.endswith(_UNION), kind.endswith(OVER_FILLET)
         rs = _side(right_flank, *right, corners, ui, length_v, s_junction[right_flank], where,
-                   union)
+                   union, over)
         ls = _side(left_flank, left_next[0], left_next[1] - pitch, left_next[2], corners, ui,
-                   length_v, s_junction[left_flank], where, union)
+                   length_v, s_junction[left_flank], where, union, over)
         sections.append(ToothSection(float(ui), ls, rs, bottom, length_v, corners))
         depth = max(depth, float(np.max(_below_root(corners, ui, bottom[:, 0]))))
     log.info("%s: %d sections; slot bottoms %s; deepest %.3f mm under the root cone",
