@@ -108,7 +108,12 @@ that day (whose results the round's other changes had moved). Issue 74 made
 ``/scuffing_micropitting``, the root's ``summary`` and ``id`` and every ``inputs``
 attribute (the cases' ``friction_model`` line) were taken from a ``--write`` run; every
 other entry was kept as it was (that run reproduced them within the tolerances below, at
-round-off: 1e-16–1e-14 relative), so the diff shows the switch alone.
+round-off: 1e-16–1e-14 relative), so the diff shows the switch alone. Issue 71 made
+``FEOptions.slot_bottom = "edge_radius"`` the FE model's default (a separately cut
+pinion's slot bottom rounded by the blades' edge radius where its two cuts cross): only
+``/ltca/root_stress`` (the pinion's stations away from its peak, −12.8 … +7.5 %),
+``root_stress_max`` (the pinion's peaks by ≤ 1.7e-3 MPa) and the ``fe_cache_keys``
+attribute were taken from a ``--write`` run, every other entry kept.
 
 Usage
 -----

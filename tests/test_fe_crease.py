@@ -280,17 +280,21 @@ def test_a_root_stress_peak_at_a_bottom_rounded_into_a_fillet_is_said():
     case = load_case(ROOT / "cases" / "hypoid_iso23509_s2.toml")
     assert case.pair.drive_flank == "concave"
     stations = np.linspace(1.0 / 48.0, 47.0 / 48.0, 24)
-    lines = slot_bottom_notes(case, _root_stress_at(0.46, stations), "coast")
+    lines = slot_bottom_notes(case, _root_stress_at(0.46, stations), "coast", "crossing")
     assert len(lines) == 1
     assert lines[0].startswith("root stress: the pinion's peak (50, 150 N m at u 0.4")
     assert "rounds its slot bottom into a fillet" in lines[0]
-    assert slot_bottom_notes(case, _root_stress_at(0.46, stations), "drive") == []
-    assert slot_bottom_notes(case, _root_stress_at(0.94, stations), "coast") == []
+    assert slot_bottom_notes(case, _root_stress_at(0.46, stations), "drive",
+                             "crossing") == []
+    assert slot_bottom_notes(case, _root_stress_at(0.94, stations), "coast",
+                             "crossing") == []
     assert slot_bottom_notes(case, _root_stress_at(0.46, stations).drop_vars(
-        "root_stress"), "coast") == []
-    # computed with FEOptions.slot_bottom = "edge_radius": no step-2 notch to speak of
+        "root_stress"), "coast", "crossing") == []
+    # computed with FEOptions.slot_bottom = "edge_radius" (the default since 0.3.0): no
+    # step-2 notch to speak of
     assert slot_bottom_notes(case, _root_stress_at(0.46, stations), "coast",
                              "edge_radius") == []
+    assert slot_bottom_notes(case, _root_stress_at(0.46, stations), "coast") == []
 
 
 def _inside(points: np.ndarray, polygon: np.ndarray, tol: float = 1e-6) -> np.ndarray:
@@ -502,9 +506,11 @@ def test_the_bundled_sample_2_pinion_with_the_edge_radius_rule():
     assert 0 < replaced <= len(over)  # the rest keep part of the fillet below the arc
 
 
-def test_the_slot_bottom_rule_is_checked_and_kept_out_of_the_default_key():
-    """``FEOptions.slot_bottom``: an unknown rule is refused naming the field; the default
-    model's dict (cache keys, dataset attributes) is unchanged, the option's is not."""
+def test_the_slot_bottom_rule_is_checked_and_part_of_every_key():
+    """``FEOptions.slot_bottom``: an unknown rule is refused naming the field; the rule is
+    in every model's dict (cache keys, dataset attributes), so that a model cached under
+    the rule before 0.3.0 ("crossing", keys without the field) is never read as the new
+    default's ("edge_radius")."""
     from contact.compliance.fe import FEOptions
     from contact.compliance.fe.section import tooth_sections
     from geometry.core.errors import InputError
@@ -514,9 +520,9 @@ def test_the_slot_bottom_rule_is_checked_and_kept_out_of_the_default_key():
     with pytest.raises(InputError, match="slot_bottom"):
         tooth_sections(load_case(ROOT / "cases" / "hypoid_iso23509_s2.toml"), "pinion",
                        [0.0, 1.0], "sharp")
-    assert "slot_bottom" not in FEOptions().as_dict()
-    assert FEOptions(slot_bottom="edge_radius").as_dict()["slot_bottom"] == "edge_radius"
-    assert FEOptions(slot_bottom="edge_radius").to_json() != FEOptions().to_json()
+    assert FEOptions().as_dict()["slot_bottom"] == "edge_radius"
+    assert FEOptions(slot_bottom="crossing").as_dict()["slot_bottom"] == "crossing"
+    assert FEOptions(slot_bottom="crossing").to_json() != FEOptions().to_json()
 
 
 def _separately_cut_cases() -> list[Path]:

@@ -61,6 +61,7 @@ from typing import Any
 import numpy as np
 from scipy.integrate import simpson
 
+from contact.compliance.fe.options import FEOptions
 from contact.compliance.fe.section import ToothSections, tooth_sections
 from geometry.core.atomic_files import atomic_path
 from geometry.core.errors import InputError, LTCAError, ModelUnavailableError
@@ -178,7 +179,7 @@ def _side_below(side, v0: float, flip: bool, dphi: float
 def _slot_grid(case, member: str, nu: int, nv: int) -> _SlotGrid:
     """The points of the reference tooth's right slot (module docstring)."""
     u = np.linspace(0.0, 1.0, nu)
-    ts = tooth_sections(case, member, u)
+    ts = tooth_sections(case, member, u, FEOptions().slot_bottom)  # the FE model's slot
     corners = blank_outline(case.member(member).blank).corners
     pitch = ts.pitch
     left = ts.left_flank

@@ -184,15 +184,16 @@ class FEOptions:
     slot_bottom : str
         How the slot bottom of separately cut teeth (generated face-milled pinions) is
         rounded where the two cuts cross (:data:`SLOT_BOTTOMS`;
-        :mod:`contact.compliance.fe.section`). ``"crossing"`` (default): by the edge
+        :mod:`contact.compliance.fe.section`). ``"crossing"`` (the rule before 0.3.0): by the edge
         radius, or the largest smaller radius down to a tenth of it that keeps both
         fillets whole, else by up to that tenth (a notch where the other cut's blade tip
-        crosses a fillet near its top). ``"edge_radius"``: every crossing by the blades'
+        crosses a fillet near its top). ``"edge_radius"`` (default): every crossing by the blades'
         edge radius, the corner of the cutter tip that makes it, replacing the top of a
         crossed fillet (issue 71: the coast pinion's FE root stress at 1.5–3.2 × ISO
         10300's σ_F at step 2's notch; docs/fe.md, "The slot bottom by the cutter's edge
-        radius"). One cut (both flanks in one setting): no effect. Not part of the cache
-        key nor of :meth:`to_json` at its default.
+        radius"). One cut (both flanks in one setting): no effect. Part of every cache
+        key (the default changed in 0.3.0: the models cached before, under keys without
+        it, are never read as the new default's).
 
     Raises
     ------
@@ -233,8 +234,7 @@ class FEOptions:
     load_nv: int = 11
     load_v_limits: tuple[float, float] | None = None
     load_row_step: int = dataclasses.field(default=1, metadata={"key_at_default": False})
-    slot_bottom: str = dataclasses.field(default="crossing",
-                                         metadata={"key_at_default": False})
+    slot_bottom: str = "edge_radius"
 
     def __post_init__(self) -> None:
         teeth = integer("teeth", self.teeth, 3, 9)

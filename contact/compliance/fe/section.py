@@ -825,8 +825,10 @@ def tooth_sections(case, member: str, u, slot_bottom: str = "crossing") -> Tooth
     member : str — ``"pinion"`` or ``"gear"``
     u : array_like (K,) — [1] lengthwise fractions, within [0, 1], increasing, K ≥ 2
     slot_bottom : str — how separately cut slots' crossings are rounded
-        (``FEOptions.slot_bottom``): ``"crossing"`` (default; :func:`_slot_bottom`'s steps
-        1 and 2) or ``"edge_radius"`` (every crossing by the blades' edge radius)
+        (``FEOptions.slot_bottom``): ``"crossing"`` (this function's default, the FE
+        model's before 0.3.0; :func:`_slot_bottom`'s steps 1 and 2) or ``"edge_radius"``
+        (every crossing by the blades' edge radius: ``FEOptions()``'s default, which the
+        FE model and the STEP export pass)
 
     Returns
     -------
