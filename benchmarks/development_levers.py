@@ -15,7 +15,11 @@ targets (toe, heel, edge, plastic) missed at each mounting excursion ΔE/ΔP ± 
 LTCA; ≈ 4 more analyses per design); ``--floor N``: under each row, the LTE floor of the
 design's load sharing from the mesh stiffness at N torques from the light to the design
 torque (:func:`floor_line`; docs/synthesis.md, "The LTE floor of a face contact ratio
-near 1").
+near 1"); ``--at T ...``: under each row, the LTE p-p at more torques [N m] (from one
+analysis at those and the two), the mean tooth pairs carrying load at each, the share of
+the mesh cycle one pair carries alone at the design torque and the deflection's floor from
+the least torque to the design torque (:func:`at_line`; docs/synthesis.md, "LTE at every
+torque on a face contact ratio below 1").
 
 Usage::
 
@@ -79,6 +83,10 @@ def main(argv: list[str] | None = None) -> None:
                     help="also the LTE floor of each design's load sharing: N >= 2 torques "
                          "from LIGHT to DESIGN with the mesh stiffness, half the p-p of "
                          "the deflection between them (docs/synthesis.md, 'The LTE floor')")
+    ap.add_argument("--at", type=float, nargs="+", default=None, metavar="T",
+                    help="also the LTE p-p at these pinion torques [N m], the mean pairs "
+                         "carrying load at each and the deflection's floor from the least "
+                         "of them to DESIGN")
     ap.add_argument("--tolerance", action="store_true",
                     help="also the development's tolerance check (coarse LTCA at "
                          "dE/dP +/- 0.05 mm): the tolerance targets missed, per excursion")
@@ -139,6 +147,9 @@ def main(argv: list[str] | None = None) -> None:
         if args.floor >= 2:
             print("    " + floor_line(case, np.linspace(*args.torques, args.floor), opts,
                                       args.flank))
+        if args.at:
+            print("    " + at_line(case, list(args.at) + list(args.torques), args.torques[1],
+                                   opts, args.flank))
         if args.tolerance:
             setup = {"torques": list(args.torques), "centre_v": dev.working_depth_centre(case)}
             tol = tolerance_checks(case, dev.DevelopmentTargets(), setup, teeth, values)
@@ -183,6 +194,40 @@ def floor_line(case, torques, options, flank: str) -> str:
             f" / {np.mean(k[-1]) / 1e6:.2f} MN m/rad), {0.5 * np.ptp(te[-1] - te[0]):.1f} "
             f"urad from the TE; LTE p-p at each torque "
             + " / ".join(f"{x:.0f}" for x in lte))
+
+
+def at_line(case, torques, design: float, options, flank: str) -> str:
+    """A design's LTE p-p at each of ``torques`` [N m, pinion], in words, with the mean
+    tooth pairs carrying load at each, the share of the mesh cycle one pair carries alone at
+    ``design`` [N m] (the loaded contact ratio's hand-over) and the floor ½ p-p(δ_design −
+    δ_least) of the mesh deflection δ = ∫ dT_g / k_Θ between the least torque and
+    ``design`` (as :func:`floor_line`: no unloaded TE gets both below it while the load
+    sharing stays; with the least torque near zero the LTE there is the unloaded TE, so the
+    bound holds for every torque up to ``design``)."""
+    import numpy as np
+
+    from contact.chain import AnalysisChain
+    from contact.pipeline import run_analysis
+
+    ts = sorted({round(float(t), 6) for t in torques})
+    tree = run_analysis(case, ts, flank=flank, options=options, deviations=False,
+                        steps=AnalysisChain.contact_only().with_steps(
+                            mesh_interface="linearised"))
+    lt = tree["/ltca"]
+    lte = np.asarray(lt["lte_peak_to_peak"].values, float)
+    pairs = np.asarray(lt["pairs_in_contact"].values, float)
+    k = np.asarray(tree["/mesh_interface"]["torsional_mesh_stiffness"].values, float)
+    g = np.asarray(lt["gear_torque"].values, float)
+    step = 0.5 * (1e6 / k[1:] + 1e6 / k[:-1]) * np.diff(g)[:, None]  # [µrad] trapezoid
+    deflection = np.concatenate([np.zeros((1, k.shape[1])), np.cumsum(step, axis=0)])
+    d = int(np.argmin(np.abs(np.asarray(ts) - float(design))))
+    return ("LTE p-p at " + " / ".join(f"{t:g}" for t in ts) + " N m: "
+            + " / ".join(f"{x:.0f}" for x in lte) + f" urad (largest {np.max(lte):.0f} at "
+            f"{ts[int(np.argmax(lte))]:g}); pairs " + " / ".join(
+                f"{x:.2f}" for x in pairs.mean(axis=1))
+            + f"; one pair alone over {100 * np.mean(pairs[d] < 1.5):.0f} % of the cycle at "
+            f"{ts[d]:g}; floor {ts[0]:g} -> {ts[d]:g} N m: "
+            f"{0.5 * np.ptp(deflection[d] - deflection[0]):.0f} urad")
 
 
 if __name__ == "__main__":
