@@ -159,6 +159,7 @@ from contact.optimize.development_evaluate import (  # noqa: F401
     lte_spread,
     static_strength,
 )
+from contact.optimize.development_lte_capacity import lte_capacity
 from contact.optimize.development_pitting import checked_pitting
 from contact.optimize.development_result import (  # noqa: F401
     COAST_STATUS,
@@ -411,6 +412,10 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     best = steps_on_each(best, others, steps)
     if basic.options.design_torque is None and basic.rating.get("design_torque") is None:
         best = static_capacity(best, targets, setup, teeth, say)
+        # where the chosen design's LTE still FAILs ltca run's verdict (no design checked
+        # passed it: the 16x16 at Sigma 60 deg, 122 urad at its ISO capacity), the torque
+        # up to which its bearing keeps the verdict's limit (development_lte_capacity)
+        best = lte_capacity(best, targets, setup, teeth, say)
         _outclassed(setup, outclassed_below)
         if setup["lowered"]:  # the steps again at the torques the bearing carries
             best = steps(best)
