@@ -54,8 +54,8 @@ def _start(monkeypatch, law=_LAW, torques=(97.4, 649.4)):
 def test_a_fail_level_lte_lowers_the_design_torque_to_where_it_keeps_60(monkeypatch):
     """The 16x16: 122 µrad at 649.4 N m (FAIL beyond 120); its LTE at four torques from
     the light to the design torque crosses 60 µrad at 281.4 + 13/64 × 184 = 318.78 N m:
-    the design torque lowered there, 318.7 rounded down (the light torque 0.15 × it), the LTE within 60 µrad
-    at both, said with the numbers."""
+    the design torque lowered there, 318.7 rounded down (the light torque 0.15 × it),
+    the LTE within 60 µrad at both, said with the numbers."""
     targets, setup, best, seen = _start(monkeypatch)
     assert lte_fails(best)
     lines: list[str] = []
