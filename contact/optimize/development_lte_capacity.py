@@ -144,13 +144,18 @@ def lte_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     torques, lowered = accepted
     shown = " / ".join(f"{x:.0f}" for x in lowered.metrics["lte_peak_to_peak"])
     source = (f"the torque up to which the developed bearing keeps the drive LTE within "
-              f"{LTE_LIMIT:g} urad: its LTE p-p {before[0]} urad at {before[1]} N m "
-              f"(above {_fail_level(LTE_LIMIT):g} urad, ltca run's FAIL, at "
-              f"{setup['source'].split(',')[0]} {design:.4g} N m), {shown} urad at "
-              f"{torques[0]:.4g} / {torques[1]:.4g} N m")
+              f"{LTE_LIMIT:g} urad: checked at {setup['source'].split(',')[0]} "
+              f"{design:.4g} N m its LTE p-p was {_worst(best):.0f} urad, above ltca run's "
+              f"FAIL level {_fail_level(LTE_LIMIT):g} urad (LTE p-p {before[0]} urad at "
+              f"{before[1]} N m); {shown} urad at {torques[0]:.4g} / {torques[1]:.4g} N m")
     setup.update(torques=torques, source=source, lowered=True)
     say(f"  design torque {design:.4g} -> {torques[1]:.4g} N m: {source}")
     return lowered
+
+
+def _worst(e: DevelopmentEvaluation) -> float:
+    """The largest checked LTE p-p [µrad] of a design (light or design torque)."""
+    return float(np.nanmax(np.asarray(e.metrics["lte_peak_to_peak"], float)))
 
 
 def _fail_level(limit: float) -> float:
