@@ -44,7 +44,11 @@ again (:func:`checked_te`) and its path turned towards the profile where it miss
 length or LTE there (:func:`checked_path`), and where the chosen one's flank peak
 pressure at the rating's capacity exceeds the static strength the design torque is
 lowered to what the bearing carries (:func:`static_capacity`): a design never fails its
-own check at its own design torque; where it exceeds the local pitting limit, a longer
+own check at its own design torque; where the chosen one's checked LTE still FAILs
+``ltca run``'s verdict (no design checked passed it), to the torque up to which its
+bearing keeps the verdict's 60 µrad
+(:func:`~contact.optimize.development_lte_capacity.lte_capacity`); where it exceeds the
+local pitting limit, a longer
 pattern and one centred lower are tried first
 (:mod:`contact.optimize.development_pitting`). Then the **coast flank** (:func:`coast_development`):
 the chosen design's coast flank, synthesised from its own prescriptions, is checked at
