@@ -44,7 +44,11 @@ again (:func:`checked_te`) and its path turned towards the profile where it miss
 length or LTE there (:func:`checked_path`), and where the chosen one's flank peak
 pressure at the rating's capacity exceeds the static strength the design torque is
 lowered to what the bearing carries (:func:`static_capacity`): a design never fails its
-own check at its own design torque; where it exceeds the local pitting limit, a longer
+own check at its own design torque; where the chosen one's checked LTE still FAILs
+``ltca run``'s verdict (no design checked passed it), to the torque up to which its
+bearing keeps the verdict's 60 µrad
+(:func:`~contact.optimize.development_lte_capacity.lte_capacity`); where it exceeds the
+local pitting limit, a longer
 pattern and one centred lower are tried first
 (:mod:`contact.optimize.development_pitting`). Then the **coast flank** (:func:`coast_development`):
 the chosen design's coast flank, synthesised from its own prescriptions, is checked at
@@ -159,6 +163,7 @@ from contact.optimize.development_evaluate import (  # noqa: F401
     lte_spread,
     static_strength,
 )
+from contact.optimize.development_lte_capacity import lte_capacity
 from contact.optimize.development_pitting import checked_pitting
 from contact.optimize.development_result import (  # noqa: F401
     COAST_STATUS,
@@ -419,6 +424,10 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     best = steps_on_each(best, others, steps)
     if basic.options.design_torque is None and basic.rating.get("design_torque") is None:
         best = static_capacity(best, targets, setup, teeth, say)
+        # where the chosen design's LTE still FAILs ltca run's verdict (no design checked
+        # passed it: the 16x16 at Sigma 60 deg, 122 urad at its ISO capacity), the torque
+        # up to which its bearing keeps the verdict's limit (development_lte_capacity)
+        best = lte_capacity(best, targets, setup, teeth, say)
         _outclassed(setup, outclassed_below)
         if setup["lowered"]:  # the steps again at the torques the bearing carries
             best = steps(best)
