@@ -134,10 +134,13 @@ def cycle_transitions(eo: EaseOff) -> tuple[float, float]:
     return _memo_cycle_transitions(Same(eo))
 
 
-@memoised(maxsize=16)
+@memoised(maxsize=32)
 def _memo_cycle_transitions(eo: Same) -> tuple[float, float]:
     """:func:`transitions` of ``eo.obj`` on its shared splines, memoised per process by
-    the ease-off object (:func:`cycle_transitions`)."""
+    the ease-off object (:func:`cycle_transitions`): 32 entries, so that the designs of
+    a development's coast flank (at most ``coast_max_evaluations``, 20 by default) are
+    all still there when it is developed again (each entry holds its ease-off,
+    ≈ 0.2 MB)."""
     return transitions(eo.obj, fields=fields_of(eo.obj))
 
 
