@@ -275,3 +275,44 @@ def test_segment_geometry_repeated_is_the_computed_one():
     assert again.length is not fresh.length and again.length.flags.writeable
     wider = segment_geometry(*args, edge_limit=0.5)
     assert np.isfinite(wider.r_eq).sum() >= np.isfinite(fresh.r_eq).sum()
+
+
+def test_a_trials_curve_segments_are_kept_apart_and_read_again(monkeypatch):
+    """Inside a development's trial (a WarmSeeds block) the curve segments are memoised
+    apart from the cold memo (issue 75): the same ease-off object analysed again at
+    another torque (another edge limit) reads them instead of computing them again, bit
+    for bit as computed afresh; the cold memo, which the analyses outside a block read,
+    gets none of them."""
+    from contact.ltca import segments as segments_module
+    from contact.ltca.segments import clear_segment_memo
+    from geometry.machine.meshing import WarmSeeds
+
+    case, eo = _case(), _easeoff()
+    m1, _ = transitions(eo)
+    roll = m1 + np.arange(8) * eo.pitch / 8
+    args = (case, eo, roll, (-1, 0, 1), 6, "cosine", (1.0, 0.5))
+    computed = []
+    original = segments_module._curve_part_of
+
+    def counting(*a, **k):
+        computed.append(1)
+        return original(*a, **k)
+
+    monkeypatch.setattr(segments_module, "_curve_part_of", counting)
+    clear_segment_memo()
+    with WarmSeeds():
+        first = segment_geometry(*args, edge_limit=0.05)
+        again = segment_geometry(*args, edge_limit=0.5)  # another torque's limit
+        assert len(computed) == 1
+        assert segments_module._memo_trial_curve_part.cache_info().currsize == 1
+        assert segments_module._memo_curve_part.cache_info().currsize == 0
+        clear_segment_memo()
+        fresh = segment_geometry(*args, edge_limit=0.05)
+    assert len(computed) == 2
+    S = 6
+    for name in first.per_segment():
+        a, b, c = (getattr(s, name)[:, :, :S] for s in (first, again, fresh))
+        assert a.tobytes() == b.tobytes() == c.tobytes(), name
+    assert first.ute.tobytes() == again.ute.tobytes() == fresh.ute.tobytes()
+    clear_segment_memo()
+    assert segments_module._memo_trial_curve_part.cache_info().currsize == 0

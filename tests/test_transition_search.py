@@ -94,3 +94,30 @@ def test_one_handover_where_the_pinion_corner_holes_are():
     assert np.all(np.abs(d) < transitions_module._OUT_OF_MESH)  # both pairs in mesh
     s = np.sign(d[d != 0.0])
     assert int(np.count_nonzero(s[1:] != s[:-1])) == 1
+
+
+def test_the_cycles_transitions_are_searched_once_per_ease_off():
+    """The transitions the LTCA starts from (``cycle_transitions``, issue 75): those of
+    :func:`transitions` on splines of its own, bit for bit, though searched on the
+    ease-off's shared splines (``fields_of``); memoised per ease-off object (an equal
+    ease-off, another object, is searched again) and emptied by ``clear_caches``."""
+    from contact.utca.easeoff import clear_ease_off_memo
+    from geometry.core.caches import clear_caches
+
+    memo = transitions_module._memo_cycle_transitions
+    clear_caches()
+    eo = ease_off(resolve_case(None))
+    own = transitions_module.transitions(eo, fields=EaseOffFields(eo))
+    got = transitions_module.cycle_transitions(eo)
+    assert np.array(got).tobytes() == np.array(own).tobytes()
+    assert np.all(np.isfinite(got))
+    assert transitions_module.cycle_transitions(eo) is got  # read again, not searched
+    assert memo.cache_info().hits == 1 and memo.cache_info().currsize == 1
+    clear_ease_off_memo()
+    other = ease_off(resolve_case(None))
+    assert other is not eo
+    assert np.array(transitions_module.cycle_transitions(other)).tobytes() == \
+        np.array(own).tobytes()
+    assert memo.cache_info().currsize == 2
+    clear_caches()
+    assert memo.cache_info().currsize == 0

@@ -66,7 +66,7 @@ from contact.ltca.screening import generous_limit
 from contact.ltca.segments import segment_geometry
 from contact.qp import ContactProblem
 from contact.utca import EaseOff, ease_off
-from contact.utca import transitions as _transitions
+from contact.utca.transitions import cycle_transitions
 from geometry.core.errors import InputError
 from geometry.core.validation import real_array
 from geometry.pair.assembly import Misalignment
@@ -211,8 +211,8 @@ def _setup(case, torque, misalignment: Misalignment | None, flank: str | None,
     t0 = time.perf_counter()
     eo = easeoff if easeoff is not None else ease_off(case, flank=flank)
     t_easeoff = time.perf_counter() - t0
-    if transitions is None:
-        m1, m2 = _transitions(eo)
+    if transitions is None:  # on the splines the segment geometry reads (issue 75)
+        m1, m2 = cycle_transitions(eo)
     else:
         try:
             m1, m2 = (float(m) for m in transitions)

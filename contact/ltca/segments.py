@@ -242,20 +242,42 @@ def _curve_part(case, eo: EaseOff, target: np.ndarray, segments: int, spacing: s
     a torque series (or one repeated) at one misalignment share the memoised ease-off
     (:func:`contact.utca.ease_off`) and so these, as its unloaded cycle; the edge
     segments, which depend on the torque's separation limit, are worked out at each
-    call. Not memoised inside a development's trial (its ease-off is not either:
-    :func:`geometry.machine.meshing.warm_seeds_active`)."""
-    if warm_seeds_active():
-        return _curve_part_of(case, eo, target, segments, spacing, step)
+    call. Inside a development's trial (:func:`geometry.machine.meshing.warm_seeds_active`:
+    its ease-off is not in the process memo) memoised apart
+    (:func:`_memo_trial_curve_part`), so that no cold analysis reads a trial's: a design
+    the development analyses again (the coast flank developed again at its own design
+    torque, its ease-off kept per development by
+    :class:`contact.optimize.development_evaluate.KeptTeeth`, the same object) reads its
+    curve segments from there (issue 75: ≈ 25 ms of a coarse trial's LTCA on the
+    passenger-car hypoid 10x43)."""
     target = np.ascontiguousarray(target, dtype=float)
-    return _memo_curve_part(Same(eo), case.teeth_key(), Carried(case), target.shape,
-                            target.tobytes(), int(segments), str(spacing),
-                            None if step is None else float(step))
+    memo = _memo_trial_curve_part if warm_seeds_active() else _memo_curve_part
+    return memo(Same(eo), case.teeth_key(), Carried(case), target.shape, target.tobytes(),
+                int(segments), str(spacing), None if step is None else float(step))
 
 
 @memoised(maxsize=4)
 def _memo_curve_part(eo: Same, teeth, case: Carried, shape: tuple[int, int], target: bytes,
                      segments: int, spacing: str, step: float | None) -> _CurvePart:
     """:func:`_curve_part_of` memoised (:func:`_curve_part`), its arrays read-only."""
+    return _frozen_curve_part(eo, case, shape, target, segments, spacing, step)
+
+
+@memoised(maxsize=32)
+def _memo_trial_curve_part(eo: Same, teeth, case: Carried, shape: tuple[int, int],
+                           target: bytes, segments: int, spacing: str,
+                           step: float | None) -> _CurvePart:
+    """:func:`_curve_part_of` of a development's trial memoised (:func:`_curve_part`), its
+    arrays read-only. 32 entries (≈ 0.3 MB each with the ease-off it holds, on the
+    passenger-car hypoid 10x43): the coast flank's designs (at most
+    ``coast_max_evaluations``, 20 by default) are all still there when the coast flank is
+    developed again (19 designs apart on the spiral bevel 13x39)."""
+    return _frozen_curve_part(eo, case, shape, target, segments, spacing, step)
+
+
+def _frozen_curve_part(eo: Same, case: Carried, shape: tuple[int, int], target: bytes,
+                       segments: int, spacing: str, step: float | None) -> _CurvePart:
+    """:func:`_curve_part_of` of a memo's key, its arrays made read-only."""
     part = _curve_part_of(case.value, eo.obj, np.frombuffer(target).reshape(shape),
                           segments, spacing, step)
     arrays = [*part.found.per_segment().values(), part.ute, part.shift]
@@ -306,6 +328,7 @@ def clear_segment_memo() -> None:
     """Forget the curve segments memoised per process by :func:`segment_geometry` (frees
     memory; the next analysis computes them afresh)."""
     _memo_curve_part.cache_clear()
+    _memo_trial_curve_part.cache_clear()
     _memo_segment_geometry.cache_clear()
 
 

@@ -22,10 +22,12 @@ import numpy as np
 
 from contact.utca.contact_curves import pair_transmission_error
 from contact.utca.easeoff import EaseOff
-from contact.utca.fields import EaseOffFields
+from contact.utca.fields import EaseOffFields, fields_of
+from geometry.core.caches import Same, memoised
 from geometry.core.validation import integer
 
 __all__ = [
+    "cycle_transitions",
     "transitions",
 ]
 
@@ -92,6 +94,54 @@ def transitions(eo: EaseOff, *, method: str = "second_order", fields: EaseOffFie
                         "lowest ease-off point")
             return math.nan, math.nan
     return _solve_transitions(h, x, hx)
+
+
+def cycle_transitions(eo: EaseOff) -> tuple[float, float]:
+    """The transitions M1, M2 [rad] the loaded TCA's mesh cycle starts from
+    (:func:`contact.ltca.loaded_tca` where it is given none): :func:`transitions` of ``eo``
+    with its defaults on the ease-off's shared splines (:func:`contact.utca.fields.fields_of`,
+    the splines the LTCA's segment geometry then reads, as the unloaded cycle shares them
+    in :func:`contact.pipeline.run_analysis`), memoised per process by the ease-off object.
+
+    Parameters
+    ----------
+    eo : contact.utca.easeoff.EaseOff
+        Compared by identity (as :func:`contact.utca.fields.fields_of`): the analyses of
+        one ease-off object at several torques (the development's trials of one design
+        analysed again at another torque, the ease-off kept by
+        :class:`contact.optimize.development_evaluate.KeptTeeth`; its check at two
+        torques from the ease-off memo) search the transitions once (issue 75: ≈ 14 ms
+        of a coarse development LTCA, on the passenger-car hypoid 10x43).
+
+    Returns
+    -------
+    (M1, M2) : (float, float) — [rad]
+        As :func:`transitions`.
+
+    Raises
+    ------
+    InputError, ModelUnavailableError
+        As :func:`transitions` and :class:`contact.utca.fields.EaseOffFields`.
+
+    Notes
+    -----
+    Source: seed §2.3.2.2, Fig. 2.9 (:func:`transitions`). The memo and the shared splines
+    change no number: the transitions are a function of the ease-off alone (its splines,
+    no envelope solve), and the splines' lazily formed parts are the same arithmetic
+    whoever asks first (:func:`contact.utca.fields.fields_of`); tested bit for bit against
+    :func:`transitions` on its own splines (tests/test_transitions.py).
+    """
+    return _memo_cycle_transitions(Same(eo))
+
+
+@memoised(maxsize=32)
+def _memo_cycle_transitions(eo: Same) -> tuple[float, float]:
+    """:func:`transitions` of ``eo.obj`` on its shared splines, memoised per process by
+    the ease-off object (:func:`cycle_transitions`): 32 entries, so that the designs of
+    a development's coast flank (at most ``coast_max_evaluations``, 20 by default) are
+    all still there when it is developed again (each entry holds its ease-off,
+    ≈ 0.2 MB)."""
+    return transitions(eo.obj, fields=fields_of(eo.obj))
 
 
 #: value of the UTE difference of two pairs where one is out of mesh (:class:`_PairDifference`)
