@@ -312,6 +312,9 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     where it still misses its LTE target with the design torque's LTE the larger on a
     pair of low contact ratios, the TE parabola matched to the load and a longer bearing
     (:func:`contact.optimize.development_matched_te.checked_matched_te`);
+    where it misses its LTE target alone by a small margin, a lighter tip relief, then a
+    shallower root relief (:func:`contact.optimize.development_lighter_relief.
+    checked_lighter_relief`);
     last, where it misses its
     light-load
     centre v and nothing by more than a small margin, a small blade-angle step with the TE level
@@ -350,6 +353,8 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     best = load_lte.checked_relief_ellipse_lte(best, targets, setup, teeth, say, placed)
     from contact.optimize.development_matched_te import checked_matched_te
     best = checked_matched_te(best, targets, setup, teeth, say, placed)
+    from contact.optimize.development_lighter_relief import checked_lighter_relief
+    best = checked_lighter_relief(best, targets, setup, teeth, say, placed)
     return checked_near_miss(best, targets, setup, teeth, say, placed, level,
                              slope=(slopes or {}).get(bearing_key(best.values)))
 
