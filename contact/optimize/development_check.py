@@ -314,7 +314,9 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     (:func:`contact.optimize.development_matched_te.checked_matched_te`); where the
     design torque's LTE still misses its target on a face contact ratio below 1, the tip
     relief started later (:func:`contact.optimize.development_tip_start_lte.
-    checked_tip_start_lte`);
+    checked_tip_start_lte`); where it misses its LTE target alone by a small margin, a
+    lighter tip relief, then a shallower root relief
+    (:func:`contact.optimize.development_lighter_relief.checked_lighter_relief`);
     last, where it misses its
     light-load
     centre v and nothing by more than a small margin, a small blade-angle step with the TE level
@@ -355,6 +357,8 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     best = checked_matched_te(best, targets, setup, teeth, say, placed)
     from contact.optimize.development_tip_start_lte import checked_tip_start_lte
     best = checked_tip_start_lte(best, targets, setup, teeth, say, placed)
+    from contact.optimize.development_lighter_relief import checked_lighter_relief
+    best = checked_lighter_relief(best, targets, setup, teeth, say, placed)
     return checked_near_miss(best, targets, setup, teeth, say, placed, level,
                              slope=(slopes or {}).get(bearing_key(best.values)))
 
