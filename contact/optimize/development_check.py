@@ -311,7 +311,10 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     ellipse (:func:`contact.optimize.development_load_lte.checked_relief_ellipse_lte`);
     where it still misses its LTE target with the design torque's LTE the larger on a
     pair of low contact ratios, the TE parabola matched to the load and a longer bearing
-    (:func:`contact.optimize.development_matched_te.checked_matched_te`);
+    (:func:`contact.optimize.development_matched_te.checked_matched_te`); where its
+    design torque's LTE still misses the target or 60 µrad with the contact there on a
+    tip edge, a lighter, then a longer tip relief
+    (:func:`contact.optimize.development_tip_lte.checked_tip_lte`);
     last, where it misses its
     light-load
     centre v and nothing by more than a small margin, a small blade-angle step with the TE level
@@ -350,6 +353,8 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     best = load_lte.checked_relief_ellipse_lte(best, targets, setup, teeth, say, placed)
     from contact.optimize.development_matched_te import checked_matched_te
     best = checked_matched_te(best, targets, setup, teeth, say, placed)
+    from contact.optimize.development_tip_lte import checked_tip_lte
+    best = checked_tip_lte(best, targets, setup, teeth, say, placed)
     return checked_near_miss(best, targets, setup, teeth, say, placed, level,
                              slope=(slopes or {}).get(bearing_key(best.values)))
 
