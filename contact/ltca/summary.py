@@ -151,7 +151,7 @@ def flank_peak_pressure(ltca: xr.Dataset) -> np.ndarray:
     return flank_peak(ltca).pressure
 
 
-def edge_load_share(ltca: xr.Dataset) -> np.ndarray:
+def edge_load_share(ltca: xr.Dataset, kinds: tuple[str, ...] | None = None) -> np.ndarray:
     """[1] Per torque, the share of the gear torque carried by the edge segments over the
     mesh cycles: Σ F·R over the edge segments / Σ F·R over all (seed Eq. 3.14's moments;
     :mod:`contact.ltca.edges`).
@@ -161,6 +161,10 @@ def edge_load_share(ltca: xr.Dataset) -> np.ndarray:
     ltca : xarray.Dataset
         ``/ltca``: ``force`` (torque, roll, pair, segment) [N], ``moment_arm`` (roll, pair,
         segment) [mm], ``segment_kind`` (segment).
+    kinds : tuple of str, optional
+        The edges counted, of :data:`contact.ltca.edges.EDGE_KINDS` (``"gear_tip"``,
+        ``"gear_heel"``, ``"gear_toe"``, ``"pinion_edge"``); default every edge (every
+        segment that is not a contact curve's).
 
     Returns
     -------
@@ -172,14 +176,20 @@ def edge_load_share(ltca: xr.Dataset) -> np.ndarray:
     Raises
     ------
     InputError
-        If ``ltca`` lacks one of the variables.
+        If ``ltca`` lacks one of the variables, or ``kinds`` names no edge of
+        :data:`contact.ltca.edges.EDGE_KINDS`.
     """
+    from contact.ltca.edges import EDGE_KINDS
+
     missing = [k for k in ("force", "moment_arm", "segment_kind") if k not in ltca.variables]
     if missing:
         raise InputError(f"ltca: lacks {', '.join(missing)} (not an /ltca dataset)")
+    if kinds is not None and (not kinds or any(k not in EDGE_KINDS for k in kinds)):
+        raise InputError(f"kinds: must name edges of {EDGE_KINDS}, got {kinds!r}")
     moment = (np.nan_to_num(ltca.variables["force"].values)
               * np.nan_to_num(ltca.variables["moment_arm"].values)[None])
-    edge = np.asarray(ltca.variables["segment_kind"].values != "curve")
+    kind = np.asarray(ltca.variables["segment_kind"].values)
+    edge = kind != "curve" if kinds is None else np.isin(kind, list(kinds))
     total = moment.sum(axis=(1, 2, 3))
     on_edges = moment[..., edge].sum(axis=(1, 2, 3))
     with np.errstate(invalid="ignore", divide="ignore"):

@@ -316,7 +316,10 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     relief started later (:func:`contact.optimize.development_tip_start_lte.
     checked_tip_start_lte`); where it misses its LTE target alone by a small margin, a
     lighter tip relief, then a shallower root relief
-    (:func:`contact.optimize.development_lighter_relief.checked_lighter_relief`);
+    (:func:`contact.optimize.development_lighter_relief.checked_lighter_relief`); where
+    its design torque's LTE still misses the target or 60 µrad with the contact there on
+    a tip edge, a lighter, then a longer tip relief
+    (:func:`contact.optimize.development_tip_lte.checked_tip_lte`);
     last, where it misses its
     light-load
     centre v and nothing by more than a small margin, a small blade-angle step with the TE level
@@ -359,6 +362,8 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     best = checked_tip_start_lte(best, targets, setup, teeth, say, placed)
     from contact.optimize.development_lighter_relief import checked_lighter_relief
     best = checked_lighter_relief(best, targets, setup, teeth, say, placed)
+    from contact.optimize.development_tip_lte import checked_tip_lte
+    best = checked_tip_lte(best, targets, setup, teeth, say, placed)
     return checked_near_miss(best, targets, setup, teeth, say, placed, level,
                              slope=(slopes or {}).get(bearing_key(best.values)))
 

@@ -72,6 +72,14 @@ COARSE_LTCA = LTCAOptions(cycles=1, rolls_per_cycle=8, segments=12)
 CHECK_LTCA = LTCAOptions()
 
 
+#: the tip edges of the flank boundary (:data:`contact.ltca.edges.EDGE_KINDS`): the gear's
+#: tip edge and the pinion's edge (where the pinion mate leaves its blank: its tip line on
+#: the gear flank, the pinion's face being the wider); the load they carry is the
+#: ``tip_edge_share`` metric (:func:`ltca_metrics`) the tip-relief LTE step asks
+#: (:mod:`contact.optimize.development_tip_lte`)
+TIP_EDGE_KINDS = ("gear_tip", "pinion_edge")
+
+
 def design_torque_of(basic: BasicDesign, case: Case) -> tuple[float, str]:
     """The pinion torque [N·m] the development checks the bearing at, and where it is from.
 
@@ -129,8 +137,9 @@ def ltca_metrics(ltca, case: Case) -> dict[str, np.ndarray]:
     :func:`contact.study.summary.pattern_dimensions`: what ``point_summary`` gives them
     from, without its ``/utca`` summaries the development does not score), the footprint
     centre ``pattern_centre_u``/``pattern_centre_v`` [1 of the face width / working depth]
-    (:func:`footprint_centre`), ``plastic_share`` [1] (the largest segment's) and
-    ``lte_spread`` [1] (:func:`lte_spread`). The flank peak pressure is
+    (:func:`footprint_centre`), ``plastic_share`` [1] (the largest segment's),
+    ``lte_spread`` [1] (:func:`lte_spread`) and ``tip_edge_share`` [1] (the edge load
+    share of the tip edges alone, :data:`TIP_EDGE_KINDS`). The flank peak pressure is
     :func:`flank_peak_pressure`'s: the dataset's without the contact curves shorter than
     their own contact width."""
     from contact.ltca.summary import edge_load_share
@@ -149,6 +158,7 @@ def ltca_metrics(ltca, case: Case) -> dict[str, np.ndarray]:
              else np.zeros((len(out["lte_peak_to_peak"]), 1)))
     out["plastic_share"] = share.max(axis=1)
     out["lte_spread"] = lte_spread(ltca)
+    out["tip_edge_share"] = np.asarray(edge_load_share(ltca, kinds=TIP_EDGE_KINDS), float)
     return out
 
 
