@@ -335,3 +335,46 @@ def test_a_relief_the_blade_cannot_make_reaches_the_command_as_itself(monkeypatc
         develop(load_basic(DESIGNS / "hypoid_6x41.toml"))
     assert info.value.field == "tip_relief" and info.value.flank == "concave"
     assert "--no-development says the same" not in str(info.value)
+
+
+def test_a_case_no_analysis_accepts_is_not_written(tmp_path, capsys, monkeypatch):
+    """The 12x12 miter of round 17 with a 5-in cutter (rc0 63.5 mm instead of the limits
+    file's 44.45; benchmarks/data/unseen_designs/spiral_bevel_12x12_miter_b35_rc63p5.toml):
+    ``ltca synthesize --no-development`` wrote a case that ``ltca run`` and ``ltca utca``
+    refused ("contact curves: the roll-angle surface is not monotone ..."). Now rc 2 with
+    that reason, the face contact ratio (0.56, below 1.25) and the cutter radius named as
+    the changes to try, and no file written; the unloaded TCA of the case the command
+    checked raises the error quoted (the check is the analysis' own)."""
+    import contact.commands.synthesize_contact as sc
+    from contact.utca.datasets import unloaded_tca
+    from geometry.core.errors import ModelUnavailableError
+
+    miter = Path(__file__).parent / "data" / "limits" / "spiral_bevel_12x12_miter_b35.toml"
+    text, n = re.subn(r"(?m)^rc0 = 44\.45$", "rc0 = 63.5",
+                      miter.read_text(encoding="utf-8"))
+    assert n == 1
+    basic = tmp_path / "miter_rc63p5.toml"
+    basic.write_text(text, encoding="utf-8")
+    checked = []
+    check = sc.unloaded_contact_failure
+
+    def spy(case, flank="drive"):
+        checked.append(case)
+        return check(case, flank)
+
+    monkeypatch.setattr(sc, "unloaded_contact_failure", spy)
+    out = tmp_path / "case.toml"
+    rc = main(["synthesize", str(basic), "--no-development", "--no-progress", "-o", str(out)])
+    err = " ".join(capsys.readouterr().err.split())
+    assert rc == 2 and not out.exists() and list(tmp_path.iterdir()) == [basic]
+    assert ("the unloaded contact of the synthesised case's drive flank (pinion concave) "
+            "cannot be computed, so `ltca run` and `ltca utca` would refuse the case: "
+            "contact curves: the roll-angle surface is not monotone") in err
+    assert "no case written" in err
+    assert "face contact ratio eps_vb 0.56 is below 1.25" in err
+    assert "another cutter radius rc0 (now 63.5 mm" in err
+    # the case checked is one the analysis refuses with the same error
+    assert len(checked) == 1
+    with pytest.raises(ModelUnavailableError, match="roll-angle surface is not monotone"):
+        unloaded_tca(checked[0])
+

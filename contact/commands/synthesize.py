@@ -683,7 +683,14 @@ def _run_synthesize(args: argparse.Namespace) -> int:
         case, coast_capacity = development.with_coast_capacity(case)
         if math.isfinite(coast_capacity):
             coast_torque, coast_why = coast_capacity, development.coast_capacity_text
+    # a case no analysis accepts is not written: its drive flank's unloaded contact
+    # computed as `ltca run` computes it first (the 12x12 miter with a 5-in cutter of
+    # round 17 was written and then refused); the coast flank's noted
+    from contact.commands.synthesize_contact import checked_contact
+
+    coast = checked_contact(case, basic.design)
     case, ratios, notes = _noted(basic, case, development)
+    notes += coast
     text = _HEADER.format(basic=shown) + case.to_toml()
     # the written text must load back to the same case
     case_from_dict(tomllib.loads(text))
