@@ -740,3 +740,52 @@ def test_a_coast_peak_that_set_the_coast_torque_gets_a_lighter_tip_relief(monkey
                                      lambda v: dict(v), peak=1588.0, met=met,
                                      lte=60.0) is None
     assert seen == []
+
+
+def test_a_coast_pattern_too_long_gets_the_length_step_on_the_coast_flank(monkeypatch):
+    """checked_length on the coast flank (``flank="coast"``): the spiral bevel 13x39 at
+    Σ 80°'s coast flank developed again at 48.9 / 197 N m (path −45°, ellipse 0.55; ``ltca
+    synthesize`` 2026-11-27) read its light-load pattern 0.65 long (0.5 ± 0.1), every other
+    target met, and no coast step moved it. The stand-in's pattern is 0.9 of the face
+    longer per unit of ellipse (a face-milled pair's, LENGTH_PER_ELLIPSE) and its peak at
+    the design torque rises as the ellipse shortens: one design aimed just inside the
+    band, analysed on the coast flank under the kept pinion tooth's coast key, no mounting
+    excursion asked (the tolerance is the drive flank's), kept where its peak stays within
+    ``max_flank_pressure``; refused (the coast design torque, set by the flank's
+    capacity, not given up) where no bound allows the higher peak."""
+    from contact.optimize import development_check as dcheck
+
+    seen = []
+
+    def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
+             flank="drive"):
+        x = case["ellipse_length"]
+        seen.append((flank, round(x, 4), misalignment is not None, pinion_key[:1]))
+        length = 0.65 + 0.9 * (x - 0.55)
+        return (_coast_metrics(pattern_toe_u=[0.5 - length / 2, 0.15],
+                               pattern_heel_u=[0.5 + length / 2, 0.85],
+                               pattern_centre_u=[0.5, 0.5],
+                               pressure_max_flank=[900.0, 1618.0 + 1000.0 * (0.55 - x)]),
+                (0.0, 1.0, 0.0, 1.0, 2400.0))
+
+    values = {"path_angle": -45.0, "ellipse_length": 0.55, "te_level": 45.0}
+    targets, setup, chosen = stand_in(monkeypatch, fake, [48.9, 197.0])
+    start = chosen(values)
+    assert [k for k, v in start.full[1].items() if v > 0] == ["length"]
+    bounded = dataclasses.replace(targets, max_flank_pressure=1700.0)
+    seen.clear()
+    lines = []
+    got = dcheck.checked_length(start, bounded, setup, None, lines.append,
+                                lambda v: dict(v), flank="coast", key_prefix=("drive",))
+    x = round(0.55 + (0.6 - dcheck.LENGTH_AIM_MARGIN - 0.65) / dcheck.LENGTH_PER_ELLIPSE, 4)
+    assert got.met and got.stage == "length"
+    assert got.values == values | {"ellipse_length": pytest.approx(x, abs=1e-12)}
+    assert seen == [("coast", pytest.approx(x), False, ("drive",))]
+    assert "coast design" in lines[0] and "its pattern 0.65 long" in lines[0]
+    # no bound on the flank peak: a peak above the design's is not kept
+    seen.clear()
+    lines.clear()
+    assert dcheck.checked_length(start, targets, setup, None, lines.append,
+                                 lambda v: dict(v), flank="coast") is start
+    assert seen and all(s[0] == "coast" and not s[2] for s in seen)
+    assert any("not kept: the ellipse for the length misses pressure" in s for s in lines)

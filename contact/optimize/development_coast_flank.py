@@ -31,6 +31,7 @@ from contact.optimize.development_check import (
     checked_best,
     checked_centre_u,
     checked_coast_lte,
+    checked_length,
     checked_long,
 )
 from contact.optimize.development_coast import CoastCapacity, CoastCheck, coast_capacity
@@ -244,7 +245,8 @@ def coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
     (:func:`search_flank`) on the coast flank's own prescriptions with that budget, the best
     checked at :data:`CHECK_LTCA` (:func:`checked_best`; where its LTE exceeds the
     verdict's 60 µrad the coast LTE steps, :func:`checked_coast_lte`, then, where the LTE
-    target is still missed, the long bearing, :func:`checked_long`) and chosen where it
+    target is still missed, the long bearing, :func:`checked_long`; where the pattern
+    length is missed, the ellipse searched for it, :func:`checked_length`) and chosen where it
     scores better than the flank as synthesised. The drive flank is the same in every design
     (the synthesis places the coast flank against it, never the reverse), so its result
     stands; the coast designs' pinion teeth are kept under the drive's bearing and the
@@ -315,6 +317,11 @@ def coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
         # an LTE still missed: the long bearing (the drive flank's last check step)
         best = checked_long(best, targets, setup, teeth, say, placed, flank="coast",
                             key_prefix=prefix)
+        # a pattern length still missed: the ellipse searched for it (the drive flank's
+        # length step; the 13x39 at Sigma 80: 0.65 long at 48.9 / 197 N m, no step moved it)
+        best = checked_length(best, targets, setup, teeth, say, placed,
+                              level=start.get(TE_NAME, math.nan), flank="coast",
+                              key_prefix=prefix)
         as_synthesised = all(round(v, 9) == round(start[k], 9) for k, v in best.values.items())
         # the check's one rank (check_rank): a coast LTE ltca run's verdict FAILs (above
         # 2 x 60 urad) last, then every target met, then the objective (issue 71)

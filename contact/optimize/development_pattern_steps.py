@@ -90,7 +90,8 @@ def checked_length(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                    setup: Mapping[str, Any], teeth: KeptTeeth | None,
                    say: Callable[[str], None],
                    placed: Callable[[Mapping[str, float]], Case], *,
-                   level: float = math.nan) -> DevelopmentEvaluation:
+                   level: float = math.nan, flank: str = "drive",
+                   key_prefix: tuple | None = None) -> DevelopmentEvaluation:
     """A pattern length missed at the check after the LTE steps, found by the ellipse
     (the lengthwise crowning): a secant search on ``ellipse_length`` for the light-load
     pattern length, aimed by :func:`length_aim` (first step at
@@ -105,6 +106,12 @@ def checked_length(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     the design's values carry none), then once more with its root relief ×
     :data:`LENGTH_RELIEF_FRACTION` where the LTE is missed by at most
     :data:`LENGTH_RELIEF_LTE` (:func:`_shallower_relief`), before the search goes on.
+    ``flank``: the flank analysed; on the coast flank (``key_prefix`` its kept pinion
+    tooth's key before the design's bearing, :func:`checked_best`) no mounting excursion is
+    analysed (the development's tolerance is the drive flank's) and a design is not kept
+    whose flank peak pressure at the design torque exceeds ``best``'s and the targets'
+    ``max_flank_pressure`` (:func:`_length_lost`: the coast design torque, set by the
+    coast flank's capacity, is not given up for the length).
 
     Why: no other check step moves a pattern into its length band. The path step turns
     the path (and shortens the ellipse only with a turn, lengthens it only where no turn
@@ -123,7 +130,10 @@ def checked_length(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     ``ltca synthesize``: 0.625 (0.63 long), 0.562 (0.57, 46 / 49 µrad), 0.594 (0.57, 39 /
     42), 0.594 with ``te_level`` 15 (37 / 39 µrad, every target met, tolerant, kept); on
     the 6x61 one design, 0.717 (docs/synthesis.md, "The pattern's length at the
-    check")."""
+    check"). The coast flank had no length step: the spiral bevel 13x39 at Σ 80° of
+    benchmarks/data/unseen_designs, its coast flank developed again at 48.9 / 197 N m
+    (path −45°, ellipse 0.55): pattern 0.65 long against 0.5 ± 0.1, every other target
+    met (docs/synthesis.md, "The coast flank's pattern length")."""
     name = "ellipse_length"
     if (best.full is None or not best.checked or best.full[1]["length"] == 0.0
             or name not in targets.variables or name not in best.values):
@@ -152,7 +162,8 @@ def checked_length(best: DevelopmentEvaluation, targets: DevelopmentTargets,
             break
         e = _said_variant(best, best.values | {name: x}, "length",
                           f"with the ellipse {x:.3g} (its pattern {length0:.2f} long)",
-                          targets, setup, teeth, say, placed)
+                          targets, setup, teeth, say, placed, flank=flank,
+                          key_prefix=key_prefix)
         if e is None:
             break
         length = pattern_length(e)
@@ -162,12 +173,14 @@ def checked_length(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         if e.full[1]["length"] > 0.0:  # overshot the band
             near = x
             continue
+        lost = _length_lost(targets, flank)
+        tolerant = flank == "drive"
         why = kept_why(best, e, targets, setup, teeth, say, "the ellipse for the length",
-                       lost=_lost_targets)
+                       lost=lost, tolerant=tolerant)
         if not why:
             return e
         near = x
-        if (_lost_targets(best, e) == ["lte"] and e.full[1]["lte"] <= NEAR_MISS
+        if (lost(best, e) == ["lte"] and e.full[1]["lte"] <= NEAR_MISS
                 and TE_NAME in targets.variables):
             t_lo = float(targets.variables[TE_NAME][0])
             now = float(e.values.get(TE_NAME, level))
@@ -176,14 +189,16 @@ def checked_length(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                 f = _said_variant(best, e.values | {TE_NAME: level}, "length",
                                   f"with the ellipse {x:.3g} at {TE_NAME} {level:.3g} urad "
                                   "(the length met, its LTE missed)",
-                                  targets, setup, teeth, say, placed)
+                                  targets, setup, teeth, say, placed, flank=flank,
+                                  key_prefix=key_prefix)
                 if not kept_why(best, f, targets, setup, teeth, say,
                                 "the ellipse for the length with the lower TE level",
-                                lost=_lost_targets):
+                                lost=lost, tolerant=tolerant):
                     return f
-        if (_lost_targets(best, e) == ["lte"] and e.full[1]["lte"] <= LENGTH_RELIEF_LTE
+        if (lost(best, e) == ["lte"] and e.full[1]["lte"] <= LENGTH_RELIEF_LTE
                 and (f := _shallower_relief(best, e, x, targets, setup, teeth, say,
-                                            placed)) is not None):
+                                            placed, flank=flank,
+                                            key_prefix=key_prefix)) is not None):
             return f
     return best
 
@@ -191,7 +206,8 @@ def checked_length(best: DevelopmentEvaluation, targets: DevelopmentTargets,
 def _shallower_relief(best: DevelopmentEvaluation, e: DevelopmentEvaluation, x: float,
                       targets: DevelopmentTargets, setup: Mapping[str, Any],
                       teeth: KeptTeeth | None, say: Callable[[str], None],
-                      placed: Callable[[Mapping[str, float]], Case]
+                      placed: Callable[[Mapping[str, float]], Case], *,
+                      flank: str = "drive", key_prefix: tuple | None = None
                       ) -> DevelopmentEvaluation | None:
     """:func:`checked_length`'s design ``e`` (the ellipse ``x``) that meets the length
     and gives up the LTE alone, by at most :data:`LENGTH_RELIEF_LTE`, tried with its root relief
@@ -207,12 +223,30 @@ def _shallower_relief(best: DevelopmentEvaluation, e: DevelopmentEvaluation, x: 
         return None
     f = _said_variant(best, e.values | {name: r}, "length",
                       f"with the ellipse {x:.3g} and {name} {r:.3g} um (the length met, "
-                      "its LTE missed)", targets, setup, teeth, say, placed)
+                      "its LTE missed)", targets, setup, teeth, say, placed, flank=flank,
+                      key_prefix=key_prefix)
     if kept_why(best, f, targets, setup, teeth, say,
                 "the ellipse for the length with the shallower root relief",
-                lost=_lost_targets):
+                lost=_length_lost(targets, flank), tolerant=flank == "drive"):
         return None
     return f
+
+
+def _length_lost(targets: DevelopmentTargets, flank: str
+                 ) -> Callable[[DevelopmentEvaluation, DevelopmentEvaluation], list[str]]:
+    """:func:`checked_length`'s lost targets on ``flank``: :func:`_lost_targets`; on the
+    coast flank with the flank peak pressure raised above ``best``'s and the targets'
+    ``max_flank_pressure`` (:func:`_pressure_raised`, as :func:`_coast_centre_kept`;
+    not said twice where the ``pressure`` target itself is lost)."""
+    if flank == "drive":
+        return _lost_targets
+
+    def lost(best: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:
+        gone = _lost_targets(best, e)
+        raised = "" if "pressure" in gone else _pressure_raised(best, e, targets)
+        return gone + ([raised] if raised else [])
+
+    return lost
 
 
 #: the near-miss step (:func:`checked_near_miss`): a missed target is near where its
