@@ -577,8 +577,8 @@ def _within_clause(lt: xr.Dataset, limit: float, design: float, torque: float) -
     if said is None:
         return ""
     return (f"; it stays {said}, interpolated linearly between this run's torques (the "
-            "LTE of a localised bearing is no smooth function of the torque: more torques "
-            "bracket it closer)")
+            "LTE of a localised bearing is no smooth function of the torque: more torques, "
+            "--torque, bracket it closer; ltca synthesize's note analyses four)")
 
 
 def _deflection_share(lt: xr.Dataset, torque: float, pp: float, limit: float) -> str:
