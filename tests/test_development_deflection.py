@@ -140,3 +140,46 @@ def test_synthesize_note_only_above_the_limit_at_the_design_torque(monkeypatch):
     assert seen == [(97.4, 649.4)]
     assert text == deflection_text(found, curvature_ratio(16, 16, math.radians(30),
                                                           math.radians(30)))
+
+
+def test_within_text_one_function_for_both_commands():
+    from contact.study.lte_within import within_text
+
+    # the 16x16's four torques: 60 urad at 281.4 + 13.01/63.63 * 184 = 319.0 N m, 49 %
+    said = within_text(TORQUES_16, LTE_16, 60.0, 649.4)
+    assert said == ("within 60 µrad up to about 319 N·m (49 % of the design torque; LTE p-p "
+                    "45 / 47 / 111 / 122 µrad at 97.4 / 281.4 / 465.4 / 649.4 N·m)")
+    assert within_text(TORQUES_16, LTE_16, 60.0, urad="urad", nm="N m").startswith(
+        "within 60 urad up to about 319 N m (LTE p-p 45 / 47")  # no design torque: no share
+    # nothing to name: one torque, within the limit at the last, above it at the first
+    assert within_text((649.4,), (121.6,), 60.0, 649.4) is None
+    assert within_text((97.4, 649.4), (39.2, 58.0), 60.0, 649.4) is None
+    assert within_text((97.4, 649.4), (61.0, 118.0), 60.0, 649.4) is None
+
+
+def test_the_verdicts_lte_finding_names_the_torque_within_the_limit():
+    from contact.study.verdicts import _lte
+
+    # stand-in numbers: LTE p-p 40 / 100 / 140 urad at 100 / 300 / 500 N m (each row's
+    # spread), mean deflection positive
+    ute = [0.0, 0.0, 0.0, 0.0]
+    rows = [[200.0, 240.0, 210.0, 220.0], [500.0, 600.0, 520.0, 540.0],
+            [800.0, 940.0, 820.0, 850.0]]
+    ds = _ltca([300.0, 100.0, 500.0], [rows[1], rows[0], rows[2]], ute)  # out of order
+    ds["pairs_in_contact"] = (("torque", "roll"), np.full((3, 4), 2.0))
+    found = _lte(ds, None, 60.0)
+    assert [f.severity for f in found] == ["attention", "fail"]  # 100 and 140 urad
+    # 60 urad at 100 + (60 - 40) / (100 - 40) * 200 = 166.7 N m; said once, on the largest
+    # torque's finding, with the run's torques and no design-torque share (no rating)
+    clause = ("it stays within 60 µrad up to about 166.7 N·m (LTE p-p 40 / 100 / 140 µrad "
+              "at 100 / 300 / 500 N·m), interpolated linearly between this run's torques")
+    assert clause not in found[0].reason
+    assert clause in found[1].reason
+    # with a rating's design torque of 300 N m: judged up to it, the share of it said
+    rating = xr.Dataset({"design_torque": ((), 300.0)})
+    (at_design,) = _lte(ds, rating, 60.0)
+    assert ("within 60 µrad up to about 166.7 N·m (56 % of the design torque; LTE p-p "
+            "40 / 100 µrad at 100 / 300 N·m)") in at_design.reason
+    # one torque (the single-torque run): nothing new said
+    (single,) = _lte(ds.isel(torque=[0]), None, 60.0)
+    assert "stays within" not in single.reason

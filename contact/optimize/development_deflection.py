@@ -36,19 +36,20 @@ torque).
 
 Public names
 ------------
-LTE_TORQUES, CURVATURE_RATIO_NOTE, DeflectionLTE, deflection_lte, within_torque, analysed,
+LTE_TORQUES, CURVATURE_RATIO_NOTE, DeflectionLTE, deflection_lte, within_torque (of
+:mod:`contact.study.lte_within`, which `ltca run`'s verdict shares), analysed,
 curvature_ratio, deflection_text
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
 from typing import NamedTuple
 
 import numpy as np
 import xarray as xr
 
+from contact.study.lte_within import within_text, within_torque
 from geometry.case import Case
 
 __all__ = ["CURVATURE_RATIO_NOTE", "LTE_TORQUES", "DeflectionLTE", "analysed",
@@ -93,50 +94,6 @@ class DeflectionLTE(NamedTuple):
     def within(self) -> float:
         """The torque [N·m] up to which the LTE p-p keeps the limit (:func:`within_torque`)."""
         return within_torque(self.torques, self.lte, self.limit)
-
-
-def within_torque(torques: Sequence[float], lte: Sequence[float], limit: float) -> float:
-    """The largest torque up to which an LTE p-p keeps a limit, from its values at a few
-    torques.
-
-    Parameters
-    ----------
-    torques : sequence of float, shape (n,) — [N·m]
-        Ascending torques.
-    lte : sequence of float, shape (n,) — [µrad]
-        The LTE peak-to-peak at each.
-    limit : float — [µrad]
-
-    Returns
-    -------
-    float — [N·m]
-        The first torque's crossing of ``limit`` from below, linear between the two torques
-        that bracket it; the last torque where the LTE keeps the limit at each; NaN where it
-        exceeds the limit at the first torque already, or a value is not finite.
-
-    Raises
-    ------
-    ValueError
-        ``torques`` and ``lte`` of different lengths, or empty.
-
-    Notes
-    -----
-    Linear interpolation between analysed torques (the LTE p-p of a localised bearing is
-    no smooth function of the torque: on the 16x16 at Σ 60° it stays at 45-47 µrad up to
-    281 N m and jumps to 111 at 465 N m, so the crossing is only as close as the torques
-    analysed: :data:`LTE_TORQUES`).
-    """
-    t = np.asarray(torques, float)
-    y = np.asarray(lte, float)
-    if t.shape != y.shape or t.size == 0:
-        raise ValueError(f"within_torque: {t.size} torques and {y.size} LTE values")
-    if not (np.all(np.isfinite(t)) and np.all(np.isfinite(y))) or y[0] > limit:
-        return math.nan
-    above = np.flatnonzero(y > limit)
-    if above.size == 0:
-        return float(t[-1])
-    i = int(above[0])
-    return float(t[i - 1] + (limit - y[i - 1]) / (y[i] - y[i - 1]) * (t[i] - t[i - 1]))
 
 
 def deflection_lte(ltca: xr.Dataset, limit: float | None = None) -> DeflectionLTE:
@@ -280,15 +237,12 @@ def deflection_text(found: DeflectionLTE, curvature: float = math.nan) -> str | 
     if not found.lte[-1] > found.limit or not found.deflection[-1] > 0.0:
         return None
     torque = found.torques[-1]
-    within = found.within
-    shown = " / ".join(f"{x:.0f}" for x in found.lte)
-    at = " / ".join(f"{t:.4g}" for t in found.torques)
-    up_to = ("" if not math.isfinite(within) else
-             f"; the written bearing keeps it within {found.limit:g} urad up to about "
-             f"{within:.4g} N m ({100 * within / torque:.0f} % of the design torque; LTE p-p "
-             f"{shown} urad at {at} N m): a design torque at or below it ([synthesis] "
-             "design_torque) is the step that keeps the limit (measured: that 16x16 at "
-             "300 N m, LTE p-p 57/55 urad at 45/300 N m)")
+    within = within_text(found.torques, found.lte, found.limit, torque, urad="urad",
+                         nm="N m")
+    up_to = ("" if within is None else
+             f"; the written bearing keeps it {within}: a design torque at or below it "
+             "([synthesis] design_torque) is the step that keeps the limit (measured: that "
+             "16x16 at 300 N m, LTE p-p 57/55 urad at 45/300 N m)")
     return (f"what sets the drive LTE at the design torque: the teeth deflect "
             f"{found.deflection[-1]:.0f} urad on average at {torque:.4g} N m (the gear's lag "
             f"under load, the mean loaded TE less the unloaded), and the LTE p-p "

@@ -532,6 +532,9 @@ def _lte(lt: xr.Dataset, rating: xr.Dataset | None, limit: float) -> list[Findin
     if not math.isfinite(design):
         design = math.inf
     out = []
+    above_at = [float(t) for t, pp in zip(lt["torque"].values, lt["lte_peak_to_peak"].values,
+                                         strict=True)
+             if np.isfinite(pp) and pp > limit and float(t) <= design]
     for t, pp in zip(lt["torque"].values, lt["lte_peak_to_peak"].values, strict=True):
         if not np.isfinite(pp) or pp <= limit or float(t) > design:
             continue
@@ -550,8 +553,32 @@ def _lte(lt: xr.Dataset, rating: xr.Dataset | None, limit: float) -> list[Findin
                            + " (the bearing's relief and TE level, or contact ratios below "
                            "their limits, set it; docs/verdicts.md)"
                            + (f"; {ratios}" if ratios else "")
-                           + _deflection_share(lt, t, pp, limit)))
+                           + _deflection_share(lt, t, pp, limit)
+                           + (_within_clause(lt, limit, design, float(t))
+                              if float(t) == max(above_at) else "")))
     return out
+
+
+def _within_clause(lt: xr.Dataset, limit: float, design: float, torque: float) -> str:
+    """The ``lte`` finding's clause on the torque up to which the LTE p-p keeps ``limit``,
+    interpolated linearly between the run's torques up to ``torque`` (the largest one the
+    check judges; :func:`contact.study.lte_within.within_text`, the words of ``ltca
+    synthesize``'s deflection note); empty where the run has one torque there or its LTE
+    exceeds the limit at the first already. Issue 71: ``ltca synthesize`` said the torque,
+    ``ltca run`` the deflection share only."""
+    from contact.study.lte_within import within_text
+
+    t = np.asarray(lt["torque"].values, float)
+    y = np.asarray(lt["lte_peak_to_peak"].values, float)
+    order = np.argsort(t)
+    t, y = t[order], y[order]
+    keep = t <= torque
+    said = within_text(t[keep], y[keep], limit, design)
+    if said is None:
+        return ""
+    return (f"; it stays {said}, interpolated linearly between this run's torques (the "
+            "LTE of a localised bearing is no smooth function of the torque: more torques, "
+            "--torque, bracket it closer; ltca synthesize's note analyses four)")
 
 
 def _deflection_share(lt: xr.Dataset, torque: float, pp: float, limit: float) -> str:
