@@ -698,9 +698,11 @@ def coast_torque_for_lte(case: Case, basic: BasicDesign, coast: Any, found: Coas
                 f"({' / '.join(f'{x:.0f}' for x in got)} urad at "
                 f"{' / '.join(f'{t:.4g}' for t in again.torques)} N m)")
             reason = (f"{there.reason + '; ' if there.reason else ''}its LTE p-p "
-                      f"{' / '.join(f'{x:.0f}' for x in lte[-2:])} urad at "
-                      f"{' / '.join(f'{t:.4g}' for t in seen[-2:])} N m, within "
-                      f"{LTE_LIMIT:g} urad up to {there.torque:.4g} N m")
+                      f"{' / '.join(f'{x:.0f}' for x in [*lte, got[1]])} urad at "
+                      f"{' / '.join(f'{t:.4g}' for t in [*seen, again.torques[1]])} N m "
+                      f"(the light torque, then each coast design torque tried), within "
+                      f"{LTE_LIMIT:g} urad up "
+                      f"to {there.torque:.4g} N m")
             return again, CoastCapacity(there.torque, found.start, checks, reason, True)
         order = np.argsort([*seen, float(again.torques[1])])
         pairs = [*zip(seen, lte, strict=True), (float(again.torques[1]), got[1])]
