@@ -172,12 +172,16 @@ def test_no_design_within_the_limit_keeps_the_design(monkeypatch):
     worse = dict(_DESIGNS) | {(0.75, 0.0368, _TR, 2 * _RR / 3):
                               ((0.08, 0.90), (43.2, 55.1), 2500.0, 0.011)}
     targets, setup, start, seen = _start(monkeypatch, worse)
-    lines = []
+    lines, near = [], []
     got = cap.checked_coast_capacity_lte(start, targets, setup, None, lines.append,
-                                         lambda v: dict(v), static=_STATIC)
+                                         lambda v: dict(v), static=_STATIC, near=near)
     assert got is start
     assert len(seen) == 5
     assert "above the static strength 2400 MPa" in lines[5]
+    # the designs refused for their LTE alone (M moved: 61 µrad), not the longest ellipse
+    # (62 µrad, the toe's clearance lost), one above the static strength or off a met
+    # target (the edges): the candidates of a lowered coast design torque
+    assert [max(e.metrics["lte_peak_to_peak"]) for e in near] == [61.2]
 
 
 def test_the_coast_design_torque_is_searched_again_on_the_bearing_kept(monkeypatch):
@@ -244,6 +248,80 @@ def test_the_coast_design_torque_is_searched_again_on_the_bearing_kept(monkeypat
     outcome, written = cap.coast_torque_that_holds(None, None, kept, before,
                                                    DevelopmentTargets(), {}, True, print)
     assert written is before and outcome.torques == (17.3, 90.5)
+
+
+def test_the_coast_design_torque_is_lowered_to_where_its_lte_holds(monkeypatch):
+    """coast_torque_that_holds on a bearing that holds at the coast design torque but
+    stays above 60 µrad there (the face-hobbed spiral bevel 20x24 at Σ 100°'s nearest
+    coast bearing: 38 / 71 µrad at 90.4 / 603.3 N m, the coast torque the drive's): the
+    coast design torque lowered to the crossing of 60 µrad, linear between the torques
+    analysed (90.4 + 22/33 × 512.9 = 432.3 N m), the capacity searched from there and
+    written where its LTE keeps the limit; its reason says so. A stand-in LTE linear in
+    the torque (the test is the rule, not the gear). Before the fix: None."""
+    from types import SimpleNamespace
+
+    from contact.optimize.development_coast import CoastCapacity, CoastCheck
+
+    def lte_at(t):
+        return 38.0 + 33.0 * (t - 90.4) / (603.3 - 90.4)
+
+    calls = []
+
+    def fake(case, basic, coast, targets, setup, start, root_stress, lower, say):
+        calls.append(start)
+        light = 0.15 * start
+        best = SimpleNamespace(metrics={"lte_peak_to_peak": [lte_at(90.4), lte_at(start)]})
+        found = CoastCapacity(start, start, (CoastCheck(start, 1400.0, _STATIC),), "", True)
+        return SimpleNamespace(torques=(light, start), best=best), found
+
+    monkeypatch.setattr(cap, "coast_flank_capacity", fake)
+    before = CoastCapacity(603.3, 603.3, (CoastCheck(603.3, 1370.0, _STATIC),), "", True)
+    kept = SimpleNamespace(torques=(90.4, 603.3), best=object())
+    lines = []
+    got = cap.coast_torque_that_holds(None, None, kept, before, DevelopmentTargets(), {},
+                                      True, lines.append)
+    assert got is not None
+    outcome, written = got
+    assert calls == [603.3, 432.3]
+    assert written.torque == pytest.approx(432.3) and written.lowered and written.holds
+    assert max(outcome.best.metrics["lte_peak_to_peak"]) <= 60.0
+    assert "within 60 urad up to 432.3 N m" in written.reason
+    assert lines[-1].endswith("set by its LTE p-p within 60 urad")
+    # above the limit at the light torque already: no torque keeps it, None
+    calls.clear()
+    monkeypatch.setattr(cap, "coast_flank_capacity", lambda *a: (SimpleNamespace(
+        torques=(90.4, 603.3), best=SimpleNamespace(
+            metrics={"lte_peak_to_peak": [61.0, 104.0]})), before))
+    assert cap.coast_torque_that_holds(None, None, kept, before, DevelopmentTargets(), {},
+                                       True, lines.append) is None
+    # a coast design torque the basic file gives is kept (as the drive's lte_capacity)
+    monkeypatch.setattr(cap, "coast_flank_capacity", fake)
+    given = SimpleNamespace(options=SimpleNamespace(design_torque=None),
+                            rating={"coast_design_torque": 603.3})
+    assert cap.coast_torque_that_holds(None, given, kept, before, DevelopmentTargets(), {},
+                                       True, lines.append) is None
+
+
+def test_the_lighter_reliefs_on_the_design_where_the_longest_ellipse_loses_a_target(
+        monkeypatch):
+    """Where the longest ellipse's pattern runs to both ends (0.00-0.98 of the face, the
+    20x24 at Σ 100°: no M's place gives both clearances back), the lighter reliefs are
+    tried on the design itself, not on the ellipse that lost the toe and heel; those
+    refused for their LTE alone are the candidates of a lowered coast design torque."""
+    designs = {
+        (0.55, 0.0, _TR, _RR): ((0.12, 0.78), (61.3, 104.5), 1370.0, 0.016),
+        (0.75, 0.0, _TR, _RR): ((0.00, 0.98), (53.0, 87.0), 1500.0, 0.016),
+        (0.55, 0.0, _TR, 2 * _RR / 3): ((0.12, 0.78), (58.0, 93.0), 1450.0, 0.016),
+        (0.55, 0.0, 2 * _TR / 3, _RR): ((0.12, 0.78), (33.0, 109.0), 1500.0, 0.016),
+        (0.55, 0.0, 2 * _TR / 3, 2 * _RR / 3): ((0.12, 0.78), (32.0, 91.0), 1620.0, 0.016),
+    }
+    targets, setup, start, seen = _start(monkeypatch, designs)
+    near = []
+    got = cap.checked_coast_capacity_lte(start, targets, setup, None, print,
+                                         lambda v: dict(v), static=_STATIC, near=near)
+    assert got is start
+    assert [k[0] for k in seen] == [0.75, 0.55, 0.55, 0.55]
+    assert sorted(max(e.metrics["lte_peak_to_peak"]) for e in near) == [91.0, 93.0, 109.0]
 
 
 @pytest.mark.slow
