@@ -27,6 +27,7 @@ import numpy as np
 from contact.optimize.development_evaluate import KeptTeeth
 from contact.optimize.development_keep import kept_why, lost_targets
 from contact.optimize.development_lte_steps import lte_reached
+from contact.optimize.development_matched_te import lte_ends
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import DevelopmentTargets
 from contact.optimize.development_variant import said_variant
@@ -150,7 +151,7 @@ def runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets) -> bool:
             or "lte_peak_to_peak" not in best.metrics
             or not all(n in targets.variables and n in best.values for n in NAMES)):
         return False
-    design = float(np.asarray(best.metrics["lte_peak_to_peak"], float)[-1])
+    design = lte_ends(best)[1]
     if not design > lte_limit(targets):  # NaN: not run
         return False
     lo = float(targets.variables["tip_relief"][0])
@@ -216,8 +217,7 @@ def checked_tip_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     start = best
     (r_lo, r_hi), (s_lo, s_hi) = (tuple(float(x) for x in targets.variables[n])
                                   for n in NAMES)
-    light, design = (float(x) for x in np.asarray(start.metrics["lte_peak_to_peak"],
-                                                   float)[[0, -1]])
+    light, design = lte_ends(start)
     limit = lte_limit(targets)
     lte_reached(setup, start, f"design {start.index + 1} as checked")
     tried: list[dict[str, float]] = []
@@ -245,7 +245,7 @@ def checked_tip_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
             break
     if best.full[2]:
         return best
-    kept_design = float(np.asarray(best.metrics["lte_peak_to_peak"], float)[-1])
+    kept_design = lte_ends(best)[1]
     s_now = float(best.values["tip_relief_start"])
     earlier = round(float(np.clip(s_now - TIP_LTE_START_STEP, s_lo, s_hi)), 4)
     if not (kept_design > limit and earlier < s_now - 1e-9):
