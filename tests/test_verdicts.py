@@ -641,6 +641,40 @@ def test_lte_beyond_twice_its_limit_fails():
     assert run([90.0, 855.0], rating=rating).severity == "attention"
 
 
+def test_the_default_case_says_its_edges_above_the_static_strength(default_tree):
+    """Every edge kind of the default case carrying at least EDGE_SHARE_MIN of the torque
+    whose peak is above the static strength and below the edges' contact-pressure limit
+    is named at its torque, and no other (issue 71: ``ltca run``'s ``p_max edge`` judged;
+    the default run at 50/250/500 N·m: the gear heel 2413 MPa at 50 N·m, heel and tip at
+    250, the pinion edge at 500). Shares by ``edge_load_share(kinds=)``, peaks by numpy."""
+    from contact.study.verdicts import EDGE_SHARE_MIN
+
+    sigma_hlim, z_nt = _sigma_hlim()
+    static = sigma_hlim * z_nt
+    lt = default_tree["ltca"].to_dataset()
+    cap = float(lt.attrs["edge_pressure_limit_MPa"])
+    kind = np.asarray(lt["segment_kind"].values).astype(str)
+    p = np.nan_to_num(lt["pressure_max"].transpose("torque", ...).values)
+    named = {"gear_heel": "gear heel", "gear_toe": "gear toe", "gear_tip": "gear tip",
+             "pinion_edge": "pinion edge"}
+    expect = []
+    for k, words in named.items():
+        if not np.any(kind == k):
+            continue
+        peak = p[..., kind == k].reshape(p.shape[0], -1).max(axis=1)
+        share = edge_load_share(lt, kinds=(k,))
+        for i in range(p.shape[0]):
+            if share[i] >= EDGE_SHARE_MIN and static < peak[i] < cap:
+                expect.append(f"{peak[i]:.0f} MPa on the {words} ({100 * share[i]:.2f} % of "
+                              "the torque)")
+    found = [f for f in verdict(default_tree).findings if f.check == "edge_pressure"]
+    assert expect, "the default case has an edge above its static strength at 50/500 N·m"
+    (f,) = found
+    assert f.severity == "attention"
+    assert all(e in f.reason for e in expect)
+    assert f.reason.count(" MPa on the ") == len(expect)
+
+
 def test_the_default_case_meets_the_lte_limit(default_tree):
     """The bundled default case runs at 15-23 µrad (golden file, 50/250/500 N·m): the
     ``lte`` check is made and finds nothing."""
