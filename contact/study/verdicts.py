@@ -44,6 +44,14 @@ The checks and their thresholds, per kind of result (:data:`CHECKS`):
   pattern (``pressure_envelope``) reaches — the outermost nodes of the gear grid.
 * ``plastic_edges`` (attention): segments at their contact-pressure limit carrying a share
   of the torque up to the plausibility limit (beyond it: ``implausible``).
+* ``edge_pressure`` (attention): per torque, the edge kinds carrying at least
+  :data:`EDGE_SHARE_MIN` of the torque whose peak pressure (``pressure_max`` over their
+  segments; ``pressure_max_edge`` where the dataset has no segments) exceeds the static
+  strength σ_Hlim·Z_NT,static of the weaker member — the ``flank_pressure`` FAIL limit,
+  which that check applies to the contact curves only — below the edges'
+  contact-pressure limit (at it: ``plastic_edges``). Attention, as a plastic edge is: the
+  mate's flank under the edge has no life by its S–N curve until running-in flattens the
+  edge, a relief or an edge break answers it.
 * ``certification`` (attention): roll positions without a certified contact solution;
   fail where a torque has none (the analysis failed there:
   :func:`contact.ltca.summary.certification`).
@@ -529,25 +537,22 @@ def _edge_pressure(lt: xr.Dataset) -> list[Finding]:
         peaks = {"": np.nan_to_num(np.asarray(lt["pressure_max_edge"].values, float))}
     where = []
     for i, t in enumerate(lt["torque"].values):
-        high = sorted(((k, float(peaks[k][i]), float(shares[k][i])) for k in peaks
+        high = sorted(((k, float(peaks[k][i])) for k in peaks
                        if shares[k][i] >= EDGE_SHARE_MIN and peaks[k][i] > static
                        and below_cap(peaks[k][i])), key=lambda e: -e[1])
         if high:
-            each = ", ".join(f"{p:.0f} MPa" + (f" on the {_EDGE_WORDS[k]} "
-                                                 f"({_percent(s, 2)} % of the torque)"
-                                                 if k else "")
-                             for k, p, s in high)
+            each = ", ".join(f"{p:.0f} MPa" + (f" on the {_EDGE_WORDS[k]}" if k else "")
+                             for k, p in high)
             where.append(f"{each} at {_t(t)}")
     if not where:
         return []
-    limit = (f", below the edges' contact-pressure limit {cap:.0f} MPa"
-             if np.isfinite(cap) else "")
+    limit = f"; the edges' limit {cap:.0f} MPa" if np.isfinite(cap) else ""
     return [Finding("attention", "edge_pressure",
                     f"edge peak pressure above the static strength {static:.0f} MPa "
                     f"(σ_Hlim {weak.allowable:.0f} MPa × Z_NT {weak.static_life_factor:g}, "
-                    f"{mat}, grade {GRADE}){limit}: {'; '.join(where)}; the mate's flank "
-                    "under the edge has no life there by its S–N curve until running-in "
-                    "flattens the edge (a relief or an edge break takes the load off it)")]
+                    f"{mat}, grade {GRADE}{limit}): {'; '.join(where)}; the flank under the "
+                    "edge has no life there by its S–N curve until running-in flattens the "
+                    "edge (a relief or an edge break answers it)")]
 
 
 def _certification(lt: xr.Dataset) -> list[Finding]:
