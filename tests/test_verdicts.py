@@ -86,7 +86,12 @@ def test_the_default_case_is_flagged_for_its_flank_pressure_and_heel_contact(def
     # run_analysis runs the whole chain (issue 63): /friction, /scuffing_micropitting and
     # /rating are there, so every check is made (a tree without a group names the checks it
     # could not make: test_refusals); the findings beyond the limit are counted
-    assert not v.unchecked and {"scuffing", "micropitting", "rating"} <= set(v.checks)
+    # but micropitting: the default oil gives no λ_GFP, its S_λ NaN at every torque, which
+    # no check can judge (said, not passed: "the verdict judges all it prints")
+    assert {"scuffing", "rating"} <= set(v.checks) and "micropitting" not in v.checks
+    ((check, why),) = v.unchecked
+    assert check == "micropitting" and why.startswith("micropitting_safety NaN at every torque")
+    assert "gives no permissible_specific_film" in why
     assert lines[3].startswith("  … and ") and lines[-1] == lines[3]
 
 
@@ -193,7 +198,24 @@ def test_scuffing_and_micropitting_below_one_fail(name, group):
     v = verdict(_tree(ltca=_ltca([700.0]), **{group: fr}))
     assert [(f.severity, f.check) for f in v.findings] == [("fail", name.split("_")[0])]
     assert "0.999 at 2 N·m below 1" in v.findings[0].reason
-    assert {"scuffing", "micropitting"} <= set(v.checks)
+    made = name.split("_")[0]
+    other = ({"scuffing", "micropitting"} - {made}).pop()
+    assert made in v.checks and other not in v.checks
+    assert dict(v.unchecked)[other] == f"/{group} lacks the variables it reads"
+
+
+def test_a_safety_nan_at_every_torque_is_not_checked_with_its_reason():
+    """The default oil gives no λ_GFP: S_λ NaN at every torque, printed by ``ltca run``
+    with its reason; the verdict no longer lists the check as made."""
+    why = "NaN: the oil X gives no permissible_specific_film"
+    sm = xr.Dataset({"scuffing_safety": ("torque", [3.0]),
+                     "micropitting_safety": ("torque", [np.nan], {"comment": why})},
+                    coords={"torque": [50.0]})
+    v = verdict(_tree(ltca=_ltca([700.0]), scuffing_micropitting=sm))
+    assert v.severity == "pass" and "scuffing" in v.checks
+    assert dict(v.unchecked)["micropitting"] == ("micropitting_safety NaN at every torque: "
+                                                 "the oil X gives no "
+                                                 "permissible_specific_film")
 
 
 def test_scuffing_unchecked_says_which_group_is_missing():

@@ -931,7 +931,11 @@ def _analysis(tree: xr.DataTree, lte_limit: float = LTE_LIMIT
     if sm is None and fr is not None:
         sm = fr
     if sm is not None and ("scuffing_safety" in sm or "micropitting_safety" in sm):
-        checks += ["scuffing", "micropitting"]
+        # a safety NaN at every torque judged nothing: not checked, with its reason
+        # (_unchecked; the oil without λ_GFP of the default run's 75W90)
+        checks += [c for c, n in (("scuffing", "scuffing_safety"),
+                                  ("micropitting", "micropitting_safety"))
+                   if n in sm and np.any(np.isfinite(np.asarray(sm[n].values, float)))]
         findings += _safeties(sm)
     if rt is not None:
         checks += ["rating"]
@@ -1327,6 +1331,16 @@ def _unchecked(result, kind: str, checks: list[str]) -> tuple[tuple[str, str], .
         g = group.get(c, "ltca")
         why = (_ANALYSIS_GROUPS[g] if _group(result, g) is None
                else f"/{g} lacks the variables it reads")
+        if c in ("scuffing", "micropitting") and _group(result, g) is None:
+            # a file written before issue 63 holds the safeties in /friction
+            sm = _group(result, "friction")
+            g = "friction" if sm is not None and f"{c}_safety" in sm else g
+        sm = _group(result, g)
+        if c in ("scuffing", "micropitting") and sm is not None and f"{c}_safety" in sm:
+            # there, NaN at every torque: the step's own reason (its comment)
+            said = str(sm[f"{c}_safety"].attrs.get("comment", ""))
+            why = (f"{c}_safety NaN at every torque"
+                   + (f": {said.removeprefix('NaN: ')}" if said else ""))
         if g == "rating" and _group(result, g) is not None:
             from contact.load_capacity.contract import safeties
 
