@@ -75,7 +75,8 @@ def test_an_edge_above_the_static_strength_is_an_attention_on_either_flank():
     assert static == 2400.0
     (f,) = _edge_findings(_mesh(static + 1.0))
     assert f.severity == "attention"
-    assert f.reason.startswith(f"edge peak pressure above the static strength {static:.0f} MPa")
+    assert f.reason.startswith(f"edge peak pressure above the flank's static strength "
+                               f"{static:.0f} MPa")
     assert f"{static + 1:.0f} MPa on the pinion edge at 169.4 N·m" in f.reason
     assert f"the edges' limit {LIMIT:.0f} MPa" in f.reason
     # the flank in contact does not matter: the coast (convex) as the drive (concave)

@@ -50,8 +50,8 @@ The checks and their thresholds, per kind of result (:data:`CHECKS`):
   strength σ_Hlim·Z_NT,static of the weaker member — the ``flank_pressure`` FAIL limit,
   which that check applies to the contact curves only — below the edges'
   contact-pressure limit (at it: ``plastic_edges``). Attention, as a plastic edge is: the
-  mate's flank under the edge has no life by its S–N curve until running-in flattens the
-  edge, a relief or an edge break answers it.
+  S–N curve is of flank contact and counts no edge damage, but the flank under the edge
+  carries more than a flank contact survives; a relief or an edge break answers it.
 * ``certification`` (attention): roll positions without a certified contact solution;
   fail where a torque has none (the analysis failed there:
   :func:`contact.ltca.summary.certification`).
@@ -508,13 +508,16 @@ def _edge_pressure(lt: xr.Dataset) -> list[Finding]:
     on its ``pressure_max_edge`` alone.
 
     The edge bears on the mate's flank with a Hertzian pressure (the edge rounding's,
-    ``pressure_max_edge``): above the flank's static strength the flank there has no life
-    by its S–N curve (ISO 6336-2:2019, Z_NT at N ≤ 10⁵) until running-in flattens the
-    edge; attention, not fail, as an edge at the material's limit (``plastic_edges``) is:
-    an edge is the pattern's, answered by its relief or an edge break. Before this check
-    nothing judged ``ltca run``'s ``p_max edge`` column: the face-hobbed spiral bevel 20x24
-    at Σ 100°'s coast bearing at 169.4 N·m (issue 71, round 17) peaked 2488 MPa on its
-    pinion edge above 2400 MPa and its coast verdict said only the edge's share."""
+    ``pressure_max_edge``) above what the flank survives as a flank contact (ISO 6336-2,
+    Z_NT at the S–N curve's static end). The S–N curve is of flank contact, so no damage is
+    counted for edges (``ltca duty-cycle``'s ``edge_contact`` note: edges are bounded by
+    their contact-pressure limit): attention, not fail, as an edge at that limit
+    (``plastic_edges``) is — a FAIL here would rank an edge at 2413 MPa above one at the
+    5262 MPa limit; an edge is the pattern's, answered by a relief or an edge break.
+    Before this check nothing judged ``ltca run``'s ``p_max edge`` column: the face-hobbed
+    spiral bevel 20x24 at Σ 100°'s coast bearing at 169.4 N·m (issue 71, round 17) peaked
+    2488 MPa on its pinion edge above 2400 MPa and its coast verdict said only the edge's
+    share."""
     from contact.load_capacity.durability import sn_curves
 
     names = {lt.attrs.get("material_pinion"), lt.attrs.get("material_gear")} - {None}
@@ -548,11 +551,12 @@ def _edge_pressure(lt: xr.Dataset) -> list[Finding]:
         return []
     limit = f"; the edges' limit {cap:.0f} MPa" if np.isfinite(cap) else ""
     return [Finding("attention", "edge_pressure",
-                    f"edge peak pressure above the static strength {static:.0f} MPa "
+                    f"edge peak pressure above the flank's static strength {static:.0f} MPa "
                     f"(σ_Hlim {weak.allowable:.0f} MPa × Z_NT {weak.static_life_factor:g}, "
-                    f"{mat}, grade {GRADE}{limit}): {'; '.join(where)}; the flank under the "
-                    "edge has no life there by its S–N curve until running-in flattens the "
-                    "edge (a relief or an edge break answers it)")]
+                    f"{mat}, grade {GRADE}{limit}): {'; '.join(where)}; the S–N curve is "
+                    "of flank contact (no damage counted), but the flank under the edge "
+                    "carries more than a flank contact survives: a relief or an edge break "
+                    "takes the load off the edge")]
 
 
 def _certification(lt: xr.Dataset) -> list[Finding]:
