@@ -92,7 +92,8 @@ def test_the_default_case_is_flagged_for_its_flank_pressure_and_heel_contact(def
     ((check, why),) = v.unchecked
     assert check == "micropitting" and why.startswith("micropitting_safety NaN at every torque")
     assert "gives no permissible_specific_film" in why
-    assert lines[3].startswith("  … and ") and lines[-1] == lines[3]
+    assert lines[3].startswith("  not checked: micropitting (")
+    assert lines[4].startswith("  … and ") and lines[-1] == lines[4]
 
 
 def _tree(**groups: xr.Dataset) -> xr.DataTree:

@@ -1333,12 +1333,12 @@ def _unchecked(result, kind: str, checks: list[str]) -> tuple[tuple[str, str], .
             out.append((c, unchecked_reason(result, c)))
             continue
         g = group.get(c, "ltca")
+        old = _group(result, "friction") if c in ("scuffing", "micropitting") else None
+        if (_group(result, g) is None and old is not None
+                and ("scuffing_safety" in old or "micropitting_safety" in old)):
+            g = "friction"  # a file written before issue 63 holds the safeties there
         why = (_ANALYSIS_GROUPS[g] if _group(result, g) is None
                else f"/{g} lacks the variables it reads")
-        if c in ("scuffing", "micropitting") and _group(result, g) is None:
-            # a file written before issue 63 holds the safeties in /friction
-            sm = _group(result, "friction")
-            g = "friction" if sm is not None and f"{c}_safety" in sm else g
         sm = _group(result, g)
         if c in ("scuffing", "micropitting") and sm is not None and f"{c}_safety" in sm:
             # there, NaN at every torque: the step's own reason (its comment)
