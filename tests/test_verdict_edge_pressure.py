@@ -137,3 +137,37 @@ def test_the_lowered_coast_bearing_of_the_20x24_is_flagged():
     assert f.severity == "attention"
     assert f"{edge[1]:.0f} MPa on the pinion edge at 169.4 N·m" in f.reason
     assert "90.4 N·m" not in f.reason
+
+
+def _duty(edge_p: list[float], share: list[float], plastic: list[float]) -> xr.Dataset:
+    """Three bins of a duty cycle: the variables the duty check reads, the static strength
+    per bin and member as the duty cycle stores it (the weaker member's judged)."""
+    static = _static()
+    return xr.Dataset(
+        {"torque": ("bin", [100.0, 200.0, 300.0]), "hours": ("bin", [1.0, 1.0, 1.0]),
+         "pressure_max_edge": ("bin", edge_p), "edge_load_share": ("bin", share),
+         "plastic_load_share": ("bin", plastic),
+         "contact_static_strength": (("bin", "member"),
+                                     [[static, static + 50.0]] * 3),
+         "contact_safety_factor": ("member", [1.2, 1.3])},
+        coords={"member": ["pinion", "gear"]}, attrs={"illustrative": 0})
+
+
+def test_a_duty_cycle_says_its_bins_edges_above_the_static_strength():
+    """``ltca duty-cycle`` prints each bin's edge peak: judged as ``ltca run``'s (the bins'
+    total edge share; a plastic bin is the plastic_edges check's)."""
+    static = _static()
+    ds = _duty([static + 10.0, static + 10.0, LIMIT], [0.01, 0.1 * EDGE_SHARE_MIN, 0.02],
+               [0.0, 0.0, 0.01])
+    v = verdict(ds)
+    assert v.kind == "duty cycle" and "edge_pressure" in v.checks
+    (f,) = [f for f in v.findings if f.check == "edge_pressure"]
+    assert f.severity == "attention"
+    assert f"in 1 of 3 bins: {static + 10:.0f} MPa in bin 0 (100 N·m, static strength " \
+        f"{static:.0f} MPa)" in f.reason
+    assert "plastic_edges" in {g.check for g in v.findings}
+    # at the static strength: no finding; a file without the variables: no check
+    assert not [f for f in verdict(_duty([static] * 3, [0.01] * 3, [0.0] * 3)).findings
+                if f.check == "edge_pressure"]
+    old = verdict(ds.drop_vars("contact_static_strength"))
+    assert "edge_pressure" in dict(old.unchecked)

@@ -117,8 +117,11 @@ static strength (docs/verdicts.md, "Findings a reader trusts").
   uncertified roll positions; ``plastic_edges`` (attention) bins whose segments at the
   material's contact-pressure limit carry a share of the torque up to
   :data:`contact.ltca.plausibility.PLASTIC_SHARE_LIMIT` (above it ``implausible``), as
-  ``ltca run``'s check of the same name; ``bending`` (attention) the bending side not evaluated;
-  ``illustrative`` (attention) the bundled made-up spectrum.
+  ``ltca run``'s check of the same name; ``edge_pressure`` (attention) bins whose edges
+  carry at least :data:`EDGE_SHARE_MIN` with ``pressure_max_edge`` above the bin's
+  ``contact_static_strength`` and no plastic segment, as ``ltca run``'s; ``bending``
+  (attention) the bending side not evaluated; ``illustrative`` (attention) the bundled
+  made-up spectrum.
 
 **V-H check** (the dataset of ``ltca vh-check``).
 
@@ -1058,6 +1061,36 @@ def _duty_plastic(ds: xr.Dataset) -> list[Finding]:
                     "running")]
 
 
+def _duty_edge_pressure(ds: xr.Dataset) -> list[Finding] | None:
+    """``ltca run``'s ``edge_pressure`` attention (:func:`_edge_pressure`) for a spectrum:
+    the bins whose edges carry at least :data:`EDGE_SHARE_MIN` of the torque with their
+    peak ``pressure_max_edge`` above the bin's ``contact_static_strength`` (the weaker
+    member's), no segment at the contact-pressure limit (a bin with a ``plastic_load_share``
+    is the ``plastic_edges`` check's). The bins hold the edges' total share only, so the
+    edge kind is not named. None for a file without those variables (no check made)."""
+    need = {"pressure_max_edge", "edge_load_share", "contact_static_strength", "torque"}
+    if not need <= set(ds.variables):
+        return None
+    p = np.nan_to_num(np.asarray(ds["pressure_max_edge"].values, float))
+    share = np.nan_to_num(np.asarray(ds["edge_load_share"].values, float))
+    strength = np.asarray(ds["contact_static_strength"].values, float).min(axis=-1)
+    plastic = (np.nan_to_num(np.asarray(ds["plastic_load_share"].values, float))
+               if "plastic_load_share" in ds else np.zeros_like(p))
+    torque = np.asarray(ds["torque"].values, float)
+    bad = np.flatnonzero((share >= EDGE_SHARE_MIN) & (p > strength) & (plastic <= 0.0))
+    if not bad.size:
+        return []
+    each = "; ".join(f"{p[i]:.0f} MPa in bin {i} ({_t(torque[i])}, static strength "
+                     f"{strength[i]:.0f} MPa)" for i in bad)
+    return [Finding("attention", "edge_pressure",
+                    f"edge peak pressure above the flank's static strength (σ_Hlim × Z_NT at "
+                    f"the S–N curve's static end, the weaker member) in {bad.size} of "
+                    f"{p.size} bins: {each}; the S–N curve is of flank contact (no damage "
+                    "counted), but the flank under the edge carries more than a flank "
+                    "contact survives: a relief or an edge break takes the load off the "
+                    "edge")]
+
+
 def _duty_lte(ds: xr.Dataset, limit: float = LTE_LIMIT) -> list[Finding]:
     """The duty cycle's ``lte`` check: the bins whose LTE peak-to-peak exceeds ``limit``
     [µrad], an attention (the bins carry the deflection table's misalignment; ``ltca run``
@@ -1141,6 +1174,10 @@ def _duty(ds: xr.Dataset) -> tuple[list[Finding], list[str]]:
                 f"{_t(float(ds['torque'].values[i]))}); its pressure is not counted as "
                 "pitting damage"))
     findings += _duty_plastic(ds)
+    edges = _duty_edge_pressure(ds)
+    if edges is not None:
+        checks.append("edge_pressure")
+        findings += edges
     if "lte_peak_to_peak" in ds and "torque" in ds:
         checks.append("lte")
         findings += _duty_lte(ds)
@@ -1252,7 +1289,8 @@ CHECKS: Mapping[str, tuple[str, ...]] = {
                  "edge_pressure", "certification", "lte", "friction_extrapolated", "scuffing",
                  "micropitting", "rating", "root_stress", "scuffing_standard"),
     "duty cycle": ("damage", "safety", "implausible", "static", "edge_contact",
-                   "plastic_edges", "certification", "bending", "illustrative", "lte"),
+                   "plastic_edges", "edge_pressure", "certification", "bending",
+                   "illustrative", "lte"),
     "V-H check": ("degenerate", "target", "map"),
 }
 
