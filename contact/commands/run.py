@@ -425,7 +425,8 @@ def _run(args: argparse.Namespace) -> int:
 
 
 #: the verdict's checks a bearing change answers (the pattern, its edges, its pressure)
-BEARING_CHECKS = ("implausible", "plastic_edges", "edge_contact", "flank_pressure")
+BEARING_CHECKS = ("implausible", "plastic_edges", "edge_pressure", "edge_contact",
+                  "flank_pressure")
 #: the checks only a larger or stronger gear set answers
 CAPACITY_CHECKS = ("rating", "static")
 #: the case-level variables the bearing hint offers, with their half-range about the

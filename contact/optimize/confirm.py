@@ -36,7 +36,8 @@ __all__ = ["BEARING_CHECKS", "Confirmation", "confirm_design"]
 log = logging.getLogger(__name__)
 
 #: the verdict's checks a bearing change answers (as ``ltca run``'s next steps)
-BEARING_CHECKS = ("implausible", "plastic_edges", "edge_contact", "flank_pressure")
+BEARING_CHECKS = ("implausible", "plastic_edges", "edge_pressure", "edge_contact",
+                  "flank_pressure")
 
 
 @dataclass(frozen=True)

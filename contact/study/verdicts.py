@@ -44,6 +44,14 @@ The checks and their thresholds, per kind of result (:data:`CHECKS`):
   pattern (``pressure_envelope``) reaches — the outermost nodes of the gear grid.
 * ``plastic_edges`` (attention): segments at their contact-pressure limit carrying a share
   of the torque up to the plausibility limit (beyond it: ``implausible``).
+* ``edge_pressure`` (attention): per torque, the edge kinds carrying at least
+  :data:`EDGE_SHARE_MIN` of the torque whose peak pressure (``pressure_max`` over their
+  segments; ``pressure_max_edge`` where the dataset has no segments) exceeds the static
+  strength σ_Hlim·Z_NT,static of the weaker member — the ``flank_pressure`` FAIL limit,
+  which that check applies to the contact curves only — below the edges'
+  contact-pressure limit (at it: ``plastic_edges``). Attention, as a plastic edge is: the
+  S–N curve is of flank contact and counts no edge damage, but the flank under the edge
+  carries more than a flank contact survives; a relief or an edge break answers it.
 * ``certification`` (attention): roll positions without a certified contact solution;
   fail where a torque has none (the analysis failed there:
   :func:`contact.ltca.summary.certification`).
@@ -109,8 +117,11 @@ static strength (docs/verdicts.md, "Findings a reader trusts").
   uncertified roll positions; ``plastic_edges`` (attention) bins whose segments at the
   material's contact-pressure limit carry a share of the torque up to
   :data:`contact.ltca.plausibility.PLASTIC_SHARE_LIMIT` (above it ``implausible``), as
-  ``ltca run``'s check of the same name; ``bending`` (attention) the bending side not evaluated;
-  ``illustrative`` (attention) the bundled made-up spectrum.
+  ``ltca run``'s check of the same name; ``edge_pressure`` (attention) bins whose edges
+  carry at least :data:`EDGE_SHARE_MIN` with ``pressure_max_edge`` above the bin's
+  ``contact_static_strength`` and no plastic segment, as ``ltca run``'s; ``bending``
+  (attention) the bending side not evaluated; ``illustrative`` (attention) the bundled
+  made-up spectrum.
 
 **V-H check** (the dataset of ``ltca vh-check``).
 
@@ -185,7 +196,8 @@ MICROPITTING_MIN = 1.0
 #: small for its load: no bearing change answers it), then the rest
 CHECK_ORDER = ("certification", "implausible", "rating", "root_stress", "flank_pressure",
                "scuffing", "scuffing_standard", "micropitting", "static", "damage", "safety",
-               "plastic_edges", "edge_contact", "lte", "friction_extrapolated")
+               "plastic_edges", "edge_pressure", "edge_contact", "lte",
+               "friction_extrapolated")
 
 #: [1] least contact and bending safety factor of a duty cycle's peak-torque bin, life
 #: factor 1 (module docstring)
@@ -484,6 +496,70 @@ def _plastic(lt: xr.Dataset) -> list[Finding]:
                     f"this share of the torque at one roll: {where} (below the "
                     f"{100 * PLASTIC_SHARE_LIMIT:g} % plausibility limit); they flatten in "
                     "running")]
+
+
+def _edge_pressure(lt: xr.Dataset) -> list[Finding]:
+    """The edges whose peak pressure exceeds the static strength of the weaker member's
+    flank, σ_Hlim·Z_NT at the S–N curve's static end — the ``flank_pressure`` check's
+    FAIL limit, which it applies to the contact curves only — at every torque analysed:
+    per torque and edge kind (:data:`_EDGE_WORDS`) the peak of ``pressure_max`` over the
+    kind's segments, where the kind carries at least :data:`EDGE_SHARE_MIN` of the torque
+    (below: the discretisation's, as the ``edge_contact`` check) and is below the edges'
+    contact-pressure limit ``edge_pressure_limit_MPa`` (at it: the ``plastic_edges``
+    check's or ``implausible``'s). One attention listing them; none where no edge is
+    above the static strength. A dataset without the segments' kinds (a summary) is judged
+    on its ``pressure_max_edge`` alone.
+
+    The edge bears on the mate's flank with a Hertzian pressure (the edge rounding's,
+    ``pressure_max_edge``) above what the flank survives as a flank contact (ISO 6336-2,
+    Z_NT at the S–N curve's static end). The S–N curve is of flank contact, so no damage is
+    counted for edges (``ltca duty-cycle``'s ``edge_contact`` note: edges are bounded by
+    their contact-pressure limit): attention, not fail, as an edge at that limit
+    (``plastic_edges``) is — a FAIL here would rank an edge at 2413 MPa above one at the
+    5262 MPa limit; an edge is the pattern's, answered by a relief or an edge break.
+    Before this check nothing judged ``ltca run``'s ``p_max edge`` column: the face-hobbed
+    spiral bevel 20x24 at Σ 100°'s coast bearing at 169.4 N·m (issue 71, round 17) peaked
+    2488 MPa on its pinion edge above 2400 MPa and its coast verdict said only the edge's
+    share."""
+    from contact.load_capacity.durability import sn_curves
+
+    names = {lt.attrs.get("material_pinion"), lt.attrs.get("material_gear")} - {None}
+    if "pressure_max_edge" not in lt or not names:
+        return []
+    curves = [sn_curves(str(m), GRADE)["contact"] for m in sorted(names)]
+    weak = min(curves, key=lambda c: c.allowable)
+    static = weak.allowable * weak.static_life_factor
+    mat = sorted(names)[[c.allowable for c in curves].index(weak.allowable)]
+    cap = float(lt.attrs.get("edge_pressure_limit_MPa", np.nan))
+    below_cap = (lambda p: p < cap * (1.0 - 1e-9)) if np.isfinite(cap) else (lambda p: True)
+    shares = _edge_shares(lt)
+    if shares and {"pressure_max", "segment_kind"} <= set(lt.variables):
+        kind = np.asarray(lt["segment_kind"].values).astype(str)
+        pressure = np.nan_to_num(lt["pressure_max"].transpose("torque", ...).values)
+        peaks = {k: pressure[..., kind == k].reshape(pressure.shape[0], -1).max(axis=1)
+                 for k in shares}
+    else:  # no segments: the dataset's edge peak alone, unnamed
+        shares = {"": np.ones(lt.sizes["torque"])}
+        peaks = {"": np.nan_to_num(np.asarray(lt["pressure_max_edge"].values, float))}
+    where = []
+    for i, t in enumerate(lt["torque"].values):
+        high = sorted(((k, float(peaks[k][i])) for k in peaks
+                       if shares[k][i] >= EDGE_SHARE_MIN and peaks[k][i] > static
+                       and below_cap(peaks[k][i])), key=lambda e: -e[1])
+        if high:
+            each = ", ".join(f"{p:.0f} MPa" + (f" on the {_EDGE_WORDS[k]}" if k else "")
+                             for k, p in high)
+            where.append(f"{each} at {_t(t)}")
+    if not where:
+        return []
+    limit = f"; the edges' limit {cap:.0f} MPa" if np.isfinite(cap) else ""
+    return [Finding("attention", "edge_pressure",
+                    f"edge peak pressure above the flank's static strength {static:.0f} MPa "
+                    f"(σ_Hlim {weak.allowable:.0f} MPa × Z_NT {weak.static_life_factor:g}, "
+                    f"{mat}, grade {GRADE}{limit}): {'; '.join(where)}; the S–N curve is "
+                    "of flank contact (no damage counted), but the flank under the edge "
+                    "carries more than a flank contact survives: a relief or an edge break "
+                    "takes the load off the edge")]
 
 
 def _certification(lt: xr.Dataset) -> list[Finding]:
@@ -837,11 +913,11 @@ def _analysis(tree: xr.DataTree, lte_limit: float = LTE_LIMIT
     checks: list[str] = []
     if lt is not None:
         checks += ["implausible", "flank_pressure", "edge_contact", "plastic_edges",
-                   "certification"]
+                   "edge_pressure", "certification"]
         findings += _implausible(lt, lte_limit)
         findings += [Finding("fail", "implausible", w) for w in _misalignment(tree)]
         findings += (_flank_pressure(lt, _static_torques(rt)) + _edge_contact(lt)
-                     + _plastic(lt))
+                     + _plastic(lt) + _edge_pressure(lt))
         findings += _certification(lt)
         if "lte_peak_to_peak" in lt:
             checks += ["lte"]
@@ -862,7 +938,11 @@ def _analysis(tree: xr.DataTree, lte_limit: float = LTE_LIMIT
     if sm is None and fr is not None:
         sm = fr
     if sm is not None and ("scuffing_safety" in sm or "micropitting_safety" in sm):
-        checks += ["scuffing", "micropitting"]
+        # a safety NaN at every torque judged nothing: not checked, with its reason
+        # (_unchecked; the oil without λ_GFP of the default run's 75W90)
+        checks += [c for c, n in (("scuffing", "scuffing_safety"),
+                                  ("micropitting", "micropitting_safety"))
+                   if n in sm and np.any(np.isfinite(np.asarray(sm[n].values, float)))]
         findings += _safeties(sm)
     if rt is not None:
         checks += ["rating"]
@@ -981,6 +1061,36 @@ def _duty_plastic(ds: xr.Dataset) -> list[Finding]:
                     "running")]
 
 
+def _duty_edge_pressure(ds: xr.Dataset) -> list[Finding] | None:
+    """``ltca run``'s ``edge_pressure`` attention (:func:`_edge_pressure`) for a spectrum:
+    the bins whose edges carry at least :data:`EDGE_SHARE_MIN` of the torque with their
+    peak ``pressure_max_edge`` above the bin's ``contact_static_strength`` (the weaker
+    member's), no segment at the contact-pressure limit (a bin with a ``plastic_load_share``
+    is the ``plastic_edges`` check's). The bins hold the edges' total share only, so the
+    edge kind is not named. None for a file without those variables (no check made)."""
+    need = {"pressure_max_edge", "edge_load_share", "contact_static_strength", "torque"}
+    if not need <= set(ds.variables):
+        return None
+    p = np.nan_to_num(np.asarray(ds["pressure_max_edge"].values, float))
+    share = np.nan_to_num(np.asarray(ds["edge_load_share"].values, float))
+    strength = np.asarray(ds["contact_static_strength"].values, float).min(axis=-1)
+    plastic = (np.nan_to_num(np.asarray(ds["plastic_load_share"].values, float))
+               if "plastic_load_share" in ds else np.zeros_like(p))
+    torque = np.asarray(ds["torque"].values, float)
+    bad = np.flatnonzero((share >= EDGE_SHARE_MIN) & (p > strength) & (plastic <= 0.0))
+    if not bad.size:
+        return []
+    each = "; ".join(f"{p[i]:.0f} MPa in bin {i} ({_t(torque[i])}, static strength "
+                     f"{strength[i]:.0f} MPa)" for i in bad)
+    return [Finding("attention", "edge_pressure",
+                    f"edge peak pressure above the flank's static strength (σ_Hlim × Z_NT at "
+                    f"the S–N curve's static end, the weaker member) in {bad.size} of "
+                    f"{p.size} bins: {each}; the S–N curve is of flank contact (no damage "
+                    "counted), but the flank under the edge carries more than a flank "
+                    "contact survives: a relief or an edge break takes the load off the "
+                    "edge")]
+
+
 def _duty_lte(ds: xr.Dataset, limit: float = LTE_LIMIT) -> list[Finding]:
     """The duty cycle's ``lte`` check: the bins whose LTE peak-to-peak exceeds ``limit``
     [µrad], an attention (the bins carry the deflection table's misalignment; ``ltca run``
@@ -1064,6 +1174,10 @@ def _duty(ds: xr.Dataset) -> tuple[list[Finding], list[str]]:
                 f"{_t(float(ds['torque'].values[i]))}); its pressure is not counted as "
                 "pitting damage"))
     findings += _duty_plastic(ds)
+    edges = _duty_edge_pressure(ds)
+    if edges is not None:
+        checks.append("edge_pressure")
+        findings += edges
     if "lte_peak_to_peak" in ds and "torque" in ds:
         checks.append("lte")
         findings += _duty_lte(ds)
@@ -1172,10 +1286,11 @@ _KINDS: Mapping[str, Callable[..., tuple[list[Finding], list[str]]]] = {
 #: the checks of each kind of result (module docstring)
 CHECKS: Mapping[str, tuple[str, ...]] = {
     "analysis": ("implausible", "flank_pressure", "edge_contact", "plastic_edges",
-                 "certification", "lte", "friction_extrapolated", "scuffing", "micropitting",
-                 "rating", "root_stress", "scuffing_standard"),
+                 "edge_pressure", "certification", "lte", "friction_extrapolated", "scuffing",
+                 "micropitting", "rating", "root_stress", "scuffing_standard"),
     "duty cycle": ("damage", "safety", "implausible", "static", "edge_contact",
-                   "plastic_edges", "certification", "bending", "illustrative", "lte"),
+                   "plastic_edges", "edge_pressure", "certification", "bending",
+                   "illustrative", "lte"),
     "V-H check": ("degenerate", "target", "map"),
 }
 
@@ -1256,8 +1371,18 @@ def _unchecked(result, kind: str, checks: list[str]) -> tuple[tuple[str, str], .
             out.append((c, unchecked_reason(result, c)))
             continue
         g = group.get(c, "ltca")
+        old = _group(result, "friction") if c in ("scuffing", "micropitting") else None
+        if (_group(result, g) is None and old is not None
+                and ("scuffing_safety" in old or "micropitting_safety" in old)):
+            g = "friction"  # a file written before issue 63 holds the safeties there
         why = (_ANALYSIS_GROUPS[g] if _group(result, g) is None
                else f"/{g} lacks the variables it reads")
+        sm = _group(result, g)
+        if c in ("scuffing", "micropitting") and sm is not None and f"{c}_safety" in sm:
+            # there, NaN at every torque: the step's own reason (its comment)
+            said = str(sm[f"{c}_safety"].attrs.get("comment", ""))
+            why = (f"{c}_safety NaN at every torque"
+                   + (f": {said.removeprefix('NaN: ')}" if said else ""))
         if g == "rating" and _group(result, g) is not None:
             from contact.load_capacity.contract import safeties
 
