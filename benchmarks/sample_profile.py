@@ -2,6 +2,7 @@
 
     python benchmarks/sample_profile.py study                # 12 study points
     python benchmarks/sample_profile.py warm --tasks 20      # 20 warm analyses
+    python benchmarks/sample_profile.py torque               # each at a torque new to it
     python benchmarks/sample_profile.py study --lines "shell_tooth|conjugate_map"
 
 For machines without ``py-spy``: a CPU-time timer (``signal.ITIMER_PROF``, every 0.5 ms
@@ -10,10 +11,12 @@ of this process's CPU) interrupts the tasks, and each interrupt records the Pyth
 are issue 75's (``benchmarks/issue75_table.py``): a study point is
 :func:`contact.study.engine.analyse_point` of the default case at 250 N·m, each point a
 new ΔE, ΔP; a warm analysis is :func:`contact.pipeline.run_analysis` of the default case
-at 250 N·m; one warm-up of each first. Printed, in CPU ms per task (the samples' share of
-the measured CPU time): each function's inclusive time (on the stack) and exclusive time
-(on top), the compiled kernels' time by caller, and with ``--lines`` the inclusive time
-of each line of the functions whose ``file:function`` matches the regular expression.
+at 250 N·m (``torque``: each at a torque of its own, 0.8–1.2 × 250 N·m, as the table's
+row "a torque new to the process"); one warm-up of each first. Printed, in CPU ms per
+task (the samples' share of the measured CPU time): each function's inclusive time (on
+the stack) and exclusive time (on top), the compiled kernels' time by caller, and with
+``--lines`` the inclusive time of each line of the functions whose ``file:function``
+matches the regular expression.
 
 Why not cProfile: it costs a function call's worth of bookkeeping at every call, so on
 the study point's ~100 000 calls of small NumPy functions it doubled the CPU (0.50 s a
@@ -99,8 +102,8 @@ class Sampler:
 
 
 def tasks(kind: str):
-    """The task of ``kind`` (``"study"``, ``"warm"``) as a function of its index i of n,
-    after one warm-up."""
+    """The task of ``kind`` (``"study"``, ``"warm"``, ``"torque"``: a warm analysis at a
+    torque new to the process) as a function of its index i of n, after one warm-up."""
     from contact.catalogue import bundled_case_path
     from contact.pipeline import run_analysis
     from contact.study.engine import analyse_point
@@ -123,12 +126,16 @@ def tasks(kind: str):
     def warm(i: int, n: int) -> None:
         run_analysis(case, [TORQUE])
 
-    return study if kind == "study" else warm
+    def torque(i: int, n: int) -> None:
+        # issue 75's warm row at a torque new to the process: each task a torque of its own
+        run_analysis(case, [TORQUE * (0.8 + 0.4 * i / max(n, 1)) + 1.0])
+
+    return {"study": study, "warm": warm, "torque": torque}[kind]
 
 
 def main(argv: list[str] | None = None) -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("kind", choices=("study", "warm"))
+    ap.add_argument("kind", choices=("study", "warm", "torque"))
     ap.add_argument("--tasks", type=int, default=12, help="tasks sampled (12)")
     ap.add_argument("--top", type=int, default=40, help="functions listed (40)")
     ap.add_argument("--lines", metavar="REGEX",
