@@ -56,8 +56,7 @@ def test_a_design_missing_its_lte_alone_by_a_little_gets_the_lighter_tip_relief(
     assert [k for k, v in start.full[1].items() if v > 0] == ["lte"]
     calls.clear()
     lines = []
-    got = check(start, targets, setup, None, lines.append,
-                                        lambda v: dict(v))
+    got = check(start, targets, setup, None, lines.append, lambda v: dict(v))
     tip = LENGTH_RELIEF_FRACTION * 10.0
     assert [c[:2] for c in calls if not c[2]] == [(pytest.approx(tip), 40.0)]
     assert len(calls) == 1 + 4  # the kept design's excursions
@@ -76,8 +75,7 @@ def test_a_tip_relief_that_gives_up_the_edge_is_refused_then_the_root_relief(mon
     start = chosen(VALUES)
     calls.clear()
     lines = []
-    got = check(start, targets, setup, None, lines.append,
-                                        lambda v: dict(v))
+    got = check(start, targets, setup, None, lines.append, lambda v: dict(v))
     root = LENGTH_RELIEF_FRACTION * 40.0
     assert [c[:2] for c in calls if not c[2]] == [(pytest.approx(7.5), 40.0),
                                                   (10.0, pytest.approx(root))]
@@ -102,7 +100,6 @@ def test_no_step_where_the_lte_is_missed_by_more_or_another_target_too(
     start = chosen(VALUES)
     assert not start.full[2]
     calls.clear()
-    got = check(start, targets, setup, None, [].append,
-                                        lambda v: dict(v))
+    got = check(start, targets, setup, None, [].append, lambda v: dict(v))
     assert got is start and calls == []
     assert not dlight.lte_alone_near(start)

@@ -120,8 +120,7 @@ def test_a_lighter_relief_that_loses_a_target_ends_the_lighter_ones(monkeypatch)
     targets, setup, chosen = stand_in(monkeypatch, fake, [94.1, 627.7])
     start = chosen(dict(WRITTEN))
     seen.clear()
-    got = check(start, targets, setup, None, lambda s: None,
-                              lambda v: dict(v))
+    got = check(start, targets, setup, None, lambda s: None, lambda v: dict(v))
     assert [s["tip_relief"] for s in seen] == [19.68, 24.6]
     assert seen[1]["tip_relief_start"] == pytest.approx(0.793)
     assert got is start
@@ -152,8 +151,7 @@ def test_the_gate_costs_nothing(monkeypatch, over):
     start = chosen(dict(WRITTEN) | over.get("values", {}))
     seen.clear()
     assert dtl.tip_lte_runs_on(start, targets) is False
-    assert check(start, targets, setup, None, print,
-                               lambda v: dict(v)) is start
+    assert check(start, targets, setup, None, print, lambda v: dict(v)) is start
     assert seen == []
 
 

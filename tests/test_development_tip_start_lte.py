@@ -72,8 +72,7 @@ def test_the_tip_relief_starts_at_its_bound_and_is_kept(monkeypatch):
     start = chosen(dict(WRITTEN))
     seen.clear()
     lines = []
-    got = check(start, targets, setup, None, lines.append,
-                                    lambda v: dict(v), eps=(1.19, 0.91))
+    got = check(start, targets, setup, None, lines.append, lambda v: dict(v), eps=(1.19, 0.91))
     assert seen == [WRITTEN | {"tip_relief_start": 0.9}]
     assert got.stage == dts.TIP_START.stage and got.values == seen[0]
     light, design = (float(x) for x in got.metrics["lte_peak_to_peak"])
@@ -98,8 +97,7 @@ def test_a_later_start_that_scores_worse_is_not_kept(monkeypatch):
     targets, setup, chosen = stand_in(monkeypatch, worse, [91.8, 612.4])
     start = chosen(dict(WRITTEN))
     lines = []
-    got = check(start, targets, setup, None, lines.append,
-                                    lambda v: dict(v), eps=(1.19, 0.91))
+    got = check(start, targets, setup, None, lines.append, lambda v: dict(v), eps=(1.19, 0.91))
     assert got is start
 
 
@@ -134,8 +132,7 @@ def test_the_gate_costs_nothing(monkeypatch, lte, eps, values):
     asked = lte[1] > targets.max_lte and not values
     assert read == ([1] if asked else [])
     monkeypatch.setattr(dts, "contact_ratios", lambda case: eps)
-    assert check(start, targets, setup, None, print,
-                                     lambda v: dict(v)) is start
+    assert check(start, targets, setup, None, print, lambda v: dict(v)) is start
     assert seen == []
 
 

@@ -18,7 +18,7 @@ step, before the near-miss step, :func:`~contact.optimize.development_check.chec
 variant (stage)    its miss (the gate)                    its designs, in turn
 =================  =====================================  ==================================
 :data:`TIP_START`  the design torque's LTE above          the tip relief's start at the
-                   ``max_lte`` on a pair of ε_vβ < 1       bound of ``tip_relief_start``
+                   ``max_lte`` on a pair of ε_vβ < 1      bound of ``tip_relief_start``
                    (:func:`tip_start_runs_on`)            (:func:`later_start`)
 :data:`LIGHTER`    the LTE target alone, by at most       the tip relief, then the root
                    10 µrad (:func:`lte_alone_near`)       relief × 0.75
