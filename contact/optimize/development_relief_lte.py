@@ -329,7 +329,7 @@ class Try:
 
 #: what a :class:`Relief`'s designs generator is given back after each design: the design
 #: kept so far and why the design was not kept ("" kept, None: not analysed)
-Sent = tuple[DevelopmentEvaluation, "str | None"]
+Sent = tuple[DevelopmentEvaluation, str | None]
 
 
 @dataclasses.dataclass(frozen=True)
