@@ -1,15 +1,20 @@
-"""The check's lighter-relief step (contact.optimize.development_lighter_relief): a drive
+"""The check's lighter-relief step (contact.optimize.development_relief_lte.LIGHTER): a drive
 design that misses its LTE target alone by a small margin is given a lighter tip relief,
 then a shallower root relief, each kept by the check's one rule (kept_why)."""
 
 from __future__ import annotations
 
+import functools
+
 import pytest
 from development_stand_ins import metrics as _metrics
 from development_stand_ins import stand_in
 
-from contact.optimize import development_lighter_relief as dlight
+from contact.optimize import development_relief_lte as dlight
 from contact.optimize.development_pattern_steps import LENGTH_RELIEF_FRACTION
+
+#: the step alone
+check = functools.partial(dlight.checked_relief_variants, reliefs=(dlight.LIGHTER,))
 
 
 def _fake(calls, tip_edge=0.0, base_lte=41.1):
@@ -51,12 +56,11 @@ def test_a_design_missing_its_lte_alone_by_a_little_gets_the_lighter_tip_relief(
     assert [k for k, v in start.full[1].items() if v > 0] == ["lte"]
     calls.clear()
     lines = []
-    got = dlight.checked_lighter_relief(start, targets, setup, None, lines.append,
-                                        lambda v: dict(v))
+    got = check(start, targets, setup, None, lines.append, lambda v: dict(v))
     tip = LENGTH_RELIEF_FRACTION * 10.0
     assert [c[:2] for c in calls if not c[2]] == [(pytest.approx(tip), 40.0)]
     assert len(calls) == 1 + 4  # the kept design's excursions
-    assert got.met and got.stage == dlight.STAGE
+    assert got.met and got.stage == dlight.LIGHTER.stage
     assert got.values == VALUES | {"tip_relief": pytest.approx(tip)}
     assert float(got.metrics["lte_peak_to_peak"][1]) == pytest.approx(38.0, abs=0.05)
     assert "with tip_relief 7.5 um" in lines[0]
@@ -71,8 +75,7 @@ def test_a_tip_relief_that_gives_up_the_edge_is_refused_then_the_root_relief(mon
     start = chosen(VALUES)
     calls.clear()
     lines = []
-    got = dlight.checked_lighter_relief(start, targets, setup, None, lines.append,
-                                        lambda v: dict(v))
+    got = check(start, targets, setup, None, lines.append, lambda v: dict(v))
     root = LENGTH_RELIEF_FRACTION * 40.0
     assert [c[:2] for c in calls if not c[2]] == [(pytest.approx(7.5), 40.0),
                                                   (10.0, pytest.approx(root))]
@@ -97,7 +100,6 @@ def test_no_step_where_the_lte_is_missed_by_more_or_another_target_too(
     start = chosen(VALUES)
     assert not start.full[2]
     calls.clear()
-    got = dlight.checked_lighter_relief(start, targets, setup, None, [].append,
-                                        lambda v: dict(v))
+    got = check(start, targets, setup, None, [].append, lambda v: dict(v))
     assert got is start and calls == []
     assert not dlight.lte_alone_near(start)

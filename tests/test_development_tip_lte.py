@@ -1,5 +1,5 @@
 """The check's step for a design torque's LTE set by a tip edge
-(:func:`contact.optimize.development_tip_lte.checked_tip_lte`, issue 71): a lighter, then
+(:data:`contact.optimize.development_relief_lte.TIP_LTE`, issue 71): a lighter, then
 a longer tip relief, and the ``tip_edge_share`` metric that gates it.
 
 Stand-in analyses whose law is the face-milled hypoid 15x31 at a = 0.056 d_e2 of
@@ -11,6 +11,7 @@ on the hypoid 15×31"): the tests are the step's choices, not numbers of a gear.
 
 from __future__ import annotations
 
+import functools
 import inspect
 
 import numpy as np
@@ -21,9 +22,12 @@ from development_stand_ins import stand_in
 
 from contact.ltca.summary import edge_load_share
 from contact.optimize import development_check as dcheck
-from contact.optimize import development_tip_lte as dtl
+from contact.optimize import development_relief_lte as dtl
 from contact.optimize.development import DevelopmentTargets
 from geometry.core.errors import InputError
+
+#: the step alone
+check = functools.partial(dtl.checked_relief_variants, reliefs=(dtl.TIP_LTE,))
 
 #: the 15x31's developed drive prescriptions as written before the step
 WRITTEN = {"path_angle": -65.6, "ellipse_length": 0.625, "tip_relief": 24.6,
@@ -85,10 +89,10 @@ def test_a_lighter_tip_relief_then_a_longer_one(monkeypatch):
     assert [k for k, v in start.full[1].items() if v > 0.0] == ["lte"]
     seen.clear()
     lines = []
-    got = dtl.checked_tip_lte(start, targets, setup, None, lines.append, lambda v: dict(v))
+    got = check(start, targets, setup, None, lines.append, lambda v: dict(v))
     assert [(s["tip_relief"], s["tip_relief_start"]) for s in seen] == [
         (19.68, 0.893), (16.4, 0.893), (12.3, 0.893), (16.4, 0.793)]
-    assert got.stage == dtl.STAGE
+    assert got.stage == dtl.TIP_LTE.stage
     assert got.values == WRITTEN | {"tip_relief": 16.4}
     assert float(got.metrics["lte_peak_to_peak"][-1]) == pytest.approx(81.2, abs=0.1)
     assert [k for k, v in got.full[1].items() if v > 0.0] == ["lte"]
@@ -116,8 +120,7 @@ def test_a_lighter_relief_that_loses_a_target_ends_the_lighter_ones(monkeypatch)
     targets, setup, chosen = stand_in(monkeypatch, fake, [94.1, 627.7])
     start = chosen(dict(WRITTEN))
     seen.clear()
-    got = dtl.checked_tip_lte(start, targets, setup, None, lambda s: None,
-                              lambda v: dict(v))
+    got = check(start, targets, setup, None, lambda s: None, lambda v: dict(v))
     assert [s["tip_relief"] for s in seen] == [19.68, 24.6]
     assert seen[1]["tip_relief_start"] == pytest.approx(0.793)
     assert got is start
@@ -147,9 +150,8 @@ def test_the_gate_costs_nothing(monkeypatch, over):
     targets, setup, chosen = stand_in(monkeypatch, fake, [94.1, 627.7])
     start = chosen(dict(WRITTEN) | over.get("values", {}))
     seen.clear()
-    assert dtl.runs_on(start, targets) is False
-    assert dtl.checked_tip_lte(start, targets, setup, None, print,
-                               lambda v: dict(v)) is start
+    assert dtl.tip_lte_runs_on(start, targets) is False
+    assert check(start, targets, setup, None, print, lambda v: dict(v)) is start
     assert seen == []
 
 
@@ -162,11 +164,12 @@ def test_the_limit_is_the_target_or_the_verdicts():
 
 
 def test_the_step_runs_in_the_check_after_the_matched_te_step():
-    """check_steps calls the step (by name) after the matched-TE step (the design torque's
-    LTE steps) and before the near-miss step."""
+    """check_steps calls the relief variants (by name) after the matched-TE step (the design
+    torque's LTE steps) and before the near-miss step, the tip edge's last."""
     src = inspect.getsource(dcheck.check_steps)
-    assert (src.index("checked_matched_te(") < src.index("checked_tip_lte(")
+    assert (src.index("checked_matched_te(") < src.index("checked_relief_variants(")
             < src.index("checked_near_miss("))
+    assert dtl.RELIEFS[-1] is dtl.TIP_LTE
 
 
 def test_the_tip_edges_share_of_the_torque():

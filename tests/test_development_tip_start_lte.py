@@ -1,6 +1,6 @@
 """The check's step for a design torque's LTE above the target where the face contact ratio
-is below 1 (:func:`contact.optimize.development_tip_start_lte.checked_tip_start_lte`,
-issue 71): the tip relief started later, at its bound.
+is below 1 (:data:`contact.optimize.development_relief_lte.TIP_START`, issue 71): the tip
+relief started later, at its bound.
 
 Stand-in analyses whose law is the face-milled spiral bevel 15x28 at Σ 110° of
 benchmarks/data/unseen_designs (ε_vα 1.19, ε_vβ 0.91) at 91.8 / 612.4 N m, as measured
@@ -12,6 +12,7 @@ contact ratio below 1"): the tests are the step's choices, not numbers of a gear
 
 from __future__ import annotations
 
+import functools
 import math
 
 import pytest
@@ -19,8 +20,11 @@ from development_stand_ins import metrics as _metrics
 from development_stand_ins import stand_in
 
 from contact.optimize import development_check as dcheck
-from contact.optimize import development_tip_start_lte as dts
+from contact.optimize import development_relief_lte as dts
 from contact.optimize.development import DevelopmentTargets
+
+#: the step alone
+check = functools.partial(dts.checked_relief_variants, reliefs=(dts.TIP_START,))
 
 #: the 15x28's developed drive prescriptions as written before the step
 WRITTEN = {"path_angle": -45.0, "ellipse_length": 0.7, "tip_relief": 15.0,
@@ -68,10 +72,9 @@ def test_the_tip_relief_starts_at_its_bound_and_is_kept(monkeypatch):
     start = chosen(dict(WRITTEN))
     seen.clear()
     lines = []
-    got = dts.checked_tip_start_lte(start, targets, setup, None, lines.append,
-                                    lambda v: dict(v), eps=(1.19, 0.91))
+    got = check(start, targets, setup, None, lines.append, lambda v: dict(v), eps=(1.19, 0.91))
     assert seen == [WRITTEN | {"tip_relief_start": 0.9}]
-    assert got.stage == dts.STAGE and got.values == seen[0]
+    assert got.stage == dts.TIP_START.stage and got.values == seen[0]
     light, design = (float(x) for x in got.metrics["lte_peak_to_peak"])
     assert (light, design) == pytest.approx((86.0, 93.0))
     assert got.objective < start.objective
@@ -94,8 +97,7 @@ def test_a_later_start_that_scores_worse_is_not_kept(monkeypatch):
     targets, setup, chosen = stand_in(monkeypatch, worse, [91.8, 612.4])
     start = chosen(dict(WRITTEN))
     lines = []
-    got = dts.checked_tip_start_lte(start, targets, setup, None, lines.append,
-                                    lambda v: dict(v), eps=(1.19, 0.91))
+    got = check(start, targets, setup, None, lines.append, lambda v: dict(v), eps=(1.19, 0.91))
     assert got is start
 
 
@@ -126,12 +128,11 @@ def test_the_gate_costs_nothing(monkeypatch, lte, eps, values):
         read.append(1)
         return eps
 
-    assert dts.runs_on(start, targets, ratios) is False
+    assert dts.tip_start_runs_on(start, targets, ratios) is False
     asked = lte[1] > targets.max_lte and not values
     assert read == ([1] if asked else [])
     monkeypatch.setattr(dts, "contact_ratios", lambda case: eps)
-    assert dts.checked_tip_start_lte(start, targets, setup, None, print,
-                                     lambda v: dict(v)) is start
+    assert check(start, targets, setup, None, print, lambda v: dict(v)) is start
     assert seen == []
 
 
@@ -150,10 +151,11 @@ def test_the_bound_is_the_users():
 
 
 def test_the_step_runs_in_the_check_after_the_matched_te_step():
-    """check_steps calls the step (by name) after the matched-TE step and before the
-    near-miss step."""
+    """check_steps calls the relief variants (by name) after the matched-TE step and before
+    the near-miss step, the later tip-relief start first."""
     import inspect
 
     src = inspect.getsource(dcheck.check_steps)
-    assert (src.index("checked_matched_te(") < src.index("checked_tip_start_lte(")
+    assert (src.index("checked_matched_te(") < src.index("checked_relief_variants(")
             < src.index("checked_near_miss("))
+    assert dts.RELIEFS == (dts.TIP_START, dts.LIGHTER, dts.TIP_LTE)

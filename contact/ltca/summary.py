@@ -188,7 +188,7 @@ def edge_load_share(ltca: xr.Dataset, kinds: tuple[str, ...] | None = None) -> n
         raise InputError(f"kinds: must name edges of {EDGE_KINDS}, got {kinds!r}")
     moment = (np.nan_to_num(ltca.variables["force"].values)
               * np.nan_to_num(ltca.variables["moment_arm"].values)[None])
-    kind = np.asarray(ltca.variables["segment_kind"].values)
+    kind = np.asarray(ltca.variables["segment_kind"].values).astype(str)
     edge = kind != "curve" if kinds is None else np.isin(kind, list(kinds))
     total = moment.sum(axis=(1, 2, 3))
     on_edges = moment[..., edge].sum(axis=(1, 2, 3))

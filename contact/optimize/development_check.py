@@ -311,21 +311,17 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     ellipse (:func:`contact.optimize.development_load_lte.checked_relief_ellipse_lte`);
     where it still misses its LTE target with the design torque's LTE the larger on a
     pair of low contact ratios, the TE parabola matched to the load and a longer bearing
-    (:func:`contact.optimize.development_matched_te.checked_matched_te`); where the
+    (:func:`contact.optimize.development_matched_te.checked_matched_te`); then the
+    reliefs' LTE variants of one trigger table
+    (:func:`contact.optimize.development_relief_lte.checked_relief_variants`): where the
     design torque's LTE still misses its target on a face contact ratio below 1, the tip
-    relief started later (:func:`contact.optimize.development_tip_start_lte.
-    checked_tip_start_lte`); where it misses its LTE target alone by a small margin, a
-    lighter tip relief, then a shallower root relief
-    (:func:`contact.optimize.development_lighter_relief.checked_lighter_relief`); where
-    its design torque's LTE still misses the target or 60 µrad with the contact there on
-    a tip edge, a lighter, then a longer tip relief
-    (:func:`contact.optimize.development_tip_lte.checked_tip_lte`);
-    last, where it misses its
-    light-load
-    centre v and nothing by more than a small margin, a small blade-angle step with the TE level
-    lowered (:func:`checked_near_miss`; ``slopes``: the height stage's measured
-    d(centre v)/d(blade angle) per bearing). Run again where the design torque was
-    lowered after them (to the
+    relief started later; where it misses its LTE target alone by a small margin, a
+    lighter tip relief, then a shallower root relief; where its design torque's LTE
+    still misses the target or 60 µrad with the contact there on a tip edge, a lighter,
+    then a longer tip relief; last, where it misses its light-load centre v and nothing
+    by more than a small margin, a small blade-angle step with the TE level lowered
+    (:func:`checked_near_miss`; ``slopes``: the height stage's measured d(centre v)/d(blade
+    angle) per bearing). Run again where the design torque was lowered after them (to the
     bearing's static flank capacity or its FE root-stress capacity): the light torque
     follows the design torque (``light_load`` × it), and the light-load LTE rises as the
     torque falls (the face-hobbed hypoid 11x43 of tests/data/designs: every target met
@@ -358,12 +354,8 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     best = load_lte.checked_relief_ellipse_lte(best, targets, setup, teeth, say, placed)
     from contact.optimize.development_matched_te import checked_matched_te
     best = checked_matched_te(best, targets, setup, teeth, say, placed)
-    from contact.optimize.development_tip_start_lte import checked_tip_start_lte
-    best = checked_tip_start_lte(best, targets, setup, teeth, say, placed)
-    from contact.optimize.development_lighter_relief import checked_lighter_relief
-    best = checked_lighter_relief(best, targets, setup, teeth, say, placed)
-    from contact.optimize.development_tip_lte import checked_tip_lte
-    best = checked_tip_lte(best, targets, setup, teeth, say, placed)
+    from contact.optimize.development_relief_lte import checked_relief_variants
+    best = checked_relief_variants(best, targets, setup, teeth, say, placed)
     return checked_near_miss(best, targets, setup, teeth, say, placed, level,
                              slope=(slopes or {}).get(bearing_key(best.values)))
 

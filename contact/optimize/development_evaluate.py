@@ -76,7 +76,7 @@ CHECK_LTCA = LTCAOptions()
 #: tip edge and the pinion's edge (where the pinion mate leaves its blank: its tip line on
 #: the gear flank, the pinion's face being the wider); the load they carry is the
 #: ``tip_edge_share`` metric (:func:`ltca_metrics`) the tip-relief LTE step asks
-#: (:mod:`contact.optimize.development_tip_lte`)
+#: (:data:`contact.optimize.development_relief_lte.TIP_LTE`)
 TIP_EDGE_KINDS = ("gear_tip", "pinion_edge")
 
 

@@ -163,7 +163,7 @@ from contact.ltca.plausibility import (
     plausibility_warnings,
     quiet_transfer,
 )
-from contact.ltca.summary import flank_peak
+from contact.ltca.summary import edge_load_share, flank_peak
 from geometry.core.errors import InputError
 
 __all__ = ["CHECKS", "CHECK_ORDER", "DUTY_MIN_SAFETY", "EDGE_SHARE_MIN", "GRADE",
@@ -412,20 +412,12 @@ _EDGE_WORDS = {"gear_heel": "gear heel", "gear_toe": "gear toe", "gear_tip": "ge
 
 
 def _edge_shares(lt: xr.Dataset) -> dict[str, np.ndarray]:
-    """Per edge kind, the share of the torque (Σ F·arm) its segments carry, per torque."""
+    """Per edge kind the dataset has, the share of the torque (Σ F·arm) its segments carry,
+    per torque (:func:`~contact.ltca.summary.edge_load_share`; NaN where none is carried)."""
     if not {"force", "moment_arm", "segment_kind"} <= set(lt.variables):
         return {}
-    moment = (np.nan_to_num(lt["force"].values)
-              * np.nan_to_num(lt["moment_arm"].values)[None])
-    total = moment.sum(axis=(1, 2, 3))
     kind = np.asarray(lt["segment_kind"].values).astype(str)
-    out = {}
-    with np.errstate(invalid="ignore", divide="ignore"):
-        for k in _EDGE_WORDS:
-            if np.any(kind == k):
-                out[k] = np.where(total > 0, moment[..., kind == k].sum(axis=(1, 2, 3))
-                                  / total, 0.0)
-    return out
+    return {k: edge_load_share(lt, kinds=(k,)) for k in _EDGE_WORDS if np.any(kind == k)}
 
 
 def _boundaries(lt: xr.Dataset) -> list[list[str]]:
