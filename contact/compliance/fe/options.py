@@ -81,7 +81,7 @@ FLANK_ROLES = ("drive", "coast")
 #: / 1.5 (fillet 4, flank 5, slot 2, rim 3; the elements across the tooth follow the root
 #: size) and the unit loads of rows 0, 1, 2, 4, 6, 8, 10 of the 11 only
 #: (``load_row_step=2``): 39 282 / 28 572 unknowns and 147 loads per flank on the 10×43
-#: hypoid against 83 172 / 73 992 and 231, its build of both members and both flanks ~0.4
+#: hypoid against 83 172 / 73 992 and 231, its build of both members and both flanks 0.42–0.50
 #: of the default's CPU. Its peak root stress against the default model's, measured on
 #: four designs, both flanks, both members, at each flank's torques: docs/fe.md, "A
 #: coarse model for a new design". Not the default of any command: a model a verdict
@@ -233,7 +233,10 @@ class FEOptions:
     refines the root in every direction. The defaults are a mesh whose refinement (every
     division × 1.5) changes the mid-surface compliance and the peak tensile fillet
     stress by less than 3 % (tests/test_fe_tooth.py, tests/test_root_stress.py,
-    docs/fe.md, which also gives what converges more slowly).
+    docs/fe.md, which also gives what converges more slowly). Named cheaper models:
+    :meth:`at_level` (:data:`LEVELS`; ``"coarse"``, a new design's build at 0.42–0.50 of the
+    default's CPU, its peak root stress within −3.6 … +6.3 % of the default model's on
+    four designs: docs/fe.md, "A coarse model for a new design").
     """
 
     teeth: int = 3
@@ -322,7 +325,7 @@ class FEOptions:
         level : str
             A key of :data:`LEVELS`: ``"default"`` (``FEOptions()``) or ``"coarse"``
             (fewer elements along the face and in the depth, every other load row
-            above the root's first rows; ~0.4 of the default's build CPU; its accuracy in
+            above the root's first rows; 0.42–0.50 of the default's build CPU; its accuracy in
             docs/fe.md, "A coarse model for a new design").
         **changes
             Fields set after the level's (e.g. ``youngs_modulus``), as
