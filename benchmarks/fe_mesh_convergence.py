@@ -31,7 +31,8 @@ the face instead of 21, the 11 rows kept: the coefficients between the columns
 interpolated by the hat functions as everywhere between load points), ``rows8`` /
 ``rows6`` / ``rows5`` (8, 6 or 5 rows of unit loads along the profile instead of 11, the
 21 columns kept: wider hats), ``step2`` (rows 0, 1, 2, 4, 6, 8, 10 of the 11 solved, the full grid's
-hats: ``FEOptions(load_row_step=2)``), and combinations.
+hats: ``FEOptions(load_row_step=2)``), and combinations; ``coarse`` —
+``FEOptions.at_level("coarse")``, the same model as ``face8+depth/1.5+step2``.
 Measured 2026-11-26 on six designs: docs/fe.md, "Mesh levels on six designs" (the runs of
 a design at several times share its cache directory: a level already built is read back,
 its CPU then the read's, and ``--table`` keeps the cold build's).
@@ -85,6 +86,12 @@ def levels() -> dict:
         "rows6": rep(d, load_nv=6),
         "rows5": rep(d, load_nv=5),
         "step2": rep(d, load_row_step=2),
+        "depth/1.5+step2": depth(rep(d, load_row_step=2), 1 / 1.5),
+        "face10+depth/1.5+step2": depth(rep(d, face_divisions=10, load_row_step=2), 1 / 1.5),
+        "face8+depth/1.5+step2": depth(rep(d, face_divisions=8, load_row_step=2), 1 / 1.5),
+        "face8+step2": rep(d, face_divisions=8, load_row_step=2),
+        # FEOptions.at_level("coarse"): face8+depth/1.5+step2 under its name
+        "coarse": FEOptions.at_level("coarse"),
     }
 
 

@@ -8,6 +8,7 @@ setting builds them again.
 Public names
 ------------
 FEOptions          the options, validated on construction
+LEVELS             named FE models (FEOptions.at_level) → the fields each sets
 ELEMENTS           element name → (scikit-fem element class, nodes per element)
 CONSTRAINTS        support name → what is held fixed (words; the facets are chosen in
                    :mod:`contact.compliance.fe.solid`)
@@ -34,6 +35,7 @@ __all__ = [
     "CONSTRAINTS",
     "ELEMENTS",
     "FLANK_ROLES",
+    "LEVELS",
     "MATING_FLANK",
     "SLOT_BOTTOMS",
     "FEOptions",
@@ -72,6 +74,23 @@ MATING_FLANK: dict[str, str] = {"concave": "convex", "convex": "concave"}
 
 #: flank role → the pinion flank of a case that plays it (as contact.utca.easeoff)
 FLANK_ROLES = ("drive", "coast")
+
+#: named FE models (:meth:`FEOptions.at_level`; issue 75) → the fields each sets, every
+#: other field at its default. ``"default"``: :class:`FEOptions` as it is. ``"coarse"``:
+#: 8 elements along the face instead of 12, the root, flank, half-slot and rim divisions
+#: / 1.5 (fillet 4, flank 5, slot 2, rim 3; the elements across the tooth follow the root
+#: size) and the unit loads of rows 0, 1, 2, 4, 6, 8, 10 of the 11 only
+#: (``load_row_step=2``): 39 282 / 28 572 unknowns and 147 loads per flank on the 10×43
+#: hypoid against 83 172 / 73 992 and 231, its build of both members and both flanks 0.42–0.50
+#: of the default's CPU. Its peak root stress against the default model's, measured on
+#: four designs, both flanks, both members, at each flank's torques: docs/fe.md, "A
+#: coarse model for a new design". Not the default of any command: a model a verdict
+#: may rest on only where that error is accepted.
+LEVELS: dict[str, dict[str, int]] = {
+    "default": {},
+    "coarse": {"face_divisions": 8, "fillet_divisions": 4, "flank_divisions": 5,
+               "slot_divisions": 2, "rim_divisions": 3, "load_row_step": 2},
+}
 
 
 def member_flank(case, member: str, flank: str) -> str:
@@ -214,7 +233,10 @@ class FEOptions:
     refines the root in every direction. The defaults are a mesh whose refinement (every
     division × 1.5) changes the mid-surface compliance and the peak tensile fillet
     stress by less than 3 % (tests/test_fe_tooth.py, tests/test_root_stress.py,
-    docs/fe.md, which also gives what converges more slowly).
+    docs/fe.md, which also gives what converges more slowly). Named cheaper models:
+    :meth:`at_level` (:data:`LEVELS`; ``"coarse"``, a new design's build at 0.42–0.50 of the
+    default's CPU, its peak root stress within −3.6 … +6.3 % of the default model's on
+    four designs: docs/fe.md, "A coarse model for a new design").
     """
 
     teeth: int = 3
@@ -293,6 +315,36 @@ class FEOptions:
     def neighbours(self) -> int:
         """Neighbours modelled on each side of the loaded tooth, (teeth − 1)/2."""
         return (self.teeth - 1) // 2
+
+    @classmethod
+    def at_level(cls, level: str = "default", **changes: Any) -> FEOptions:
+        """The FE model named ``level`` (:data:`LEVELS`), with ``changes`` on top.
+
+        Parameters
+        ----------
+        level : str
+            A key of :data:`LEVELS`: ``"default"`` (``FEOptions()``) or ``"coarse"``
+            (fewer elements along the face and in the depth, every other load row
+            above the root's first rows; 0.42–0.50 of the default's build CPU; its accuracy in
+            docs/fe.md, "A coarse model for a new design").
+        **changes
+            Fields set after the level's (e.g. ``youngs_modulus``), as
+            :func:`dataclasses.replace`.
+
+        Returns
+        -------
+        FEOptions
+            Validated as any :class:`FEOptions`; its cache key covers every field, so a
+            level's coefficients are never read as another's.
+
+        Raises
+        ------
+        InputError
+            An unknown ``level`` (the message lists :data:`LEVELS`), or a field of
+            ``changes`` out of its range (as the constructor).
+        """
+        one_of("level", level, LEVELS)
+        return cls(**{**LEVELS[level], **changes})
 
     def refined(self, factor: float = 1.5) -> FEOptions:
         """The same model with every element division multiplied by ``factor`` (rounded,
