@@ -51,6 +51,7 @@ from contact.optimize.development_targets import (
     working_depth_centre,
 )
 from geometry.case import Case
+from geometry.core.errors import raise_if_interrupted
 from geometry.machine.meshing import WarmSeeds
 from geometry.pair.assembly import Misalignment
 from geometry.synthesis.basic_design import BasicDesign
@@ -374,6 +375,7 @@ def evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str, 
                                                 pressure_limit=grid[4])
             reason = ""
         except Exception as exc:  # one failing design never ends the development
+            raise_if_interrupted(exc)
             log.info("development %sdesign %s failed: %s", label, values, exc)
             metrics = {k: np.full(2, np.nan) for k in METRIC_NAMES}
             obj, short, met, grid = FAILED, {}, False, None
