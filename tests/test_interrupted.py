@@ -70,3 +70,36 @@ def test_a_development_trial_does_not_swallow_the_stop():
     assert not failed.met and "SystemError" in failed.reason and len(evals) == 1
     with pytest.raises(KeyboardInterrupt):
         evaluate({"path_angle": -50.0}, "bearing", stopped, 10, ())
+
+
+def test_a_study_point_and_a_duty_cycle_bin_do_not_swallow_the_stop(monkeypatch):
+    """``analyse_point`` and ``analyse_bin`` ("a failing point / bin never stops the
+    study"): a wrapped failure is a failed point (status 2), a wrapped stop stops (run
+    synchronously, ``--scheduler synchronous``, they run in the command's process)."""
+    import contact.pipeline
+    from contact.catalogue import resolve_case
+    from contact.ltca import LTCAOptions
+    from contact.study.duty_cycle import DutyInputs, analyse_bin
+    from contact.study.duty_cycle_inputs import DutyCycle
+    from contact.study.engine import analyse_point
+    from contact.study.points import StudyInputs
+
+    raised: list[BaseException] = []
+
+    def analysis(*args, **kw):
+        raise _wrapped(raised[-1])
+
+    monkeypatch.setattr(contact.pipeline, "run_analysis", analysis)
+    case = resolve_case(None)
+    options = LTCAOptions(rolls_per_cycle=4, segments=8)
+    point = StudyInputs(case, (250.0,), speed=(1500.0,), options=options)
+    duty = DutyInputs(case, DutyCycle(torque=[250.0], pinion_speed=[1500.0],
+                                      revolutions=[1e6]), options)
+    raised.append(ValueError("no mean point"))
+    assert analyse_point(point, 0, {}).status == 2
+    assert int(analyse_bin(duty, 0)["status"].values[0]) == 2
+    raised.append(KeyboardInterrupt("signal 2"))
+    with pytest.raises(KeyboardInterrupt):
+        analyse_point(point, 0, {})
+    with pytest.raises(KeyboardInterrupt):
+        analyse_bin(duty, 0)
