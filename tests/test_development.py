@@ -652,6 +652,22 @@ def test_the_written_case_is_the_design_checked_and_the_coast_is_checked_at_the_
     assert "coast_achieved" in table
 
 
+def test_the_first_line_says_the_contact_ratios(short_developments):
+    """The development's first line names the basic design's contact ratios, the ones
+    ``ltca synthesize`` prints after it (``contact_ratios`` of the written case): a user
+    who typed a face contact ratio below 1 learns it before the development's minutes,
+    not after them (round 18's 6x29 hypoid, ε_vβ 0.82)."""
+    from contact.optimize.development_matched_te import contact_ratios
+
+    r, lines = short_developments[0]
+    first = lines[0]
+    assert first.startswith("development: drive flank ")
+    eps_va, eps_vb = contact_ratios(r.case)
+    assert math.isfinite(eps_va) and math.isfinite(eps_vb)
+    assert (f"; contact ratios eps_va {eps_va:.2f}, eps_vb {eps_vb:.2f} (ISO 10300-1 "
+            "virtual cylindrical gears); varying ") in first
+
+
 def test_coast_development_off_keeps_the_coast_as_synthesised(short_developments):
     """coast_max_evaluations = 0 gives the behaviour before the coast development: no
     coast design, the coast flank's prescriptions the basic file's, the written case the

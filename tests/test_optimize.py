@@ -214,6 +214,24 @@ def test_cli_variables_keep_only_their_own_table_start(tmp_path, monkeypatch):
     assert seen["start"] == {"tip_relief": pytest.approx(16.508817284513)}
 
 
+def test_cli_without_variables_names_the_ones_it_takes(tmp_path, capsys):
+    """A case with no ``[optimize.variables]`` table (every case ``ltca synthesize`` writes)
+    and no ``--variable`` is refused before any analysis, naming the variables ``--variable``
+    takes with their units and an example (round 18: the refusal named none)."""
+    from contact.optimize import RELIEF_VARIABLES
+    from geometry.synthesis.correction import SETTING_VARIABLES
+
+    assert ltca(["optimize", "kolivand2009_fm_11x41", "-o", str(tmp_path / "o.toml")]) != 0
+    err = capsys.readouterr().err
+    assert "variables: give --variable NAME LOW HIGH" in err
+    for name, var in SETTING_VARIABLES.items():
+        assert f"{name} [{var.unit}]" in err
+    for name, unit in RELIEF_VARIABLES.items():
+        assert f"{name} [{unit}]" in err
+    assert "path_angle" not in err  # a synthesis input only where a basic file starts it
+    assert "--variable tip_relief 0 40" in err and not (tmp_path / "o.toml").exists()
+
+
 def test_cli_checks_the_output_before_work(tmp_path, capsys):
     """An output path in a missing directory is refused before the case is read."""
     rc = ltca(["optimize", "no-such-case", "-o", str(tmp_path / "missing" / "x" / "o.toml"),

@@ -114,6 +114,13 @@ def test_the_remedies_that_pass_come_first_lowest_unloaded_te_first():
                            "the written case's 137), ease-off 80 um), the other kept, reaches "
                            "1")
     assert "6 s of CPU" in text
+    # checks under a second of CPU together (round 18's 6x35 hypoid, 0.4 s) are said in
+    # tenths, not as "0 s of CPU", which reads as no check made
+    quick = [ChangeCheck(K_D, 90.0, 80.0, 0.7, "", 0.2), ChangeCheck(ALPHA, 28.0, 60.0, 0.7,
+                                                                     "", 0.2)]
+    assert "0.4 s of CPU" in checked_remedy_text(quick, 1.0, "none", 137.0, 60.0)
+    assert "0.1 s of CPU" in checked_remedy_text(
+        [ChangeCheck(K_D, 90.0, 80.0, 0.7, "", 0.01)], 1.0, "none", 137.0, 60.0)
     # no reference: the numbers alone; a change that does not lower it says so
     assert "(checked: unloaded TE p-p 28 urad, ease-off 60 um)" in checked_remedy_text(
         checks, 1.0, "none", math.nan, 60.0)

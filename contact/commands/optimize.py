@@ -160,6 +160,24 @@ def _outcome(result, confirm: int) -> str:
             "mesh builds is written")
 
 
+def _variables_hint(synthesis: bool) -> str:
+    """The names ``--variable`` takes, each with the unit of its LOW and HIGH: a synthesised
+    case carries no ``[optimize.variables]`` table, and the refusal named no variable a
+    user could give (round 18, the 9x38 hypoid at Σ 95° fresh from ``ltca synthesize``)."""
+    from contact.optimize import RELIEF_VARIABLES, SYNTHESIS_VARIABLES
+    from geometry.synthesis.correction import SETTING_VARIABLES
+
+    def listed(units: dict[str, str]) -> str:
+        return ", ".join(f"{n} [{u}]" for n, u in units.items())
+
+    text = ("NAME a setting of the pinion flank's tools in its case-file unit ("
+            + listed({n: v.unit for n, v in SETTING_VARIABLES.items()})
+            + ") or its profile relief (" + listed(RELIEF_VARIABLES) + ")")
+    if synthesis:
+        text += ", or a synthesis prescription (" + listed(SYNTHESIS_VARIABLES) + ")"
+    return text + ", e.g. --variable tip_relief 0 40 --variable 2C -0.05 0.05 (docs/optimize.md)"
+
+
 def run_optimize(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
@@ -213,7 +231,7 @@ def run_optimize(args: argparse.Namespace) -> int:
                                  f"{low!r} {high!r}") from None
     if not bounds:
         raise InputError("variables: give --variable NAME LOW HIGH or an [optimize.variables] "
-                         "table in the case")
+                         f"table in the case; {_variables_hint(basic is not None)}")
     start = run.get("start") or {}
     if args.variable:  # the table's start values belong to its variables: those kept that
         # are still varied within the bounds given, the others start from the case

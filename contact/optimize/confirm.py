@@ -135,7 +135,7 @@ def confirm_design(shared, ev: Evaluation, *, root_stress_options=None) -> Confi
     from contact.pipeline import run_analysis
     from contact.study.summary import point_summary
     from contact.study.verdicts import SEVERITIES, verdict
-    from geometry.core.errors import LTCAError
+    from geometry.core.errors import LTCAError, raise_if_interrupted
 
     t0 = time.perf_counter()
     problem = shared.problem
@@ -158,6 +158,7 @@ def confirm_design(shared, ev: Evaluation, *, root_stress_options=None) -> Confi
     except (LTCAError, ValueError, ArithmeticError) as exc:
         mesh = str(exc).splitlines()[0]
     except Exception as exc:  # an InputError of the FE model (e.g. its rim): no mesh either
+        raise_if_interrupted(exc)
         mesh = f"{type(exc).__name__}: {exc}".splitlines()[0]
     if mesh:
         return Confirmation(ev.index, x, metrics, np.full(len(names), np.inf), names, "",
@@ -183,6 +184,7 @@ def confirm_design(shared, ev: Evaluation, *, root_stress_options=None) -> Confi
                     bearing = bearing or f.check in BEARING_CHECKS
         _, g, _ = score(problem, metrics)
     except Exception as exc:  # the confirmation of one design never stops the command
+        raise_if_interrupted(exc)
         log.info("confirmation of design %d failed: %s", ev.index, exc)
         g = np.full(len(names), np.inf)
         severity, findings = "", [f"the analysis failed: {type(exc).__name__}: {exc}"

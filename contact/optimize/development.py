@@ -206,7 +206,7 @@ from contact.optimize.development_targets import (
 )
 from geometry.case import Case
 from geometry.core.blas import blas_threads
-from geometry.core.errors import InputError
+from geometry.core.errors import InputError, raise_if_interrupted
 from geometry.synthesis.basic_design import (
     BasicDesign,
     flank_option_values,
@@ -837,6 +837,7 @@ def _both_flanks_built(case: Case, wanted: bool, built: list[Case],
         return any(m not in kept and cache_key(case.member(m), "concave", FEOptions())
                    != cache_key(earlier.member(m), "concave", FEOptions())
                    for m in ("pinion", "gear"))
-    except Exception:  # unknown: taken as changed (the root capacity taken again)
+    except Exception as exc:  # unknown: taken as changed (the root capacity taken again)
+        raise_if_interrupted(exc)
         return True
 

@@ -188,7 +188,7 @@ from contact.optimize.development_variant import (  # noqa: F401  (re-exported)
 from contact.optimize.development_variant import check_rank as _check_rank
 from contact.optimize.development_variant import checked_variant as _checked_variant
 from geometry.case import Case
-from geometry.core.errors import InputError
+from geometry.core.errors import InputError, raise_if_interrupted
 from geometry.synthesis.basic_design import (
     BasicDesign,
     with_flank_options,
@@ -554,6 +554,7 @@ def checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTargets
                     e.case, setup["torques"], options=CHECK_LTCA, teeth=teeth, flank=side,
                     pinion_key=(*key_prefix, *bearing_key(e.values)))
         except Exception as exc:  # a design that fails here is not chosen
+            raise_if_interrupted(exc)
             log.info("development check of %s %d failed: %s", what, e.index + 1, exc)
             return False
         full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],

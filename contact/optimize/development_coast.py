@@ -36,6 +36,7 @@ from typing import Any
 
 from contact.optimize.development_result import STATIC_MARGIN, floor_torque
 from contact.optimize.development_root import root_capacity_step
+from geometry.core.errors import raise_if_interrupted
 
 __all__ = ["CLOSENESS", "COAST_STEPS", "PLASTIC_STEP", "REFINE_STEPS", "CoastCapacity",
            "CoastCheck", "coast_capacity", "coast_torque_step"]
@@ -296,6 +297,7 @@ def coast_capacity(analyse: Callable[[float], CoastCheck], start: float,
         try:
             c = analyse(t)
         except Exception as exc:  # reported, never fatal: the torques checked are kept
+            raise_if_interrupted(exc)
             log.info("coast capacity check at %g N m failed: %s", t, exc)
             say(f"development: coast flank not analysed at {t:.4g} N m ({exc})")
             return None

@@ -57,6 +57,7 @@ from contact.optimize.development_targets import (
     development_score,
 )
 from geometry.case import Case
+from geometry.core.errors import raise_if_interrupted
 from geometry.synthesis.basic_design import (
     BasicDesign,
     flank_option_values,
@@ -94,6 +95,7 @@ def coast_rated_torque(case: Case | None, basic: BasicDesign, design: float) -> 
     try:
         value = with_coast_design_torque(with_design_torque(case, design)[0])[1]
     except Exception as exc:  # reported, never fatal: the design torque rates both sides
+        raise_if_interrupted(exc)
         log.info("coast side's ISO capacity not computed: %s", exc)
         return design
     return float(value) if math.isfinite(value) and value < design else design
@@ -206,6 +208,7 @@ def coast_flank_capacity(case: Case, basic: BasicDesign, coast: _CoastOutcome,
         else:
             cap, check = None, analyse(start)
     except Exception as exc:  # reported, never fatal: the coast search's metrics stay
+        raise_if_interrupted(exc)
         log.info("development coast capacity not checked: %s", exc)
         say(f"development: coast flank not checked at its design torque ({exc})")
         return coast, None
@@ -267,6 +270,7 @@ def coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
         full = development_score(m0, targets, grid[:4], centre_v=setup["centre_v"],
                                  pressure_limit=grid[4])
     except Exception as exc:  # reported, never fatal
+        raise_if_interrupted(exc)
         log.info("development coast check failed: %s", exc)
         # the reason itself, not only its type: "InputError" alone named no cause (the
         # unseen industrial 11x43 of m_mn 12, issue 71 round 13)

@@ -51,6 +51,7 @@ from contact.optimize.development_targets import (
     working_depth_centre,
 )
 from geometry.case import Case
+from geometry.core.errors import raise_if_interrupted
 from geometry.machine.meshing import WarmSeeds
 from geometry.pair.assembly import Misalignment
 from geometry.synthesis.basic_design import BasicDesign
@@ -302,6 +303,23 @@ class StageStop(Exception):
     stage's budget is spent."""
 
 
+def _ratios_text(case: Case) -> str:
+    """The contact ratios ε_vα, ε_vβ of a case's basic design as the development's first
+    line says them ("; contact ratios eps_va …, eps_vb … (ISO 10300-1 …)"; "" where the
+    case has no ``[design]`` table to read them from): ``ltca synthesize`` printed them
+    only after the development, minutes later (round 18's 6x29 hypoid, ε_vβ 0.82, told
+    after 12 min of wall time). Source: ISO 10300-1:2014 Annex A
+    (:func:`~contact.optimize.development_matched_te.contact_ratios`).
+    """
+    from contact.optimize.development_matched_te import contact_ratios  # (import cycle)
+
+    eps_va, eps_vb = contact_ratios(case)
+    if not (math.isfinite(eps_va) and math.isfinite(eps_vb)):
+        return ""
+    return (f"; contact ratios eps_va {eps_va:.2f}, eps_vb {eps_vb:.2f} (ISO 10300-1 virtual "
+            f"cylindrical gears)")
+
+
 def evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str, Any],
               teeth: KeptTeeth, say: Callable[[str], None],
               evals: list[DevelopmentEvaluation], side: str, n_max: int,
@@ -344,8 +362,8 @@ def evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str, 
                              lowered=False,
                              centre_v=working_depth_centre(case))
                 say(f"development: drive flank {basic.options.drive_flank}, light "
-                    f"{setup['torques'][0]:.4g} N m, design {torque:.4g} N m ({source}); "
-                    f"varying {', '.join(targets.variables)} (at most "
+                    f"{setup['torques'][0]:.4g} N m, design {torque:.4g} N m ({source})"
+                    f"{_ratios_text(case)}; varying {', '.join(targets.variables)} (at most "
                     f"{targets.max_evaluations} designs, coarse LTCA)")
             with seeds:
                 metrics, grid = analyse_design(case, setup["torques"], teeth=teeth,
@@ -357,6 +375,7 @@ def evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str, 
                                                 pressure_limit=grid[4])
             reason = ""
         except Exception as exc:  # one failing design never ends the development
+            raise_if_interrupted(exc)
             log.info("development %sdesign %s failed: %s", label, values, exc)
             metrics = {k: np.full(2, np.nan) for k in METRIC_NAMES}
             obj, short, met, grid = FAILED, {}, False, None

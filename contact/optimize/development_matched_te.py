@@ -33,6 +33,7 @@ from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import TE_NAME, VARIABLES, DevelopmentTargets
 from contact.optimize.development_variant import said_variant
 from geometry.case import Case
+from geometry.core.errors import raise_if_interrupted
 
 log = logging.getLogger("contact.optimize.development")
 
@@ -101,6 +102,7 @@ def contact_ratios(case: Case) -> tuple[float, float]:
         v = virtual_gears(gear_data)
         return float(v.eps_va), float(v.eps_vb)
     except Exception as exc:  # no [design] table: the step has no ratio to read
+        raise_if_interrupted(exc)
         log.info("development: no contact ratios of the case (%s)", exc)
         return math.nan, math.nan
 

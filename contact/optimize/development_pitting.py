@@ -36,6 +36,7 @@ from contact.optimize.development_targets import (
     development_score,
 )
 from geometry.case import Case
+from geometry.core.errors import raise_if_interrupted
 
 log = logging.getLogger(__name__)
 
@@ -106,6 +107,7 @@ def _checked(best: DevelopmentEvaluation, values: Mapping[str, float], label: st
     try:
         case, ms, grid = checked_analysis(setup, placed, values, teeth, bearing_key(values))
     except Exception as exc:  # reported, never fatal: the design it would replace stands
+        raise_if_interrupted(exc)
         log.info("development pitting check of %s failed: %s", dict(values), exc)
         return None
     full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
@@ -211,6 +213,7 @@ def checked_pitting(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     try:
         limit = pitting_pressure_limit(best.case, torque)
     except Exception as exc:  # no limit: the root capacity judges the written case
+        raise_if_interrupted(exc)
         log.info("development: no local pitting limit: %s", exc)
         return best
     p = _peak(best)

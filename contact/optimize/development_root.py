@@ -35,6 +35,7 @@ from typing import Any
 import numpy as np
 
 from contact.optimize.development_result import STATIC_MARGIN, case_torques, floor_torque
+from geometry.core.errors import raise_if_interrupted
 
 log = logging.getLogger(__name__)
 
@@ -188,6 +189,7 @@ def both_flanks_built(case, earlier=None,
                 deviation = reuse_near_model(case, earlier, member, refused=refused,
                                              read=cached_entry, written=remember_written)
             except Exception as exc:  # built below as before
+                raise_if_interrupted(exc)
                 log.info("development: the %s's earlier FE models not kept: %s", member, exc)
                 deviation = None
             if deviation is not None and deviation > 0.0:
@@ -216,6 +218,7 @@ def both_flanks_built(case, earlier=None,
                 influence_coefficients(case, member, "drive", progress=False,
                                        other_flank=True, written=remember_written)
         except Exception as exc:  # the checks build their own and report (never fatal)
+            raise_if_interrupted(exc)
             log.info("development: the %s's FE models of both flanks not built: %s",
                      member, exc)
     return kept
@@ -390,6 +393,7 @@ def root_capacity(case, setup: dict[str, Any], light_load: float,
     try:
         safe = _safeties(_root_tree(case, torques))
     except Exception as exc:  # reported, never fatal (ltca run says it)
+        raise_if_interrupted(exc)
         log.info("development root stress check not made: %s", exc)
         say(f"development: root stress not checked ({exc}), nor the local pitting safety")
         return None, math.nan, ""
@@ -585,6 +589,7 @@ def _checked_at(case, light_load: float, torque: float, say: Callable[[str], Non
         tree = _root_tree(case, case_torques(light_load, torque))
         return tree, _safeties(tree)
     except Exception as exc:  # reported, never fatal
+        raise_if_interrupted(exc)
         log.info("development capacity check at %g N m failed: %s", torque, exc)
         say(f"development: root stress at {torque:.4g} N m not computed ({exc})")
         return None
@@ -633,6 +638,7 @@ def pitting_capacity_bound(case, torques: list[float]) -> float:
                             .with_load_capacity())
         safety, s_min, _ = pitting_safety(tree)
     except Exception as exc:  # no bound: the development goes on
+        raise_if_interrupted(exc)
         log.info("development: no local pitting bound: %s", exc)
         return math.inf
     s = float(np.asarray(safety)[-1])

@@ -35,6 +35,7 @@ from contact.optimize.development_targets import (
 )
 from contact.optimize.development_variant import said_variant as _said_variant
 from geometry.case import Case
+from geometry.core.errors import raise_if_interrupted
 from geometry.pair.assembly import Misalignment
 
 #: the development's one logger, whichever of its modules logs
@@ -96,6 +97,7 @@ def _excursion(case: Case, targets: DevelopmentTargets, setup: Mapping[str, Any]
         _, short, _ = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
                                         pressure_limit=grid[4])
     except Exception as exc:  # reported, never fatal
+        raise_if_interrupted(exc)
         log.info("development tolerance %s failed: %s", lab, exc)
         ms = {k: np.full(2, np.nan) for k in METRIC_NAMES}
         short = dict.fromkeys(TOLERANCE_KEYS, math.inf)
@@ -364,6 +366,7 @@ def checked_tolerance_height(best: DevelopmentEvaluation, targets: DevelopmentTa
         try:
             case = placed(values)
         except Exception as exc:  # reported, never fatal: the design stands
+            raise_if_interrupted(exc)
             log.info("development tolerance height %s failed: %s", dict(values), exc)
             return ("failed",), {}, None
         tolerance = tolerance_checks(case, targets, setup, teeth, values,
@@ -505,6 +508,7 @@ def tolerant_torque(case: Case, targets: DevelopmentTargets, setup: Mapping[str,
                     case, [torque], mis if own is None else own.plus(mis), teeth=teeth,
                     pinion_key=bearing_key(values))
             except Exception as exc:  # reported, never fatal: counts as not holding
+                raise_if_interrupted(exc)
                 log.info("development tolerant torque %s at %.4g N m failed: %s", lab,
                          torque, exc)
                 ms = None

@@ -31,6 +31,7 @@ from contact.optimize.development_evaluate import (
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import DevelopmentTargets, development_score
 from geometry.case import Case
+from geometry.core.errors import raise_if_interrupted
 
 #: the development's one logger, whichever of its modules logs
 log = logging.getLogger("contact.optimize.development")
@@ -226,6 +227,7 @@ def checked_variant(base: DevelopmentEvaluation, values: Mapping[str, float], st
             setup, placed, values, teeth,
             bearing_key(values) if pinion_key is None else pinion_key, flank, case=case)
     except Exception as exc:  # reported, never fatal
+        raise_if_interrupted(exc)
         log.info("development %s check of %s failed: %s", stage, dict(values), exc)
         return None
     full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],

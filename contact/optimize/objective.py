@@ -44,7 +44,7 @@ import numpy as np
 
 from contact.ltca import LTCAOptions
 from geometry.case import Case
-from geometry.core.errors import InputError
+from geometry.core.errors import InputError, raise_if_interrupted
 from geometry.core.validation import known_fields, real
 from geometry.pair.assembly import Misalignment
 
@@ -456,6 +456,7 @@ def evaluate_design(shared, index: int, x) -> Evaluation:
         terms, g, f = score(problem, metrics)
         reason = ""
     except Exception as exc:  # one failing design never stops an optimisation
+        raise_if_interrupted(exc)
         log.info("design %d %s failed: %s", index, x.tolist(), exc)
         status, reason = 2, f"{type(exc).__name__}: {exc}".splitlines()[0]
         terms = np.full(len(TERM_NAMES), np.nan)

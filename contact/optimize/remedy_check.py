@@ -292,8 +292,10 @@ def checked_remedy_text(checks: Sequence[ChangeCheck], target: float, none: str,
     for c, why in refused:
         out += f"; not {c.change.text}, which reaches {target:g} too: {why}"
     cpu = sum(c.seconds for c in checks)
+    # whole seconds, but a check under 1 s in tenths: "0 s of CPU" read as none made
+    cpu_text = f"{cpu:.0f}" if cpu >= 0.95 else f"{max(cpu, 0.1):.1f}"
     return (out + f" (each change checked by a synthesis at the written case's prescriptions"
-            f", {cpu:.0f} s of CPU; docs/synthesis.md, 'Contact-ratio remedies checked "
+            f", {cpu_text} s of CPU; docs/synthesis.md, 'Contact-ratio remedies checked "
             "before they are offered')")
 
 

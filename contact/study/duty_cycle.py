@@ -54,7 +54,7 @@ from contact.study.store import ChunkSpec, ResultStore
 from geometry import __version__
 from geometry.case import Case
 from geometry.core.conventions import data_var
-from geometry.core.errors import InputError
+from geometry.core.errors import InputError, raise_if_interrupted
 
 if TYPE_CHECKING:
     from contact.ltca.summary import FlankPeak
@@ -264,6 +264,7 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
                 if "root_stress" in ltca else None)
         fillet_u = ltca["fillet_u"].values if "root_stress" in ltca else None
     except Exception as exc:  # one failing bin never stops the cycle
+        raise_if_interrupted(exc)
         log.info("duty-cycle bin %d failed: %s", index, exc)
         status, reason = 2, f"{type(exc).__name__}: {exc}".splitlines()[0]
         vals = dict.fromkeys(BIN_VARIABLES, np.nan)

@@ -70,7 +70,7 @@ from contact.study.summary import (
 from geometry import __version__
 from geometry.core.caches import rows_not_kept
 from geometry.core.conventions import data_var
-from geometry.core.errors import InputError
+from geometry.core.errors import InputError, raise_if_interrupted
 
 __all__ = ["CLOSE_TIMEOUT", "SYNCHRONOUS", "WORKER_ENVIRON_UNSET", "analyse_point",
            "check_plausible_points", "close_local_cluster", "open_client", "run_points",
@@ -157,6 +157,7 @@ def analyse_point(shared: StudyInputs, index: int, point: Mapping[str, float]) -
         status = 0 if bool(np.all(summary["certified"] > 0)) else 1
         return PointResult(index, status, "", summary)
     except Exception as exc:
+        raise_if_interrupted(exc)
         log.info("study point %d %s failed: %s", index, dict(point), exc)
         reason = f"{type(exc).__name__}: {exc}".splitlines()[0]
         summary = failed_summary(len(shared.torque), max(len(shared.speed), 1))
