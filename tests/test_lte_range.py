@@ -12,7 +12,13 @@ import pytest
 import xarray as xr
 
 from contact import AnalysisChain, run_analysis, verdict
-from contact.ltca.lte_range import LTE_TORQUES, lte_range_torques
+from contact.ltca.lte_range import (
+    LTE_BISECTIONS,
+    LTE_TORQUES,
+    bisected,
+    lte_range,
+    lte_range_torques,
+)
 from geometry.core.io import read_netcdf
 
 #: the contact alone of the same case at the same torque, alone or in another batch of
@@ -41,6 +47,29 @@ def test_the_torques_judged():
         lte_range_torques((1.0, 2.0), n=1)
     with pytest.raises(ValueError, match="design torque NaN"):
         lte_range_torques((1.0, 2.0), math.nan)
+
+
+def test_the_crossing_bisected():
+    # the 16x16's shape: 38 / 53 / 109 / 117 at 97.4 / 281.4 / 465.4 / 649.4, a stand-in
+    # LTE that jumps at 400 N m: the bracket 281.4-465.4 halved twice, 60 at the first
+    seen = []
+
+    def jump(t):
+        seen.append(t)
+        return 55.0 if t < 400.0 else 105.0
+
+    t, y, added = bisected((97.4, 281.4, 465.4, 649.4), (38.0, 53.0, 109.0, 117.0), 60.0,
+                           jump)
+    assert LTE_BISECTIONS == 2
+    assert added == (373.4, 419.4) == tuple(seen)
+    assert t == (97.4, 281.4, 373.4, 419.4, 465.4, 649.4)
+    assert y == (38.0, 53.0, 55.0, 105.0, 109.0, 117.0)
+    # nothing to bracket: within at every torque, above at the first, NaN before it
+    for lte in ((38.0, 53.0), (61.0, 70.0), (math.nan, 70.0)):
+        assert bisected((1.0, 2.0), lte, 60.0, jump)[2] == ()
+    assert len(seen) == 2
+    with pytest.raises(ValueError, match="2 torques and 1 LTE"):
+        bisected((1.0, 2.0), (1.0,), 60.0, jump)
 
 
 def _ltca(torques, lte, between=None):
@@ -119,6 +148,16 @@ def test_run_and_synthesize_say_the_same_torque():
     assert _within(run[-1]) == _within(said)
     assert _within(said) == pytest.approx(note._replace(limit=limit).within, rel=1e-3)
     assert 50.0 < _within(said) < 500.0
+    # at that limit both bisect the crossing's interval alike: the same torques, the same
+    # LTE at each (the step's function at the limit, the note's analyses at it)
+    step = lte_range(lt.to_dataset(), case, limit=limit)
+    bisecting = analysed(case, 50.0, 500.0, limit=limit)
+    assert len(bisecting.torques) == len(torques) + LTE_BISECTIONS
+    np.testing.assert_allclose(step["lte_torque"].values, bisecting.torques, rtol=1e-15)
+    np.testing.assert_allclose(step["lte_range_peak_to_peak"].values, bisecting.lte,
+                               rtol=SAME)
+    assert list(step["lte_range_source"].values) == [0] + [1] * (len(torques) - 2
+                                                               + LTE_BISECTIONS) + [0]
 
 
 def test_the_default_run_judges_its_lte_between_its_torques(default_run_file):

@@ -15,25 +15,36 @@ verdict's ``lte`` check judges and its ``within`` torque is read from
 torques (:func:`contact.optimize.development_deflection.analysed`), so that both commands
 say the same torque for the same case.
 
+Where the LTE first exceeds the verdict's limit (:data:`contact.ltca.plausibility.LTE_LIMIT`,
+60 µrad) between two of these torques, :func:`bisected` analyses the middle of that
+interval :data:`LTE_BISECTIONS` times, so that the torque up to which it keeps the limit is
+bracketed four times closer than the grid alone (the LTE of a localised bearing may jump
+between two torques: interpolating over a wide interval says a torque the bearing does not
+keep). Both commands bisect alike.
+
 Public names
 ------------
-LTE_TORQUES, lte_range_torques, lte_range
+LTE_TORQUES, LTE_BISECTIONS, lte_range_torques, bisected, lte_range
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 import numpy as np
 import xarray as xr
 
-__all__ = ["LTE_TORQUES", "lte_range", "lte_range_torques"]
+__all__ = ["LTE_BISECTIONS", "LTE_TORQUES", "bisected", "lte_range", "lte_range_torques"]
 
 #: torques [1] from the lightest analysed torque to the heaviest one up to the design
 #: torque (both included, evenly spaced) at which the LTE p-p is judged: on the 16x16 at
 #: Σ 60° the LTE p-p 45 / 47 / 111 / 122 µrad at 97.4 / 281 / 465 / 649.4 N m
 LTE_TORQUES = 4
+
+#: bisections [1] of the interval where the LTE p-p first exceeds the limit (one torque
+#: analysed each): the crossing bracketed to 1/4 of the grid's interval
+LTE_BISECTIONS = 2
 
 #: two torques closer than this share of the larger are one (the run's own is kept)
 _SAME_TORQUE = 1e-9
@@ -93,10 +104,63 @@ def lte_range_torques(torques: Sequence[float], design: float = math.inf,
     return tuple(sorted(out))
 
 
+def bisected(torques: Sequence[float], lte: Sequence[float], limit: float,
+             analyse: Callable[[float], float], bisections: int = LTE_BISECTIONS
+             ) -> tuple[tuple[float, ...], tuple[float, ...], tuple[float, ...]]:
+    """The LTE p-p at more torques where it first exceeds ``limit``: the middle of the
+    interval that brackets the crossing analysed, ``bisections`` times.
+
+    Parameters
+    ----------
+    torques : sequence of float, shape (n,) — [N·m]
+        Ascending.
+    lte : sequence of float, shape (n,) — [µrad]
+        The LTE p-p at each.
+    limit : float — [µrad]
+    analyse : callable
+        ``analyse(torque) -> LTE p-p`` [N·m → µrad] (NaN where it has none).
+    bisections : int, optional
+        Default :data:`LTE_BISECTIONS`.
+
+    Returns
+    -------
+    torques, lte : tuple of float — [N·m], [µrad]
+        Ascending, the new torques among them.
+    added : tuple of float — [N·m]
+        The torques analysed, in the order analysed.
+
+    Raises
+    ------
+    ValueError
+        ``torques`` and ``lte`` of different lengths.
+
+    Notes
+    -----
+    The crossing is the first one from below
+    (:func:`contact.study.lte_within.within_torque`); nothing is analysed where the LTE
+    keeps the limit at every torque, exceeds it at the first already, or a value up to
+    the crossing is not finite. Bisection: each step halves the bracket.
+    """
+    t, y = [float(x) for x in torques], [float(x) for x in lte]
+    if len(t) != len(y):
+        raise ValueError(f"bisected: {len(t)} torques and {len(y)} LTE values")
+    added: list[float] = []
+    for _ in range(int(bisections)):
+        above = [i for i, v in enumerate(y) if v > limit]
+        if not above or above[0] == 0 or not all(math.isfinite(v) for v in y[:above[0]]):
+            break
+        i = above[0]
+        mid = 0.5 * (t[i - 1] + t[i])
+        t.insert(i, mid)
+        y.insert(i, float(analyse(mid)))
+        added.append(mid)
+    return tuple(t), tuple(y), tuple(added)
+
+
 def lte_range(ltca: xr.Dataset, case, *, design: float = math.inf,
               flank: str | None = None, options=None, easeoff=None,
               transitions: tuple[float, float] | None = None,
-              n: int = LTE_TORQUES) -> dict[str, xr.Variable]:
+              n: int = LTE_TORQUES, limit: float | None = None) -> dict[str, xr.Variable]:
     """The LTE p-p of an analysis at :func:`lte_range_torques`: the run's own values where
     it analysed the torque, the contact alone's (:func:`contact.ltca.loaded_tca`) between.
 
@@ -113,12 +177,16 @@ def lte_range(ltca: xr.Dataset, case, *, design: float = math.inf,
         between is the same analysis' at other torques.
     n : int, optional
         :func:`lte_range_torques`'s ``n`` (default :data:`LTE_TORQUES`).
+    limit : float, optional — [µrad]
+        The limit whose first crossing :func:`bisected` brackets closer (default
+        :data:`contact.ltca.plausibility.LTE_LIMIT`, the verdict's).
 
     Returns
     -------
     dict of str to xarray.Variable
         Empty where no torque is judged (:func:`lte_range_torques` empty). Else
-        ``lte_torque`` [N·m] (the coordinate, dimension ``lte_torque``, ascending),
+        ``lte_torque`` [N·m] (the coordinate, dimension ``lte_torque``, ascending: the
+        :func:`lte_range_torques` and the :func:`bisected` ones),
         ``lte_range_peak_to_peak`` (lte_torque) [µrad] and ``lte_range_source``
         (lte_torque) [1]: 0 where the value is the run's own ``lte_peak_to_peak``, 1 where
         the contact alone was analysed at the torque (NaN there where a roll position has
@@ -151,18 +219,29 @@ def lte_range(ltca: xr.Dataset, case, *, design: float = math.inf,
                                                                           np.abs(own_t)))
         values.append(float(own_y[i[0]]) if i.size else math.nan)
         source.append(0 if i.size else 1)
+    def analyse(ts: list[float]) -> np.ndarray:
+        ds = loaded_tca(case, ts, flank=flank, options=options, easeoff=easeoff,
+                        transitions=transitions)
+        certified = np.asarray(ds["found"].values, bool).all(axis=-1)
+        return np.where(certified, np.asarray(ds["lte_peak_to_peak"].values, float),
+                        math.nan)
+
     new = [t for t, s in zip(judged, source, strict=True) if s == 1]
     if new:
-        ds = loaded_tca(case, new, flank=flank, options=options, easeoff=easeoff,
-                        transitions=transitions)
-        pp = np.asarray(ds["lte_peak_to_peak"].values, float)
-        certified = np.asarray(ds["found"].values, bool).all(axis=-1)
-        pp = np.where(certified, pp, math.nan)
+        pp = analyse(new)
         k = 0
         for j, s in enumerate(source):
             if s == 1:
                 values[j] = float(pp[k])
                 k += 1
+    if limit is None:
+        from contact.ltca.plausibility import LTE_LIMIT
+
+        limit = LTE_LIMIT
+    judged, values, _ = bisected(judged, values, float(limit),
+                                 lambda t: float(analyse([t])[0]))
+    source = [0 if i.size else 1 for i in
+              (np.flatnonzero(own_t == t) for t in judged)]
     dim = ("lte_torque",)
     return {
         "lte_torque": xr.Variable(dim, np.asarray(judged, float), {
@@ -174,8 +253,9 @@ def lte_range(ltca: xr.Dataset, case, *, design: float = math.inf,
             "source": "the run's lte_peak_to_peak at its own torques; between them the "
             "contact alone (contact.ltca.loaded_tca: the run's options, ease-off and "
             "transitions, no friction, FE stress or mesh interface), "
-            f"{int(n)} torques evenly spaced from the lightest to the heaviest judged "
-            "(contact.ltca.lte_range; issue 71)"}),
+            f"{int(n)} torques evenly spaced from the lightest to the heaviest judged, the "
+            f"interval where it first exceeds {float(limit):g} urad bisected "
+            f"{LTE_BISECTIONS} times (contact.ltca.lte_range; issue 71)"}),
         "lte_range_source": xr.Variable(dim, np.asarray(source, np.int8), {
             "units": "1", "long_name": "where lte_range_peak_to_peak comes from",
             "flag_values": np.asarray([0, 1], np.int8),

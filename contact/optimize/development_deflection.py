@@ -50,7 +50,7 @@ from typing import NamedTuple
 import numpy as np
 import xarray as xr
 
-from contact.ltca.lte_range import LTE_TORQUES, lte_range_torques
+from contact.ltca.lte_range import LTE_TORQUES, bisected, lte_range_torques
 from contact.study.lte_within import within_text, within_torque
 from geometry.case import Case
 
@@ -174,12 +174,13 @@ def curvature_ratio(z1: int, z2: int, delta1: float, delta2: float) -> float:
 
 
 def analysed(case: Case, light: float, design: float, flank: str = "drive",
-             n: int = LTE_TORQUES) -> DeflectionLTE:
+             n: int = LTE_TORQUES, limit: float | None = None) -> DeflectionLTE:
     """:func:`deflection_lte` of a written case at ``n`` torques from ``light`` to
     ``design``, analysed as ``ltca run`` does (its default LTCA sampling and compliance;
     the contact analysis alone): the torques of ``ltca run``'s ``lte_range`` step
-    (:func:`contact.ltca.lte_range.lte_range_torques`), so that the note and the run's
-    ``lte`` finding say the same torque (issue 71).
+    (:func:`contact.ltca.lte_range.lte_range_torques`, the interval where the LTE first
+    exceeds the limit :func:`contact.ltca.lte_range.bisected` as the step bisects it), so
+    that the note and the run's ``lte`` finding say the same torque (issue 71).
 
     Parameters
     ----------
@@ -189,7 +190,10 @@ def analysed(case: Case, light: float, design: float, flank: str = "drive",
     flank : str
         ``"drive"`` (default) or ``"coast"``.
     n : int
-        Torques analysed, ≥ 2 (default :data:`LTE_TORQUES`).
+        Torques evenly spaced, ≥ 2 (default :data:`LTE_TORQUES`; the bisections' more).
+    limit : float, optional — [µrad]
+        The limit (default :data:`contact.study.verdicts.LTE_LIMIT`, 60 µrad) whose first
+        crossing is bisected.
 
     Returns
     -------
@@ -211,7 +215,20 @@ def analysed(case: Case, light: float, design: float, flank: str = "drive",
     torques = list(lte_range_torques((float(light), float(design)), float(design), int(n)))
     tree = run_analysis(case, torques, flank=flank, deviations=False,
                         steps=AnalysisChain.contact_only())
-    return deflection_lte(tree["/ltca"].to_dataset())
+    found = deflection_lte(tree["/ltca"].to_dataset(), limit)
+    more: dict[float, float] = {}  # the bisections' mean deflection [µrad] by torque
+
+    def alone(torque: float) -> float:
+        one = deflection_lte(run_analysis(case, [torque], flank=flank, deviations=False,
+                                          steps=AnalysisChain.contact_only())
+                             ["/ltca"].to_dataset())
+        more[torque] = one.deflection[0]
+        return one.lte[0]
+
+    # the crossing bracketed closer, as the lte_range step does
+    t, lte, _ = bisected(found.torques, found.lte, found.limit, alone)
+    deflection = dict(zip(found.torques, found.deflection, strict=True)) | more
+    return DeflectionLTE(t, lte, tuple(deflection[x] for x in t), found.limit)
 
 
 def deflection_text(found: DeflectionLTE, curvature: float = math.nan) -> str | None:
