@@ -213,12 +213,9 @@ def lte_range(ltca: xr.Dataset, case, *, design: float = math.inf,
     judged = lte_range_torques(own_t, design, n)
     if not judged:
         return {}
-    values, source = [], []
-    for t in judged:
-        i = np.flatnonzero(np.abs(own_t - t) <= _SAME_TORQUE * np.maximum(abs(t),
-                                                                          np.abs(own_t)))
-        values.append(float(own_y[i[0]]) if i.size else math.nan)
-        source.append(0 if i.size else 1)
+    # the run's own torques (lte_range_torques keeps them as they are)
+    own = dict(zip(own_t.tolist(), own_y.tolist(), strict=True))
+
     def analyse(ts: list[float]) -> np.ndarray:
         ds = loaded_tca(case, ts, flank=flank, options=options, easeoff=easeoff,
                         transitions=transitions)
@@ -226,22 +223,16 @@ def lte_range(ltca: xr.Dataset, case, *, design: float = math.inf,
         return np.where(certified, np.asarray(ds["lte_peak_to_peak"].values, float),
                         math.nan)
 
-    new = [t for t, s in zip(judged, source, strict=True) if s == 1]
-    if new:
-        pp = analyse(new)
-        k = 0
-        for j, s in enumerate(source):
-            if s == 1:
-                values[j] = float(pp[k])
-                k += 1
+    new = [t for t in judged if t not in own]
+    alone = dict(zip(new, analyse(new).tolist(), strict=True)) if new else {}
+    values = [own[t] if t in own else alone[t] for t in judged]
     if limit is None:
         from contact.ltca.plausibility import LTE_LIMIT
 
         limit = LTE_LIMIT
     judged, values, _ = bisected(judged, values, float(limit),
                                  lambda t: float(analyse([t])[0]))
-    source = [0 if i.size else 1 for i in
-              (np.flatnonzero(own_t == t) for t in judged)]
+    source = [0 if t in own else 1 for t in judged]
     dim = ("lte_torque",)
     return {
         "lte_torque": xr.Variable(dim, np.asarray(judged, float), {
