@@ -114,6 +114,18 @@ def test_the_lte_check_judges_the_torques_between():
     assert "at 200 N·m" in left.reason
 
 
+def test_the_run_prints_the_lte_between():
+    from contact.commands.run import lte_between_line
+
+    ds = _ltca([100.0, 400.0], [47.0, 58.0],
+               ([100.0, 200.0, 300.0, 400.0], [47.0, 64.04, math.nan, 58.0], [0, 1, 1, 0]))
+    assert lte_between_line(ds) == (
+        "LTE p-p between the torques, the contact alone (/ltca/lte_range_peak_to_peak; the "
+        "verdict judges them up to the design torque): 64.0 / nan urad at 200 / 300 N m")
+    assert lte_between_line(_ltca([100.0], [47.0])) is None  # a file from before
+    assert lte_between_line(_ltca([100.0], [47.0], ([100.0], [47.0], [0]))) is None
+
+
 def _within(text: str) -> float:
     found = re.search(r"within [0-9.]+ u?µ?rad up to about ([0-9.]+) N", text)
     assert found is not None, text
