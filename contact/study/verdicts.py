@@ -593,11 +593,12 @@ def _within_clause(lt: xr.Dataset, limit: float, design: float, torque: float) -
     ``ltca synthesize``'s deflection note, which analyses the same torques of a written
     case); empty where one torque is there or its LTE exceeds the limit at the first
     already. Issue 71: ``ltca synthesize`` said the torque, ``ltca run`` the deflection
-    share only; then each its own (the run two torques, synthesize four)."""
+    share only; then each from its own torques (the run two, synthesize four) until the
+    ``lte_range`` step."""
     from contact.study.lte_within import within_text
 
     t, y, own = _lte_curve(lt)
-    keep = (t <= torque) & np.isfinite(y)
+    keep = (t <= torque) & (np.isfinite(y) | own)  # a torque between without an LTE left out
     said = within_text(t[keep], y[keep], limit, design)
     if said is None:
         return ""
