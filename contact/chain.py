@@ -4,6 +4,7 @@
 One analysis of a case is a fixed sequence of steps (:data:`STEP_ORDER`)::
 
     geometry → utca → ltca → root_stress → mesh_interface → efficiency → load_capacity
+             → lte_range
 
 Each step is chosen by name from :data:`STEPS` (its implementations), given as a callable of
 the user's, or — the optional ones, all but ``utca`` and ``ltca`` — skipped with ``None``.
@@ -33,6 +34,7 @@ from __future__ import annotations
 
 import dataclasses
 import logging
+import math
 import os
 import time
 from collections.abc import Callable, Mapping
@@ -65,9 +67,10 @@ log = logging.getLogger(__name__)
 
 #: the steps of one analysis, in the order they run
 STEP_ORDER = ("geometry", "utca", "ltca", "root_stress", "mesh_interface", "efficiency",
-              "load_capacity")
+              "load_capacity", "lte_range")
 #: the steps that may be skipped (``None``); ``utca`` and ``ltca`` make the analysis
-OPTIONAL_STEPS = ("geometry", "root_stress", "mesh_interface", "efficiency", "load_capacity")
+OPTIONAL_STEPS = ("geometry", "root_stress", "mesh_interface", "efficiency", "load_capacity",
+                  "lte_range")
 
 #: a step: a name of :data:`STEPS`, a callable ``f(state: ChainState) -> None`` or None
 StepChoice = str | Callable[["ChainState"], None] | None
@@ -252,6 +255,35 @@ def ltca_qp(state: ChainState) -> None:
         progress=state.progress, transitions=state.transitions,
         roll_problems=state.roll_problems)
     state.times["ltca"] = time.perf_counter() - t0
+
+
+def lte_range_ltca(state: ChainState) -> None:
+    """``lte_torque`` [N·m], ``lte_range_peak_to_peak`` [µrad] and ``lte_range_source``
+    added to ``/ltca``: the LTE p-p at :data:`contact.ltca.lte_range.LTE_TORQUES` torques
+    from the lightest analysed torque to the heaviest up to the rating's design torque
+    (``/rating`` ``design_torque``; every torque without one), the contact alone
+    (:func:`contact.ltca.loaded_tca` with the run's options, ease-off and transitions)
+    analysed at those the run has not (:func:`contact.ltca.lte_range.lte_range`; issue
+    71: an LTE that peaks between the run's torques is judged). Nothing is added where no
+    torque is at or below the design torque."""
+    from contact.ltca.lte_range import lte_range
+
+    lt = state.groups["/ltca"]
+    rating = state.groups.get("/rating")
+    design = math.inf
+    if rating is not None and "design_torque" in rating and rating["design_torque"].ndim == 0:
+        design = float(rating["design_torque"])
+        if not math.isfinite(design):
+            design = math.inf
+    t0 = time.perf_counter()
+    found = lte_range(lt, state.case, design=design, flank=state.flank,
+                      options=state.options, easeoff=state.easeoff,
+                      transitions=state.transitions)
+    state.times["lte_range"] = time.perf_counter() - t0
+    if not found:
+        return
+    coords = {"lte_torque": found.pop("lte_torque")}
+    state.groups["/ltca"] = assigned(lt, found, coords)
 
 
 def root_stress_fe(state: ChainState) -> None:
@@ -498,6 +530,7 @@ STEPS: Mapping[str, Mapping[str, Callable[[ChainState], None]]] = {
     "efficiency": {"local_friction": efficiency_local_friction},
     "load_capacity": {"iso10300": _rating_step("iso10300"),
                       "scuffing_micropitting": load_capacity_without_rating},
+    "lte_range": {"ltca": lte_range_ltca},
 }
 
 
@@ -559,6 +592,12 @@ class AnalysisChain:
         6336-20 (``"iso10300"``), or the rating of another method of the load-capacity
         registry by its name (:func:`contact.load_capacity.available_methods`);
         ``"scuffing_micropitting"``: the first alone (no rating, ``ltca run --no-rating``).
+    lte_range : str, callable or None
+        ``lte_torque`` [N·m], ``lte_range_peak_to_peak`` [µrad] and ``lte_range_source``
+        in ``/ltca``: the LTE p-p from the lightest torque to the heaviest up to the
+        rating's design torque, the contact alone analysed between the run's torques
+        (``"ltca"``, :func:`contact.ltca.lte_range.lte_range`; issue 71), which the
+        verdict's ``lte`` check judges.
     fe_options : contact.compliance.fe.FEOptions or None
         The root-stress step's FE model (None: the default one, or with the FE compliance
         the compliance's own; :meth:`with_root_stress` sets it).
@@ -593,6 +632,7 @@ class AnalysisChain:
     mesh_interface: StepChoice = "linearised"
     efficiency: StepChoice = "local_friction"
     load_capacity: StepChoice = "iso10300"
+    lte_range: StepChoice = "ltca"
     #: the root-stress step's FE model (contact.compliance.fe.FEOptions; None: the default
     #: one, or with the FE compliance the compliance's own)
     fe_options: Any = None
@@ -625,7 +665,7 @@ class AnalysisChain:
         stress, mesh interface, efficiency and load capacity skipped (add any back with
         the ``with_…`` methods)."""
         return cls(geometry=None, root_stress=None, mesh_interface=None, efficiency=None,
-                   load_capacity=None)
+                   load_capacity=None, lte_range=None)
 
     def with_steps(self, **choices: StepChoice) -> AnalysisChain:
         """This chain with the given steps' choices replaced (a name, a callable

@@ -56,6 +56,7 @@ READS: Mapping[str, tuple[str, ...]] = {
     "mesh_interface": ("/ltca",),
     "efficiency": ("/ltca",),
     "load_capacity": ("/ltca",),
+    "lte_range": ("/ltca",),
 }
 
 

@@ -137,7 +137,7 @@ def test_unknown_step_names_list_the_available_ones():
         AnalysisChain(load_capacity="agma9999")
     with pytest.raises(InputError, match=r"^steps: unknown step 'friction'; the steps are "
                                          r"geometry, utca, ltca, root_stress, mesh_interface, "
-                                         r"efficiency, load_capacity$"):
+                                         r"efficiency, load_capacity, lte_range$"):
         run_analysis(None, [TORQUE], options=SMALL, steps={"friction": None})
     with pytest.raises(InputError, match=r"^steps\.ltca: the analysis cannot skip it"):
         run_analysis(None, [TORQUE], options=SMALL, steps={"ltca": None})

@@ -379,6 +379,9 @@ def _run(args: argparse.Namespace) -> int:
         for line in durability_lines(sm, standard):
             print(line)
     print("RMS*: root-sum-square of the first three harmonics, as the seed's Table 3.1.")
+    between = lte_between_line(lt)
+    if between is not None:  # the lte_range step's torques (contact.ltca.lte_range)
+        print(between)
     print(plastic_note(lt))
     failed = str(tree.attrs.get("root_stress_not_run", ""))
     if "root_stress_max" not in lt and failed.startswith("root stress not computed"):
@@ -540,6 +543,26 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
                 f"    ltca run {shown} --flank {side} --torque {torques} --temperature "
                 f"{op.temperature - 20.0:g} --roughness {op.roughness / 2.0:g}"]
     return out
+
+
+def lte_between_line(ltca) -> str | None:
+    """The line ``ltca run`` prints under its LTE table: the LTE p-p [µrad] the
+    ``lte_range`` step analysed between the run's torques (the contact alone,
+    :mod:`contact.ltca.lte_range`), which the verdict's ``lte`` check judges beside the
+    table's; None where the result has none (issue 71)."""
+    import numpy as np
+
+    if "lte_range_source" not in ltca or "lte_range_peak_to_peak" not in ltca:
+        return None
+    alone = np.asarray(ltca["lte_range_source"].values) == 1
+    if not alone.any():
+        return None
+    t = np.asarray(ltca["lte_torque"].values, float)[alone]
+    y = np.asarray(ltca["lte_range_peak_to_peak"].values, float)[alone]
+    return ("LTE p-p between the torques, the contact alone (/ltca/lte_range_peak_to_peak; "
+            "the verdict judges them up to the design torque): "
+            + " / ".join(f"{v:.1f}" for v in y) + " urad at "
+            + " / ".join(f"{x:g}" for x in t) + " N m")
 
 
 def _light_design_lte(tree) -> list[float] | None:

@@ -36,7 +36,8 @@ torque).
 
 Public names
 ------------
-LTE_TORQUES, CURVATURE_RATIO_NOTE, DeflectionLTE, deflection_lte, within_torque (of
+LTE_TORQUES (of :mod:`contact.ltca.lte_range`, which `ltca run`'s ``lte_range`` step
+shares), CURVATURE_RATIO_NOTE, DeflectionLTE, deflection_lte, within_torque (of
 :mod:`contact.study.lte_within`, which `ltca run`'s verdict shares), analysed,
 curvature_ratio, deflection_text
 """
@@ -49,6 +50,7 @@ from typing import NamedTuple
 import numpy as np
 import xarray as xr
 
+from contact.ltca.lte_range import LTE_TORQUES, bisected, lte_range_torques
 from contact.study.lte_within import within_text, within_torque
 from geometry.case import Case
 
@@ -61,12 +63,6 @@ __all__ = ["CURVATURE_RATIO_NOTE", "LTE_TORQUES", "DeflectionLTE", "analysed",
 #: Σ 90°, 0.32 on the 13x39 (ratio 3) whose deflection at its ISO capacity is half the
 #: 16x16's in gear angle
 CURVATURE_RATIO_NOTE = 0.45
-
-#: torques [1] analysed from the light to the design torque (both included, evenly
-#: spaced) to find the torque up to which the written bearing's LTE keeps its limit: on
-#: the 16x16 at Σ 60° the LTE p-p 45 / 47 / 111 / 122 µrad at 97.4 / 281 / 465 / 649.4 N m
-#: (1.5-3 s CPU with the written case's compliance cached)
-LTE_TORQUES = 4
 
 
 class DeflectionLTE(NamedTuple):
@@ -178,10 +174,13 @@ def curvature_ratio(z1: int, z2: int, delta1: float, delta2: float) -> float:
 
 
 def analysed(case: Case, light: float, design: float, flank: str = "drive",
-             n: int = LTE_TORQUES) -> DeflectionLTE:
+             n: int = LTE_TORQUES, limit: float | None = None) -> DeflectionLTE:
     """:func:`deflection_lte` of a written case at ``n`` torques from ``light`` to
     ``design``, analysed as ``ltca run`` does (its default LTCA sampling and compliance;
-    the contact analysis alone).
+    the contact analysis alone): the torques of ``ltca run``'s ``lte_range`` step
+    (:func:`contact.ltca.lte_range.lte_range_torques`, the interval where the LTE first
+    exceeds the limit :func:`contact.ltca.lte_range.bisected` as the step bisects it), so
+    that the note and the run's ``lte`` finding say the same torque (issue 71).
 
     Parameters
     ----------
@@ -191,7 +190,10 @@ def analysed(case: Case, light: float, design: float, flank: str = "drive",
     flank : str
         ``"drive"`` (default) or ``"coast"``.
     n : int
-        Torques analysed, ≥ 2 (default :data:`LTE_TORQUES`).
+        Torques evenly spaced, ≥ 2 (default :data:`LTE_TORQUES`; the bisections' more).
+    limit : float, optional — [µrad]
+        The limit (default :data:`contact.study.verdicts.LTE_LIMIT`, 60 µrad) whose first
+        crossing is bisected.
 
     Returns
     -------
@@ -209,10 +211,24 @@ def analysed(case: Case, light: float, design: float, flank: str = "drive",
 
     if n < 2:
         raise ValueError(f"analysed: n must be >= 2, got {n}")
-    torques = [float(t) for t in np.linspace(float(light), float(design), int(n))]
+    # the torques `ltca run`'s lte_range step judges a case analysed at (light, design)
+    torques = list(lte_range_torques((float(light), float(design)), float(design), int(n)))
     tree = run_analysis(case, torques, flank=flank, deviations=False,
                         steps=AnalysisChain.contact_only())
-    return deflection_lte(tree["/ltca"].to_dataset())
+    found = deflection_lte(tree["/ltca"].to_dataset(), limit)
+    more: dict[float, float] = {}  # the bisections' mean deflection [µrad] by torque
+
+    def alone(torque: float) -> float:
+        one = deflection_lte(run_analysis(case, [torque], flank=flank, deviations=False,
+                                          steps=AnalysisChain.contact_only())
+                             ["/ltca"].to_dataset())
+        more[torque] = one.deflection[0]
+        return one.lte[0]
+
+    # the crossing bracketed closer, as the lte_range step does
+    t, lte, _ = bisected(found.torques, found.lte, found.limit, alone)
+    deflection = dict(zip(found.torques, found.deflection, strict=True)) | more
+    return DeflectionLTE(t, lte, tuple(deflection[x] for x in t), found.limit)
 
 
 def deflection_text(found: DeflectionLTE, curvature: float = math.nan) -> str | None:

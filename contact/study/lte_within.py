@@ -51,7 +51,8 @@ def within_torque(torques: Sequence[float], lte: Sequence[float], limit: float) 
     Linear interpolation between analysed torques (the LTE p-p of a localised bearing is
     no smooth function of the torque: on the 16x16 at Σ 60° it stays at 45-47 µrad up to
     281 N m and jumps to 111 at 465 N m, so the crossing is only as close as the torques
-    analysed: :data:`contact.optimize.development_deflection.LTE_TORQUES`). Source: issue
+    analysed: :data:`contact.ltca.lte_range.LTE_TORQUES`, which ``ltca run`` and ``ltca
+    synthesize`` both analyse). Source: issue
     71, docs/own_gear_set.md ("The 16×16 at Σ 60° and its β_m 43.5° remedy").
     """
     t = np.asarray(torques, float)

@@ -588,10 +588,33 @@ def _implausible(lt: xr.Dataset, lte_limit: float) -> list[Finding]:
             for text in plausibility_warnings(lt, lte_limit, edge_free_spread=False)]
 
 
+def _lte_curve(lt: xr.Dataset) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(torques [N·m], LTE p-p [µrad], the run's own torque [bool]) the ``lte`` check
+    judges, ascending: ``/ltca``'s ``lte_range_peak_to_peak`` over ``lte_torque`` (the
+    contact alone between the run's torques, :mod:`contact.ltca.lte_range`) with the run's
+    torques it does not hold (above the design torque), or the run's torques alone (a
+    file written before it, or an analysis without the ``lte_range`` step)."""
+    t = np.asarray(lt["torque"].values, float)
+    y = np.asarray(lt["lte_peak_to_peak"].values, float)
+    own = np.ones(t.shape, bool)
+    if {"lte_range_peak_to_peak", "lte_range_source"} <= set(lt.variables):
+        rt = np.asarray(lt["lte_torque"].values, float)
+        ry = np.asarray(lt["lte_range_peak_to_peak"].values, float)
+        rown = np.asarray(lt["lte_range_source"].values) == 0
+        rest = ~np.isin(t, rt[rown])
+        t = np.concatenate([rt, t[rest]])
+        y = np.concatenate([ry, y[rest]])
+        own = np.concatenate([rown, own[rest]])
+    order = np.argsort(t, kind="stable")
+    return t[order], y[order], own[order]
+
+
 def _lte(lt: xr.Dataset, rating: xr.Dataset | None, limit: float) -> list[Finding]:
     """The ``lte`` check: per torque up to the rating's design torque (every torque without
     one), the LTE peak-to-peak above ``limit`` [µrad]: an attention, a FAIL above
-    :data:`LTE_FAIL_FACTOR` × ``limit``."""
+    :data:`LTE_FAIL_FACTOR` × ``limit``; the run's torques and those between them its
+    ``lte_range`` step analysed (:func:`_lte_curve`; issue 71: an LTE that peaks between
+    the run's torques is judged)."""
     if "lte_peak_to_peak" not in lt:
         return []
     design = (float(rating["design_torque"]) if rating is not None
@@ -600,20 +623,23 @@ def _lte(lt: xr.Dataset, rating: xr.Dataset | None, limit: float) -> list[Findin
     if not math.isfinite(design):
         design = math.inf
     out = []
-    above_at = [float(t) for t, pp in zip(lt["torque"].values, lt["lte_peak_to_peak"].values,
-                                         strict=True)
-             if np.isfinite(pp) and pp > limit and float(t) <= design]
-    for t, pp in zip(lt["torque"].values, lt["lte_peak_to_peak"].values, strict=True):
+    torques, lte, own = _lte_curve(lt)
+    above_at = [float(t) for t, pp in zip(torques, lte, strict=True)
+                if np.isfinite(pp) and pp > limit and float(t) <= design]
+    for t, pp, mine in zip(torques, lte, own, strict=True):
         if not np.isfinite(pp) or pp <= limit or float(t) > design:
             continue
         upto = (f"up to the design torque {_t(design)}" if math.isfinite(design)
                 else "at every torque")
-        ratios = _contact_ratios(lt, rating, t)
+        ratios = _contact_ratios(lt, rating, t) if mine else ""
         loud = pp > LTE_FAIL_FACTOR * limit
         above = (f", {shown_above(pp / limit, LTE_FAIL_FACTOR, 1)} times the {limit:g} "
                  "µrad of " if loud else f" above {limit:g} µrad, ")
+        between = ("" if mine else " (a torque between the run's, its contact alone "
+                   "analysed for the LTE: /ltca/lte_range_peak_to_peak)")
         out.append(Finding("fail" if loud else "attention", "lte",
-                           f"LTE peak-to-peak {shown_above(pp, limit)} µrad at {_t(t)}{above}"
+                           f"LTE peak-to-peak {shown_above(pp, limit)} µrad at {_t(t)}"
+                           f"{between}{above}"
                            f"the loaded transmission error a quiet bearing keeps {upto}: "
                            + (f"beyond {LTE_FAIL_FACTOR:g} times it a gear whine 6 dB and "
                               "more above the limit's, no design to release" if loud
@@ -621,7 +647,7 @@ def _lte(lt: xr.Dataset, rating: xr.Dataset | None, limit: float) -> list[Findin
                            + " (the bearing's relief and TE level, or contact ratios below "
                            "their limits, set it; docs/verdicts.md)"
                            + (f"; {ratios}" if ratios else "")
-                           + _deflection_share(lt, t, pp, limit)
+                           + (_deflection_share(lt, t, pp, limit) if mine else "")
                            + (_within_clause(lt, limit, design, float(t))
                               if float(t) == max(above_at) else "")))
     return out
@@ -629,24 +655,30 @@ def _lte(lt: xr.Dataset, rating: xr.Dataset | None, limit: float) -> list[Findin
 
 def _within_clause(lt: xr.Dataset, limit: float, design: float, torque: float) -> str:
     """The ``lte`` finding's clause on the torque up to which the LTE p-p keeps ``limit``,
-    interpolated linearly between the run's torques up to ``torque`` (the largest one the
-    check judges; :func:`contact.study.lte_within.within_text`, the words of ``ltca
-    synthesize``'s deflection note); empty where the run has one torque there or its LTE
-    exceeds the limit at the first already. Issue 71: ``ltca synthesize`` said the torque,
-    ``ltca run`` the deflection share only."""
+    interpolated linearly between the torques its LTE was analysed at up to ``torque``
+    (the largest one the check judges; :func:`_lte_curve`: the run's and its
+    ``lte_range`` step's; :func:`contact.study.lte_within.within_text`, the words of
+    ``ltca synthesize``'s deflection note, which analyses the same torques of a written
+    case); empty where one torque is there or its LTE exceeds the limit at the first
+    already. Issue 71: ``ltca synthesize`` said the torque, ``ltca run`` the deflection
+    share only; then each from its own torques (the run two, synthesize four) until the
+    ``lte_range`` step."""
     from contact.study.lte_within import within_text
 
-    t = np.asarray(lt["torque"].values, float)
-    y = np.asarray(lt["lte_peak_to_peak"].values, float)
-    order = np.argsort(t)
-    t, y = t[order], y[order]
-    keep = t <= torque
+    t, y, own = _lte_curve(lt)
+    keep = (t <= torque) & (np.isfinite(y) | own)  # a torque between without an LTE left out
     said = within_text(t[keep], y[keep], limit, design)
     if said is None:
         return ""
-    return (f"; it stays {said}, interpolated linearly between this run's torques (the "
-            "LTE of a localised bearing is no smooth function of the torque: more torques, "
-            "--torque, bracket it closer; ltca synthesize's note analyses four)")
+    if own[keep].all():
+        return (f"; it stays {said}, interpolated linearly between this run's torques "
+                "(the LTE of a localised bearing is no smooth function of the torque: more "
+                "torques, --torque, bracket it closer; ltca synthesize's note analyses four)")
+    return (f"; it stays {said}, interpolated linearly between the torques analysed for "
+            "it (the run's and, between them, the contact alone's: /ltca/"
+            "lte_range_peak_to_peak, the torques ltca synthesize's note analyses; the LTE "
+            "of a localised bearing is no smooth function of the torque: --torque "
+            "brackets it closer)")
 
 
 def _deflection_share(lt: xr.Dataset, torque: float, pp: float, limit: float) -> str:
