@@ -113,7 +113,11 @@ round-off: 1e-16–1e-14 relative), so the diff shows the switch alone. Issue 71
 pinion's slot bottom rounded by the blades' edge radius where its two cuts cross): only
 ``/ltca/root_stress`` (the pinion's stations away from its peak, −12.8 … +7.5 %),
 ``root_stress_max`` (the pinion's peaks by ≤ 1.7e-3 MPa) and the ``fe_cache_keys``
-attribute were taken from a ``--write`` run, every other entry kept.
+attribute were taken from a ``--write`` run, every other entry kept. Issue 71's
+``lte_range`` step (the LTE judged between the run's torques, on by default in
+``ltca run``) added ``/ltca/lte_torque``, ``lte_range_peak_to_peak`` and
+``lte_range_source`` and the ``/ltca`` group's ``lte_torque`` dimension, taken from a
+``--write`` run; every other entry was kept (that run reproduced them at round-off).
 
 Usage
 -----

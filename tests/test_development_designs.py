@@ -220,8 +220,10 @@ def test_user_design_synthesised_developed_run_and_rated(basic, tmp_path, capsys
         assert np.all(share == 0.0), share
     if "light_edge" in met:  # the light torque is the first (the development's)
         assert float(np.nan_to_num(lt["pressure_max_edge"].values)[0]) == 0.0
-    if "lte60" in met:
+    if "lte60" in met:  # at the run's torques and between them (its lte_range step)
         assert np.all(lt["lte_peak_to_peak"].values <= 60.0), lt["lte_peak_to_peak"].values
+        between = np.asarray(lt["lte_range_peak_to_peak"].values)
+        assert np.all(np.nan_to_num(between) <= 60.0), between
 
     # the coast flank (reverse gear: the full torque on the coast side)
     coast = case["development"]["coast"]
@@ -235,9 +237,11 @@ def test_user_design_synthesised_developed_run_and_rated(basic, tmp_path, capsys
     root = tree["/ltca"]["root_stress_max"].values
     assert np.all(np.isfinite(root)) and np.all(root > 0)
     coast_met = COAST_DONE_WHEN.get(basic.stem, set())
-    if "coast_lte60" in coast_met:  # at the light and the coast design torque
+    if "coast_lte60" in coast_met:  # at the light and the coast design torque and between
         lte = tree["/ltca"]["lte_peak_to_peak"].values
         assert np.all(lte <= 60.0), lte
+        between = np.asarray(tree["/ltca"]["lte_range_peak_to_peak"].values)
+        assert np.all(np.nan_to_num(between) <= 60.0), between
     if "duty" in coast_met:  # the default spectrum up to the design torque
         nc_duty = tmp_path / f"{basic.stem}_duty.nc"
         main(["duty-cycle", str(case_path), "--scheduler", "synchronous", "-o", str(nc_duty)])
