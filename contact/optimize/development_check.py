@@ -319,7 +319,9 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     (:func:`contact.optimize.development_lighter_relief.checked_lighter_relief`); where
     its design torque's LTE still misses the target or 60 µrad with the contact there on
     a tip edge, a lighter, then a longer tip relief
-    (:func:`contact.optimize.development_tip_lte.checked_tip_lte`);
+    (:func:`contact.optimize.development_tip_lte.checked_tip_lte`); where its design
+    torque's LTE still exceeds 60 µrad, the path turned towards the profile again with the
+    ellipse shortened (:func:`contact.optimize.development_path_lte.checked_path_lte`);
     last, where it misses its
     light-load
     centre v and nothing by more than a small margin, a small blade-angle step with the TE level
@@ -364,6 +366,8 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     best = checked_lighter_relief(best, targets, setup, teeth, say, placed)
     from contact.optimize.development_tip_lte import checked_tip_lte
     best = checked_tip_lte(best, targets, setup, teeth, say, placed)
+    from contact.optimize.development_path_lte import checked_path_lte
+    best = checked_path_lte(best, targets, setup, teeth, say, placed)
     return checked_near_miss(best, targets, setup, teeth, say, placed, level,
                              slope=(slopes or {}).get(bearing_key(best.values)))
 
