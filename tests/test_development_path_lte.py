@@ -134,6 +134,24 @@ def test_a_design_not_tolerant_is_not_kept(monkeypatch):
     assert reach["why"] == "not tolerant at dE/dP +/-0.05 mm"
 
 
+def test_a_turn_clipped_to_a_path_tried_is_not_analysed(monkeypatch):
+    """A path 5° from its bound (the 17x29 at Σ 100°: 18 / 85 µrad at −75°, 18 / 88 at
+    −80° by the law): the first turn is clipped to the bound (−80°), the second would be
+    the bound again with a shorter ellipse only, and is not tried."""
+    def law(case, torques, misalignment=None, **kw):
+        m, limits = _eight_by_35(case | {"ellipse_length": 0.75}, torques, misalignment,
+                                 **kw)
+        design = 85.0 if float(case["path_angle"]) == -75.0 else 88.0
+        return m | {"lte_peak_to_peak": np.array([18.0, design])}, limits
+
+    seen, fake = _seen(law)
+    targets, setup, chosen = stand_in(monkeypatch, fake, [55.3, 368.9])
+    start = chosen(dict(WRITTEN) | {"path_angle": -75.0})
+    seen.clear()
+    dpl.checked_path_lte(start, targets, setup, None, lambda s: None, lambda v: dict(v))
+    assert [(s["path_angle"], s["ellipse_length"]) for s in seen] == [(-80.0, 0.7)]
+
+
 @pytest.mark.parametrize("over", [
     {"lte_peak_to_peak": [47.0, 58.0]},  # within the verdict's 60 µrad
     {"lte_peak_to_peak": [47.0, float("nan")]},  # not analysed there
