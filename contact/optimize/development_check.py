@@ -318,10 +318,13 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     relief started later; where it misses its LTE target alone by a small margin, a
     lighter tip relief, then a shallower root relief; where its design torque's LTE
     still misses the target or 60 µrad with the contact there on a tip edge, a lighter,
-    then a longer tip relief; last, where it misses its light-load centre v and nothing
-    by more than a small margin, a small blade-angle step with the TE level lowered
-    (:func:`checked_near_miss`; ``slopes``: the height stage's measured d(centre v)/d(blade
-    angle) per bearing). Run again where the design torque was lowered after them (to the
+    then a longer tip relief; where its design torque's LTE still exceeds 60 µrad, the
+    path turned towards the profile again with the ellipse shortened
+    (:func:`contact.optimize.development_path_lte.checked_path_lte`); last, where it
+    misses its light-load centre v and nothing by more than a small margin, a small
+    blade-angle step with the TE level lowered (:func:`checked_near_miss`; ``slopes``:
+    the height stage's measured d(centre v)/d(blade angle) per bearing). Run again where
+    the design torque was lowered after them (to the
     bearing's static flank capacity or its FE root-stress capacity): the light torque
     follows the design torque (``light_load`` × it), and the light-load LTE rises as the
     torque falls (the face-hobbed hypoid 11x43 of tests/data/designs: every target met
@@ -356,6 +359,8 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     best = checked_matched_te(best, targets, setup, teeth, say, placed)
     from contact.optimize.development_relief_lte import checked_relief_variants
     best = checked_relief_variants(best, targets, setup, teeth, say, placed)
+    from contact.optimize.development_path_lte import checked_path_lte
+    best = checked_path_lte(best, targets, setup, teeth, say, placed)
     return checked_near_miss(best, targets, setup, teeth, say, placed, level,
                              slope=(slopes or {}).get(bearing_key(best.values)))
 
