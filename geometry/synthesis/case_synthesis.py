@@ -427,7 +427,10 @@ def synthesize(basic: BasicDesign, *, conjugate: bool = False,
         level, ellipse length, approach and reference gear rotation, and reused when they
         recur (and the blanks and the gear flank's design point, which no prescription
         moves, whatever they are); only the relief (step 7) and the tip plane (step 8) are
-        made again. The
+        made again, and each of those only where its inputs are new: step 7 is kept under
+        steps 3–6's key and all the flank's prescriptions (a development varies one flank,
+        so the other flank's relief recurs at every trial; issue 75), step 8 under the
+        blade and settings. The
         result is the same as without a memo (steps 3–6 do not read the relief; the coast
         flank depends on the drive flank only through the mean point's gear rotation,
         which the prescriptions do not move), so a development that varies the drive
