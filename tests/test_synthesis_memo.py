@@ -83,16 +83,23 @@ def test_the_memo_keeps_steps_3_to_6_and_changes_nothing():
     def flanks() -> list:  # steps 3-6 kept, per flank (the rest: step 8's placements)
         return [k for k in entries if k[0] in ("concave", "convex")]
 
+    def reliefs() -> list:  # step 7 kept, per flank and prescriptions
+        return [k for k in entries if k[0] == "relieved"]
+
     assert len(flanks()) == 2  # its drive (concave) and coast (convex) flank
-    assert len(entries) == 11  # their tip planes (step 8), the gear flanks' design points,
-    # the blanks, each blade side's last placement (the next placement's start) and each
-    # flank's warm start of step 5
+    assert len(reliefs()) == 2  # and their reliefs
+    assert len(entries) - len(reliefs()) == 11  # their tip planes (step 8), the gear
+    # flanks' design points, the blanks, each blade side's last placement (the next
+    # placement's start) and each flank's warm start of step 5
     relieved = with_flank_options(basic, "concave", {"path_angle": -60.0, "tip_relief": 25.0,
                                                       "relief_start": 0.4})
     kept, _ = synthesize(relieved, memo=memo, progress=lines.append)
     assert len(flanks()) == 2  # only the relief was made again
-    assert len(entries) == 12  # and the drive flank's tip plane: the coast's was kept
+    assert len(reliefs()) == 3  # the drive flank's: the coast flank's relief was kept
+    assert len(entries) - len(reliefs()) == 12  # and the drive flank's tip plane: the
+    # coast's was kept
     assert sum("kept from an earlier synthesis" in line for line in lines) == 6
+    assert sum("tip and root relief" in line for line in lines) == 2  # said as made
     other = with_flank_options(basic, "concave", {"path_angle": -50.0})
     warm, _ = synthesize(other, memo=memo, tip_planes=False)
     assert len(flanks()) == 3  # a new drive flank; the coast flank kept
@@ -105,6 +112,33 @@ def test_the_memo_keeps_steps_3_to_6_and_changes_nothing():
     # 3e-12 relative on the settings), so bit for bit no more
     _assert_same_case(tomllib.loads(kept.to_toml()), tomllib.loads(fresh.to_toml()))
     assert kept.pinion.concave.blade.toprem_angle != 0.0
+
+
+def test_a_design_synthesised_again_from_the_memo_is_the_same_bit_for_bit(monkeypatch):
+    """Step 7 kept (issue 75): a design synthesised again with the memo (a development's
+    coast flank developed again at its own torque, a trial checked) re-makes no relief and
+    is the first synthesis bit for bit; a design whose drive flank's relief alone changes
+    re-makes that relief alone, and its case (the coast flank's relief from the memo) is a
+    synthesis without a memo bit for bit (step 8 left out: the memo starts a placement from
+    the last one, the same placement to its 1e-9 mm tolerance only)."""
+    import geometry.synthesis.case_synthesis as cs
+    from geometry.synthesis.basic_design import load_basic, with_flank_options
+
+    basic = load_basic(DESIGNS / "pc_hypoid_10x43.toml")
+    memo: dict = {}
+    first, _ = cs.synthesize(basic, memo=memo, tip_planes=False)
+    made = []
+    real = cs.relieved_blade
+    monkeypatch.setattr(cs, "relieved_blade", lambda *a, **k: made.append(a) or real(*a, **k))
+    again, _ = cs.synthesize(basic, memo=memo, tip_planes=False)
+    assert made == [] and again.to_toml() == first.to_toml()
+    other = with_flank_options(basic, "concave", {"tip_relief": 25.0, "relief_start": 0.4})
+    kept, _ = cs.synthesize(other, memo=memo, tip_planes=False)
+    assert len(made) == 1  # the drive flank's new relief only
+    fresh, _ = cs.synthesize(other, tip_planes=False)
+    assert len(made) == 3  # both flanks' reliefs made without a memo
+    assert kept.to_toml() == fresh.to_toml()
+    assert kept.pinion.concave.blade.toprem_angle != first.pinion.concave.blade.toprem_angle
 
 
 def test_a_face_hobbed_flank_continues_from_the_last_as_a_cold_synthesis():

@@ -427,7 +427,10 @@ def synthesize(basic: BasicDesign, *, conjugate: bool = False,
         level, ellipse length, approach and reference gear rotation, and reused when they
         recur (and the blanks and the gear flank's design point, which no prescription
         moves, whatever they are); only the relief (step 7) and the tip plane (step 8) are
-        made again. The
+        made again, and each of those only where its inputs are new: step 7 is kept under
+        steps 3–6's key and all the flank's prescriptions (a development varies one flank,
+        so the other flank's relief recurs at every trial; issue 75), step 8 under the
+        blade and settings. The
         result is the same as without a memo (steps 3–6 do not read the relief; the coast
         flank depends on the drive flank only through the mean point's gear rotation,
         which the prescriptions do not move), so a development that varies the drive
@@ -682,6 +685,23 @@ def _synthesize_flank(pair: _PairData, pf: str, fo: FlankOptions,
     # step 7, profile relief: flankrem and toprem beyond corners above and below M, so the
     # flank near M (and with it steps 4-6) is unchanged (geometry.machine.relief)
     say(f"pinion {pf}: tip and root relief")
+    # the relieved flank kept under steps 3-6's key and every prescription (repr: -0.0 is
+    # not 0.0): a development varies one flank's prescriptions, so the other flank's relief
+    # recurs at every trial, and a design synthesised again recurs whole (issue 75)
+    relieved = ("relieved", key, repr(fo))
+    if memo is not None and relieved in memo:
+        return memo[relieved]
+    fs = _relieved_flank(pair, pf, fo, fs, tip_plane)
+    if memo is not None:
+        memo[relieved] = fs
+    return fs
+
+
+def _relieved_flank(pair: _PairData, pf: str, fo: FlankOptions, fs: FlankSynthesis,
+                    tip_plane: bool) -> FlankSynthesis:
+    """Step 7 of :func:`_synthesize_flank`: the blade of the unrelieved flank ``fs`` with
+    its blade angle change and profile crowning (step 7a) and its tip and root relief, as
+    ``fo`` prescribes them (a function of ``fs``'s tools, the blanks and ``fo`` alone)."""
     tools = fs.tools
     blade = tools.blade
     if fo.blade_angle_change or fo.profile_crowning:  # step 7a (blade_change)
