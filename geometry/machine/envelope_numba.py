@@ -50,15 +50,6 @@ __all__ = ["evaluate", "family", "meshing", "newton"]
 
 _jit = numba.njit(cache=True, nogil=True)
 
-
-def _jit_as(signature):
-    """``_jit`` with its one signature given: a helper called with constant column
-    indices is compiled once, not once per constant (numba types a constant argument as
-    a literal and compiles a specialisation for each: 4 of ``_turn_into``, 3 of
-    ``_cross_into``, ~1 s of CPU on a fresh cache, issue 75). Compiled (or read from the
-    cache) when the module is imported; any array layout."""
-    return numba.njit(signature, cache=True, nogil=True)
-
 _EPS = float(np.finfo(float).eps)  # np.sinc's stand-in for 0 (geometry.machine.cutter)
 
 
@@ -87,7 +78,7 @@ def _taylor(coef, q):
     return f, d1, d2
 
 
-@_jit_as("void(float64[:, :], int64, float64, float64, float64, float64, float64)")
+@_jit
 def _turn_into(v, kk, w0, w1, w2, c, sn):
     """v[:, kk] = R_z(θ) w (c, sn: cos θ, sin θ)."""
     v[0, kk] = c * w0 - sn * w1
@@ -288,7 +279,7 @@ def _point_family(sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z, motion,
             generate, v, q, theta, pk, dc, d2c, y, out)
 
 
-@_jit_as("void(float64[:, :], int64, int64, float64[:])")
+@_jit
 def _cross_into(out, ia, ib, dst):
     """dst[:] = out[:, ia] × out[:, ib] (``_cross0``'s components)."""
     dst[0] = out[1, ia] * out[2, ib] - out[2, ia] * out[1, ib]
