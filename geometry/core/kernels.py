@@ -23,7 +23,11 @@ time back. A study point (0.24 s against 0.40 s) or a synthesis (50 s against 73
 the 10x43 of tests/data/designs) does, so the commands that run many analyses ask for
 ``numba`` (:func:`prefer_compiled`) and fill the cache; ``ltca compile`` fills it ahead
 (a container image, each node of a cluster, or ``NUMBA_CACHE_DIR`` on a shared file
-system). Both paths give the same numbers to round-off (the kernels' tests). ``auto`` is
+system). ``ltca synthesize`` on a cache without all four modules compiles the envelope's
+kernels only, the one module whose compile one synthesis earns back (~10 s of compiling
+against ~14 s saved; the others ~15 s against ≤ 2.4 s, docs/performance.md, "A new
+design on a fresh numba cache"), and runs the others' NumPy path until they are cached.
+Both paths give the same numbers to round-off (the kernels' tests). ``auto`` is
 resolved once per process and for the four modules together (:func:`process_choice`),
 and a study's local workers are started with the process's choice
 (``contact.study.engine.worker_environment``), so a study and the analyses of the process
