@@ -199,10 +199,16 @@ def compile_note() -> str | None:
     -------
     str or None
     """
-    from geometry.core.kernels import KERNEL_MODULES, cache_ready, process_choice
+    from geometry.core.kernels import KERNEL_MODULES, cache_ready, compiled_modules
 
-    if process_choice() != "numba" or all(cache_ready(name) for name in KERNEL_MODULES):
+    names = compiled_modules()
+    if not names or all(cache_ready(name) for name in names):
         return None
+    if names != KERNEL_MODULES:  # ltca synthesize on a fresh cache: the envelope's only
+        return ("note: compiling the geometry's numba kernels for this machine, once "
+                "(about 10 s of CPU, before the first lines); the contact analysis runs "
+                "NumPy until numba's cache holds its kernels too: `ltca compile` compiles "
+                "them all (about 30 s of CPU), docs/environment.md")
     return ("note: compiling the numba kernels for this machine, once: the geometry's "
             "before the first lines, the contact analysis's within the first analysis (a "
             "development's first design then takes about 30 s of CPU where the others take "
@@ -255,7 +261,9 @@ def main(argv: Sequence[str] | None = None) -> int:
             # (geometry.core.kernels: a single analysis runs the NumPy path until cached)
             from geometry.core.kernels import prefer_compiled
 
-            prefer_compiled()
+            # a command of its own process may name the kernels that earn their compile
+            # back in it (``compiled_kernels``: ltca synthesize, the envelope's; issue 75)
+            prefer_compiled(getattr(args, "compiled_kernels", None) if as_process else None)
             note = compile_note()
             if note is not None and not args.quiet:
                 print(note, file=sys.stderr, flush=True)

@@ -271,6 +271,69 @@ def test_kernels_choice(monkeypatch):
     assert kernels_module() is None  # not installed: the NumPy path, silently
 
 
+def test_a_synthesis_compiles_only_the_kernels_that_pay(monkeypatch):
+    """``ltca synthesize`` on a fresh numba cache compiles the envelope's kernels only (they
+    earn their ~10 s of compiling back within one synthesis, the iso-lines', the shell's
+    and the block pivoting's ~17 s do not: docs/performance.md, issue 75): ``auto`` with
+    the envelope compiled, the others NumPy; numba throughout where the cache holds all
+    four; a user's ``LTCA_KERNELS`` wins; the note names the geometry's compile only."""
+    import argparse
+
+    import contact.cli
+    from contact.cli import build_parser
+
+    envelope = "geometry.machine.envelope_numba"
+    sub = next(a for a in build_parser()._actions
+               if isinstance(a, argparse._SubParsersAction))
+    assert sub.choices["synthesize"].get_default("compiled_kernels") == (envelope,)
+    monkeypatch.delenv("LTCA_KERNELS", raising=False)
+    monkeypatch.setattr(kernels_core, "_AUTO_CHOICE", {})
+    monkeypatch.setattr(kernels_core, "_COMPILED_ANYWAY", {})
+    monkeypatch.setattr(kernels_core, "cache_ready", lambda name: False)  # a fresh cache
+    kernels_core.prefer_compiled((envelope,))
+    assert os.environ["LTCA_KERNELS"] == "auto"
+    assert kernels_module() is None  # the iso-lines: NumPy
+    assert kernels_core.kernels_module(envelope) is kernels_core.compiled_module(envelope)
+    assert kernels_core.kernels_module("contact.qp.solvers.pivoting_numba") is None
+    assert kernels_core.compiled_modules() == (envelope,)
+    assert kernels_core.process_choice() == "numpy"  # a study's workers: NumPy
+    note = contact.cli.compile_note()
+    assert note is not None and "geometry's numba kernels" in note and "ltca compile" in note
+    monkeypatch.setattr(kernels_core, "cache_ready", lambda name: name == envelope)
+    assert contact.cli.compile_note() is None  # the envelope's cached: nothing to compile
+    # every module cached: numba throughout, as for the other commands of many analyses
+    monkeypatch.delenv("LTCA_KERNELS")
+    monkeypatch.setattr(kernels_core, "_AUTO_CHOICE", {})
+    monkeypatch.setattr(kernels_core, "_COMPILED_ANYWAY", {})
+    monkeypatch.setattr(kernels_core, "cache_ready", lambda name: True)
+    kernels_core.prefer_compiled((envelope,))
+    assert os.environ["LTCA_KERNELS"] == "numba"
+    assert kernels_module() is numba_kernels
+    assert kernels_core.compiled_modules() == kernels_core.KERNEL_MODULES
+    # a user's choice wins
+    monkeypatch.setenv("LTCA_KERNELS", "numpy")
+    monkeypatch.setattr(kernels_core, "cache_ready", lambda name: False)
+    kernels_core.prefer_compiled((envelope,))
+    assert os.environ["LTCA_KERNELS"] == "numpy"
+    assert kernels_core.compiled_modules() == ()
+
+
+def test_auto_decides_by_an_uncached_module_first(monkeypatch):
+    """``auto`` asks first about a module without a cache index file (answered without
+    importing numba, ~1 s of CPU): after a synthesis on a fresh cache the envelope's
+    kernels are cached and the others not, and the next ``ltca run`` must not import numba
+    to learn that it runs NumPy."""
+    envelope = "geometry.machine.envelope_numba"
+    asked = []
+    monkeypatch.setenv("LTCA_KERNELS", "auto")
+    monkeypatch.setattr(kernels_core, "_AUTO_CHOICE", {})
+    monkeypatch.setattr(kernels_core, "_no_index_file", lambda name: name != envelope)
+    monkeypatch.setattr(kernels_core, "cache_ready",
+                        lambda name: asked.append(name) or name == envelope)
+    assert kernels_core.process_choice() == "numpy"
+    assert asked == [kernels_core.KERNEL_MODULES[1]]
+
+
 def test_kernels_that_cannot_be_cached_leave_the_numpy_path(monkeypatch, caplog):
     """numba raises RuntimeError where it finds no writable cache directory: the NumPy path
     runs, with a warning that says how to get the kernels back (not a crash on import)."""

@@ -46,7 +46,11 @@ def register(sub) -> None:
                         "are, without developing the bearing under load (default: the "
                         "drive flank's path angle, ellipse and relief are developed to the "
                         "[development] targets, contact.optimize.development)")
-    p.set_defaults(func=run_synthesize, many_analyses=True)
+    # on a fresh numba cache only the envelope's kernels earn their compile back within
+    # one synthesis (~10 s of compiling against ~14 s saved); the iso-lines', the shell's
+    # and the block pivoting's (~17 s) do not: NumPy until cached (issue 75)
+    p.set_defaults(func=run_synthesize, many_analyses=True,
+                   compiled_kernels=("geometry.machine.envelope_numba",))
 
 
 def bundled_basic_names() -> list[str]:

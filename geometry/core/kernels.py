@@ -23,7 +23,11 @@ time back. A study point (0.24 s against 0.40 s) or a synthesis (50 s against 73
 the 10x43 of tests/data/designs) does, so the commands that run many analyses ask for
 ``numba`` (:func:`prefer_compiled`) and fill the cache; ``ltca compile`` fills it ahead
 (a container image, each node of a cluster, or ``NUMBA_CACHE_DIR`` on a shared file
-system). Both paths give the same numbers to round-off (the kernels' tests). ``auto`` is
+system). ``ltca synthesize`` on a cache without all four modules compiles the envelope's
+kernels only, the one module whose compile one synthesis earns back (~10 s of compiling
+against ~14 s saved; the others ~15 s against ≤ 2.4 s, docs/performance.md, "A new
+design on a fresh numba cache"), and runs the others' NumPy path until they are cached.
+Both paths give the same numbers to round-off (the kernels' tests). ``auto`` is
 resolved once per process and for the four modules together (:func:`process_choice`),
 and a study's local workers are started with the process's choice
 (``contact.study.engine.worker_environment``), so a study and the analyses of the process
@@ -37,7 +41,9 @@ kernels_module    the compiled kernel module to use, or None for the NumPy path
 compiled_module   a compiled kernel module, imported once per process (None without numba)
 cache_ready       whether numba's cache holds a module's kernels for this machine
 process_choice    ``numpy`` or ``numba``: what this process runs (``auto`` resolved)
-prefer_compiled   make ``auto`` mean ``numba`` in this process (commands of many analyses)
+prefer_compiled   make ``auto`` mean ``numba`` in this process (commands of many analyses),
+                  or numba for the modules that pay (``ltca synthesize`` on a fresh cache)
+compiled_modules  the kernel modules this process runs compiled
 prefer_cached     make ``auto`` the default in this process (a command of one analysis)
 """
 
@@ -52,8 +58,8 @@ from types import ModuleType
 from geometry.core.caches import memoised
 from geometry.core.errors import InputError
 
-__all__ = ["KERNELS", "KERNEL_MODULES", "cache_ready", "compiled_module", "kernels_module",
-           "prefer_cached", "prefer_compiled", "process_choice"]
+__all__ = ["KERNELS", "KERNEL_MODULES", "cache_ready", "compiled_module", "compiled_modules",
+           "kernels_module", "prefer_cached", "prefer_compiled", "process_choice"]
 
 #: the implementations: ``numpy`` (the reference), ``numba`` (compiled; the ``fast``
 #: extra) and ``auto`` (numba where its cache holds the kernels, :func:`cache_ready`)
@@ -162,6 +168,10 @@ def cache_ready(name: str) -> bool:
 #: between two analyses that must agree bit for bit)
 _AUTO_CHOICE: dict[str, str] = {}
 
+#: the modules ``auto`` runs compiled in this process whatever numba's cache holds (set
+#: by :func:`prefer_compiled` with ``modules``: they pay their compile within the command)
+_COMPILED_ANYWAY: dict[str, tuple[str, ...]] = {}
+
 
 def process_choice() -> str:
     """What this process runs: ``LTCA_KERNELS`` where it names ``numpy`` or ``numba``,
@@ -185,19 +195,58 @@ def process_choice() -> str:
 def _auto_choice() -> str:
     """``auto`` resolved: made at its first use in the process and kept (:data:`_AUTO_CHOICE`)."""
     if "auto" not in _AUTO_CHOICE:
-        ready = all(cache_ready(name) for name in KERNEL_MODULES)
+        # a module without an index file first: answered without importing numba (~1 s),
+        # also where another module's kernels are cached (the envelope's, after an
+        # ltca synthesize on a fresh cache, prefer_compiled's ``modules``)
+        first = sorted(KERNEL_MODULES, key=lambda name: not _no_index_file(name))
+        ready = all(cache_ready(name) for name in first)
         _AUTO_CHOICE["auto"] = "numba" if ready else "numpy"
     return _AUTO_CHOICE["auto"]
 
 
-def prefer_compiled() -> None:
+def prefer_compiled(modules: tuple[str, ...] | None = None) -> None:
     """Make ``auto`` (the default) mean ``numba`` in this process and the processes it
     starts (Dask's local workers): for the commands that run many analyses (a synthesis'
     development, a study, a sweep, an optimisation), where the compiled kernels earn their
     first-use compile time back. Sets ``LTCA_KERNELS=numba`` where it is unset and numba
-    is installed; a user's ``LTCA_KERNELS`` wins. Called by the command-line layer only."""
-    if not os.environ.get("LTCA_KERNELS") and compiled_module(KERNEL_MODULES[0]) is not None:
-        os.environ["LTCA_KERNELS"] = "numba"
+    is installed; a user's ``LTCA_KERNELS`` wins. Called by the command-line layer only.
+
+    Parameters
+    ----------
+    modules : tuple of str, optional
+        Only these kernel modules (of :data:`KERNEL_MODULES`) earn their compile back in
+        the command (``ltca synthesize``: the envelope's, measured in docs/performance.md,
+        "Compiled kernels on a fresh cache"): where numba's cache does not hold all four
+        modules yet, ``LTCA_KERNELS=auto`` is set, these run compiled (numba compiles them
+        if it must) and the others the NumPy path (:func:`kernels_module`), decided here
+        for the process; where it holds all four, ``numba`` as without ``modules``.
+    """
+    if os.environ.get("LTCA_KERNELS") or compiled_module(KERNEL_MODULES[0]) is None:
+        return
+    if modules is not None and not all(cache_ready(name) for name in KERNEL_MODULES):
+        os.environ["LTCA_KERNELS"] = "auto"
+        _AUTO_CHOICE["auto"] = "numpy"
+        _COMPILED_ANYWAY["modules"] = tuple(modules)
+        return
+    os.environ["LTCA_KERNELS"] = "numba"
+
+
+def compiled_modules() -> tuple[str, ...]:
+    """The kernel modules (of :data:`KERNEL_MODULES`) this process runs compiled as
+    :func:`kernels_module` chooses them without a ``kernels`` argument: all four where
+    ``LTCA_KERNELS`` (or its default) means ``numba``, those :func:`prefer_compiled` named
+    under ``auto``, none on the NumPy path.
+
+    Returns
+    -------
+    tuple of str
+        Module import names (empty: the NumPy path throughout).
+    """
+    if process_choice() == "numba":
+        return KERNEL_MODULES
+    if os.environ.get("LTCA_KERNELS") == "auto":
+        return _COMPILED_ANYWAY.get("modules", ())
+    return ()
 
 
 def prefer_cached() -> None:
@@ -247,7 +296,8 @@ def kernels_module(name: str, kernels: str | None = None) -> ModuleType | None:
     if kernels == "numpy":
         return None
     if kernels == "auto":
-        return compiled_module(name) if _auto_choice() == "numba" else None
+        anyway = name in _COMPILED_ANYWAY.get("modules", ())
+        return compiled_module(name) if anyway or _auto_choice() == "numba" else None
     mod = compiled_module(name)
     if mod is None:
         raise InputError(f"{source}: 'numba' needs numba installed "

@@ -160,7 +160,8 @@ def block_pivoting(C, s, R, T, U, bounded, f_tol, y_tol, floor, active, upper,
             theta = _kkt(C, s, R, T, U, active, upper, floor, L, x_s, x_r, F)
             if math.isnan(theta):
                 return F_out, theta_out, it, CANNOT_CARRY
-        F_out[:] = F
+        for i in range(n):  # not F_out[:] = F: a slice assignment compiles numba's
+            F_out[i] = F[i]  # shape-mismatch message (~2.6 s on a fresh cache, issue 75)
         theta_out = theta
         # the gaps Y = C F + s − R Θ
         for i in range(n):
