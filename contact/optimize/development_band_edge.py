@@ -1,9 +1,10 @@
 """The near-miss step's band-edge designs (issue 71): where every blade-angle step of
 :func:`~contact.optimize.development_pattern_steps.checked_near_miss` (aimed
 :data:`~contact.optimize.development_pattern_steps.NEAR_MISS_AIM` of the tolerance inside
-the light-load centre band) gave up the LTE alone, the smallest blade step that just
-meets the band (:data:`BAND_EDGE_AIM`) and, where that misses the LTE alone, the same with
-the path turned towards the profile by :data:`BAND_EDGE_PATH_TURN`. Each design placed and
+the light-load centre band) gave up the LTE or the pattern length (:data:`BAND_EDGE_LOST`),
+the smallest blade step that just meets the band (:data:`BAND_EDGE_AIM`) and, where that
+misses the LTE alone, the same with the path turned towards the profile by
+:data:`BAND_EDGE_PATH_TURN`. Each design placed and
 checked at ``ltca run``'s sampling (:func:`~contact.optimize.development_variant.
 said_variant`) and kept by the check's one rule (:func:`~contact.optimize.
 development_keep.kept_why`, :func:`~contact.optimize.development_keep.lost_targets`).
@@ -36,6 +37,17 @@ BAND_EDGE_AIM = 0.9
 BAND_EDGE_PATH_TURN = -5.0
 #: the path angle's name among the development's variables
 PATH_NAME = "path_angle"
+#: the targets met before that the near-miss step's smallest blade step may have given up
+#: for the band-edge pair to run: the LTE (a blade tilt costs unloaded TE in proportion to
+#: its size) and the pattern length (the tilt walks the pattern towards the heel, by less
+#: for a smaller step; checked_blade's notes). Measured on the FM hypoid 9x38 at Σ 95° of
+#: benchmarks/data/unseen_designs (``ltca run``'s sampling at 62.6 / 417.6 N m, path
+#: −65.6°, ellipse 0.625, ``te_level`` 45 → 25; ``benchmarks/development_levers.py --check
+#: --tolerance``, 2026-11-27): as developed v 0.630 (0.542 ± 0.08), 0.58 long, LTE 37.4 /
+#: 39.4 µrad; the near-miss aim −0.0425°: v 0.61, 0.62 long (0.5 ± 0.1, lost); −0.035° /
+#: −0.03° / −0.025°: v 0.61 / 0.61 / 0.62, 0.60 / 0.60 / 0.58 long, LTE 36.2 / 38.5, 35.5 /
+#: 37.6, 35.2 / 36.9 µrad, every target met, tolerant; −0.02°: v 0.62 still above the band
+BAND_EDGE_LOST = ("length", "lte")
 
 
 def _misses_only_lte(e: DevelopmentEvaluation) -> bool:
@@ -60,9 +72,10 @@ def band_edge_designs(best: DevelopmentEvaluation, refused: Sequence[Development
         The near-miss design (checked; its centre v just off its band).
     refused : sequence of DevelopmentEvaluation
         The near-miss step's blade-angle designs, each refused; the pair runs only where
-        the one of the smallest step gave up, of the targets ``best`` met, the LTE alone
-        (:func:`~contact.optimize.development_keep.lost_targets` ``== ["lte"]``; the
-        11x39's larger step −0.115° gave up the length too).
+        the one of the smallest step gave up, of the targets ``best`` met, no more than
+        the LTE and the pattern length (:func:`~contact.optimize.development_keep.
+        lost_targets` within :data:`BAND_EDGE_LOST`: a smaller step costs less of both;
+        the FM hypoid 9x38's −0.0425° gave up the length alone).
     targets, setup, teeth, say, placed
         As the check steps' (the centre target, its tolerance and the variables' bounds
         from ``targets``; ``setup["centre_v"]`` where the targets give no centre).
@@ -102,8 +115,9 @@ def band_edge_designs(best: DevelopmentEvaluation, refused: Sequence[Development
     if not refused:
         return best
     near = min(refused, key=lambda e: abs(float(e.values[HEIGHT_NAME]) - x0))
-    if lost_targets(best, near) != ["lte"]:
-        return best  # the smallest blade step gave up more than the LTE
+    lost = lost_targets(best, near)
+    if not lost or not set(lost) <= set(BAND_EDGE_LOST):
+        return best  # the smallest blade step gave up more than the LTE and the length
     lo, hi = (float(x) for x in targets.variables[HEIGHT_NAME])
     target = (targets.pattern_centre_v if targets.pattern_centre_v is not None
               else setup["centre_v"])

@@ -299,8 +299,8 @@ def checked_near_miss(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     the same TE level), towards the same aim. At most
     :data:`NEAR_MISS_DESIGNS` designs; a design is kept only where it meets more targets,
     gives up none it met and is tolerant (:func:`_tolerant_variant`) — not on the
-    objective, whose LTE term may prefer the design as it was. Where every design was
-    refused for the LTE alone, two more
+    objective, whose LTE term may prefer the design as it was. Where the smallest blade
+    step was refused for the LTE or the pattern length alone, two more
     (:func:`~contact.optimize.development_band_edge.band_edge_designs`): the smallest
     blade step into the band, then with the path turned.
 
