@@ -65,7 +65,7 @@ def lost_but_length(best: DevelopmentEvaluation, e: DevelopmentEvaluation) -> li
 
 
 def pressure_raised(best: DevelopmentEvaluation, e: DevelopmentEvaluation,
-                    targets: DevelopmentTargets) -> str:
+                    targets: DevelopmentTargets, *, index: int = -1) -> str:
     """``"pressure (<p> MPa above <bound>)"`` where ``e``'s flank peak pressure at the
     design torque exceeds both ``best``'s and the targets' ``max_flank_pressure``, else
     empty (:func:`_coast_kept`, :func:`_coast_centre_kept`).
@@ -74,9 +74,12 @@ def pressure_raised(best: DevelopmentEvaluation, e: DevelopmentEvaluation,
     ----------
     best, e : DevelopmentEvaluation
         The design kept so far and its variant, both checked (their metrics'
-        ``pressure_max_flank`` [MPa] at the design torque, the last).
+        ``pressure_max_flank`` [MPa] per torque of the check).
     targets : DevelopmentTargets
         Its ``max_flank_pressure`` [MPa] or None.
+    index : int, optional
+        The torque of the check compared (default -1, the design torque; 0 the light
+        torque, where the text says "at the light torque").
 
     Returns
     -------
@@ -87,12 +90,14 @@ def pressure_raised(best: DevelopmentEvaluation, e: DevelopmentEvaluation,
     -----
     Source: the issue-71 development's check (docs/synthesis.md, "Development bearing").
     """
-    p_new = float(e.metrics["pressure_max_flank"][-1])
-    p_old = float(best.metrics["pressure_max_flank"][-1])
+    p_new = float(e.metrics["pressure_max_flank"][index])
+    p_old = float(best.metrics["pressure_max_flank"][index])
     bound = (float(targets.max_flank_pressure) if targets.max_flank_pressure is not None
              else -math.inf)
     if not p_new <= max(p_old, bound):
-        return f"pressure ({p_new:.0f} MPa above {max(p_old, bound):.0f})"
+        where = "" if index in (-1, len(e.metrics["pressure_max_flank"]) - 1) else (
+            " at the light torque" if index == 0 else f" at torque {index}")
+        return f"pressure ({p_new:.0f} MPa above {max(p_old, bound):.0f}{where})"
     return ""
 
 
