@@ -54,14 +54,12 @@ def static_flank_strength(lt) -> float:
     """The static contact strength σ_Hlim·Z_NT,static [MPa] of the weaker member's material
     at the verdict's grade (:func:`contact.study.verdicts.verdict`'s flank check, ISO
     6336-2's life factor at the S–N curve's static end); NaN without materials."""
-    from contact.load_capacity.durability import sn_curves
-    from contact.study.verdicts import GRADE
+    from contact.study.verdicts import weaker_contact_curve
 
-    names = {lt.attrs.get("material_pinion"), lt.attrs.get("material_gear")} - {None}
-    if not names:
+    found = weaker_contact_curve(lt)
+    if found is None:
         return math.nan
-    curves = [sn_curves(str(m), GRADE)["contact"] for m in sorted(names)]
-    weak = min(curves, key=lambda c: c.allowable)
+    weak = found[0]
     return float(weak.allowable * weak.static_life_factor)
 
 

@@ -169,7 +169,7 @@ from geometry.core.errors import InputError
 __all__ = ["CHECKS", "CHECK_ORDER", "DUTY_MIN_SAFETY", "EDGE_SHARE_MIN", "GRADE",
            "LTE_FAIL_FACTOR", "LTE_LIMIT", "MICROPITTING_MIN", "SCUFFING_MIN", "SEVERITIES",
            "VH_SAME_POSITION", "VH_TARGET_TOLERANCE", "Finding", "Verdict", "quiet_transfer",
-           "shown_above", "shown_below", "verdict"]
+           "shown_above", "shown_below", "verdict", "weaker_contact_curve"]
 
 #: the severities, mildest first (a verdict is the worst of its findings)
 SEVERITIES = ("pass", "attention", "fail")
@@ -315,19 +315,55 @@ def _group(tree: xr.DataTree, name: str) -> xr.Dataset | None:
     return tree[name].to_dataset() if name in tree.children else None
 
 
+def weaker_contact_curve(lt: xr.Dataset) -> tuple[object, str] | None:
+    """The contact S–N curve of the weaker member's material at the verdict's grade and
+    that material's name: what every flank- and edge-pressure check of the verdict (and
+    ``ltca run``'s next steps) judges a pressure against — σ_Hlim ``allowable`` [MPa] and
+    its static strength ``allowable * static_life_factor`` [MPa].
+
+    Parameters
+    ----------
+    lt : xarray.Dataset
+        ``/ltca`` with the attributes ``material_pinion`` / ``material_gear`` (names of
+        :func:`contact.load_capacity.durability.sn_curves`).
+
+    Returns
+    -------
+    (curve, str) or None
+        The curve with the smaller ``allowable`` (the first in the materials' sorted order
+        where they tie) and its material; None where neither attribute is set.
+
+    Raises
+    ------
+    InputError
+        From :func:`~contact.load_capacity.durability.sn_curves`: a material it does not
+        know.
+
+    Notes
+    -----
+    Source: ISO 6336-5 (σ_Hlim by material and grade :data:`GRADE`), ISO 6336-2 (the
+    life factor Z_NT at the S–N curve's static end).
+    """
+    from contact.load_capacity.durability import sn_curves
+
+    names = sorted({lt.attrs.get("material_pinion"), lt.attrs.get("material_gear")} - {None})
+    if not names:
+        return None
+    curves = [sn_curves(str(m), GRADE)["contact"] for m in names]
+    weak = min(curves, key=lambda c: c.allowable)
+    return weak, names[curves.index(weak)]
+
+
 def _flank_static_torques(lt: xr.Dataset | None) -> frozenset:
     """The torques at which the LTCA's flank peak pressure exceeds the static strength of
     the weaker member (as :func:`_flank_pressure` judges it): the rating's finding there
     does not offer a finite life."""
-    from contact.load_capacity.durability import sn_curves
-
     if lt is None or "pressure_max_flank" not in lt:
         return frozenset()
-    names = {lt.attrs.get("material_pinion"), lt.attrs.get("material_gear")} - {None}
-    if not names:
+    found = weaker_contact_curve(lt)
+    if found is None:
         return frozenset()
-    weak = min((sn_curves(str(m), GRADE)["contact"] for m in sorted(names)),
-               key=lambda c: c.allowable)
+    weak = found[0]
     static = weak.allowable * weak.static_life_factor
     return frozenset(float(t) for t, p in zip(lt["torque"].values,
                                               flank_peak(lt).pressure, strict=True)
@@ -346,15 +382,11 @@ def _corner_words(raw: float, n: int, name: str = "/ltca pressure_max_flank") ->
 
 def _flank_pressure(lt: xr.Dataset, static_torques: frozenset = frozenset()
                     ) -> list[Finding]:
-    from contact.load_capacity.durability import sn_curves
-
-    names = {lt.attrs.get("material_pinion"), lt.attrs.get("material_gear")} - {None}
-    if "pressure_max_flank" not in lt or not names:
+    found = weaker_contact_curve(lt) if "pressure_max_flank" in lt else None
+    if found is None:
         return []
-    curves = [sn_curves(str(m), GRADE)["contact"] for m in sorted(names)]
-    weak = min(curves, key=lambda c: c.allowable)
+    weak, mat = found
     limit, static = weak.allowable, weak.allowable * weak.static_life_factor
-    mat = sorted(names)[[c.allowable for c in curves].index(weak.allowable)]
     out = []
     fp = flank_peak(lt)
     for t, p, raw, n in zip(lt["torque"].values, fp.pressure, fp.dataset, fp.corner_curves,
@@ -390,14 +422,12 @@ def _flank_notes(lt: xr.Dataset | None) -> list[str]:
     curves shorter than their contact width (:func:`contact.ltca.summary.flank_peak`): no
     finding, but a note saying why the verdict holds what the dataset's number alone would
     not."""
-    from contact.load_capacity.durability import sn_curves
-
     if lt is None or "pressure_max_flank" not in lt:
         return []
-    names = {lt.attrs.get("material_pinion"), lt.attrs.get("material_gear")} - {None}
-    if not names:
+    found = weaker_contact_curve(lt)
+    if found is None:
         return []
-    limit = min(sn_curves(str(m), GRADE)["contact"].allowable for m in sorted(names))
+    limit = found[0].allowable
     fp = flank_peak(lt)
     return [f"flank_pressure: flank peak pressure {p:.0f} MPa at {_t(t)}, within σ_Hlim "
             f"{limit:.0f} MPa; {_corner_words(raw, n)}"
@@ -513,15 +543,11 @@ def _edge_pressure(lt: xr.Dataset) -> list[Finding]:
     spiral bevel 20x24 at Σ 100°'s coast bearing at 169.4 N·m (issue 71, round 17) peaked
     2488 MPa on its pinion edge above 2400 MPa and its coast verdict said only the edge's
     share."""
-    from contact.load_capacity.durability import sn_curves
-
-    names = {lt.attrs.get("material_pinion"), lt.attrs.get("material_gear")} - {None}
-    if "pressure_max_edge" not in lt or not names:
+    found = weaker_contact_curve(lt) if "pressure_max_edge" in lt else None
+    if found is None:
         return []
-    curves = [sn_curves(str(m), GRADE)["contact"] for m in sorted(names)]
-    weak = min(curves, key=lambda c: c.allowable)
+    weak, mat = found
     static = weak.allowable * weak.static_life_factor
-    mat = sorted(names)[[c.allowable for c in curves].index(weak.allowable)]
     cap = float(lt.attrs.get("edge_pressure_limit_MPa", np.nan))
     below_cap = (lambda p: p < cap * (1.0 - 1e-9)) if np.isfinite(cap) else (lambda p: True)
     shares = _edge_shares(lt)
