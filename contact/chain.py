@@ -129,12 +129,6 @@ class ChainState:
     prepared : dict of str to object
         What a built-in step computed from the inputs before any work (the rating, so
         that a bad ``[rating]`` table is refused before the LTCA).
-    summaries_only : bool
-        What a design study's point keeps (:func:`contact.pipeline.analysis_groups`, issue
-        75): the ``utca`` step leaves ``/easeoff`` an empty group (its ``not_assembled``
-        attribute says why) and ``/utca`` without its contact-curve and path variables
-        (:func:`contact.utca.unloaded_tca` with ``curves=False``), and with deviations no
-        theoretical UTCA unless ``theoretical``; the LTCA and the later steps as always.
     """
 
     case: Case
@@ -155,7 +149,6 @@ class ChainState:
     roll_problems: list | None = None
     not_run: dict[str, str] = field(default_factory=dict)
     prepared: dict[str, Any] = field(default_factory=dict)
-    summaries_only: bool = False
 
 
 # --------------------------------------------------------------------------- the steps
@@ -204,13 +197,11 @@ def utca_easeoff(state: ChainState) -> None:
     contact (:func:`contact.utca.easeoff.ease_off`, :func:`contact.utca.unloaded_tca`; seed
     §2.3–2.4, ch. 3), of the deviated surfaces where there are deviations
     (:func:`contact.utca.deviations.apply_deviations`, seed ch. 4) with the theoretical
-    ones under ``/theoretical`` and ``ease_off_change`` [µm] in ``/easeoff``; with
-    ``state.summaries_only`` what a study keeps of them (:class:`ChainState`)."""
+    ones under ``/theoretical`` and ``ease_off_change`` [µm] in ``/easeoff``."""
     from contact.utca import unloaded_tca
     from contact.utca.easeoff import ease_off
 
     c, flank = state.case, state.flank
-    whole = not state.summaries_only
     t0 = time.perf_counter()
     eo = ease_off(c, flank=flank)
     state.times["easeoff"] = time.perf_counter() - t0
@@ -218,23 +209,18 @@ def utca_easeoff(state: ChainState) -> None:
     if state.deviations is not None:
         from contact.utca.deviations import apply_deviations
 
-        if whole or state.theoretical:
-            t_eo, t_ut = unloaded_tca(c, flank=flank, easeoff=eo, curves=whole)
-            if state.theoretical:
-                if t_eo is not None:
-                    state.groups["/theoretical/easeoff"] = t_eo
-                state.groups["/theoretical/utca"] = t_ut
-            state.theoretical_easeoff = eo
-            state.theoretical_transitions = tuple(t_ut["transition_roll"].values)
+        t_eo, t_ut = unloaded_tca(c, flank=flank, easeoff=eo)
+        if state.theoretical:
+            state.groups["/theoretical/easeoff"] = t_eo
+            state.groups["/theoretical/utca"] = t_ut
+        state.theoretical_easeoff = eo
+        state.theoretical_transitions = tuple(t_ut["transition_roll"].values)
         pin_dev, gear_dev = state.deviations
         eo = apply_deviations(eo, pinion=pin_dev, gear=gear_dev, case=c)
     t0 = time.perf_counter()
-    eo_ds, utca_ds = unloaded_tca(c, flank=flank, easeoff=eo, curves=whole)
+    eo_ds, utca_ds = unloaded_tca(c, flank=flank, easeoff=eo)
     state.times["utca"] = time.perf_counter() - t0
-    if eo_ds is None:  # summaries only: the group is there for the steps' contract
-        eo_ds = xr.Dataset(attrs={"not_assembled": "a design study's point keeps only its "
-                                  "summaries (contact.pipeline.analysis_groups)"})
-    elif t_eo is not None:
+    if t_eo is not None:
         change = (eo_ds["ease_off"] - t_eo["ease_off"]).astype(float)
         eo_ds["ease_off_change"] = change.assign_attrs(
             units=eo_ds["ease_off"].attrs.get("units", "um"),

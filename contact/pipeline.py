@@ -43,7 +43,6 @@ from geometry.pair.assembly import Misalignment
 
 __all__ = [
     "MISALIGNMENT_ATTRS",
-    "analysis_groups",
     "flank_torques",
     "misalignment_attrs",
     "operating_conditions",
@@ -501,91 +500,6 @@ def run_analysis(
 
         tree = run_analysis(None, [250.0], steps=AnalysisChain.contact_only())
     """
-    tree, c, refer = _analysis(
-        case, torque, misalignment=misalignment, flank=flank, options=options,
-        operating=operating, deviations=deviations, geometry=geometry, progress=progress,
-        theoretical=theoretical, mesh_interface=mesh_interface, root_stress=root_stress,
-        steps=steps, summaries_only=False)
-    out = _datatree(tree)
-    for path in refer:
-        out[path].attrs["misalignment"] = MISALIGNMENT_REFERENCE
-    out.attrs["inputs"] = c.to_toml()
-    return out
-
-
-@blas_threads()  # small dense matrices: one BLAS thread (geometry.core.blas)
-def analysis_groups(
-    case: Case | str | os.PathLike[str] | None = None,
-    torque=None,
-    *,
-    misalignment: Misalignment | None = None,
-    flank: str | None = None,
-    options: LTCAOptions | None = None,
-    deviations: tuple | bool | None = None,
-    theoretical: bool = True,
-    steps: AnalysisChain | Mapping[str, StepChoice] | None = None,
-) -> dict[str, xr.Dataset]:
-    """What a design study keeps of :func:`run_analysis`: its groups by path, without the
-    datasets a study discards (issue 75).
-
-    The same chain, steps and numbers as :func:`run_analysis` with the same arguments
-    (one code path, ``ChainState.summaries_only``), but: ``/easeoff`` is an empty group
-    (its ``not_assembled`` attribute says why); ``/utca`` holds the cycle's variables only
-    (``unloaded_transmission_error``, ``pair_transmission_error``, ``active``,
-    ``transition_roll``, ``transition_transmission_error``,
-    ``peak_to_peak_transmission_error``, ``separation_threshold``: no contact-curve or
-    path variables, no ``inputs`` attribute; :func:`contact.utca.unloaded_tca` with
-    ``curves=False``); with deviations and ``theoretical=False`` no theoretical UTCA; no
-    DataTree, no ``summary`` or ``inputs`` root attribute, and the groups keep their own
-    ``misalignment`` attribute. ``/ltca`` and the later steps' groups are those of
-    :func:`run_analysis`, variable for variable.
-
-    Parameters
-    ----------
-    case, torque, misalignment, flank, options, deviations, theoretical, steps
-        As :func:`run_analysis` (the efficiency step, where ``steps`` has one, at the
-        case's ``[operating]`` conditions).
-
-    Returns
-    -------
-    dict of str to xarray.Dataset
-        The groups by path (``"/easeoff"``, ``"/utca"``, ``"/ltca"`` and those of the
-        optional steps run) and ``"/"``: a dataset holding the root attributes
-        (``case``, ``solver``, the misalignment once, :data:`MISALIGNMENT_ATTRS`, the
-        step times, ``<step>_not_run``, ``analysis_status`` and
-        ``analysis_status_reason``, :func:`contact.ltca.summary.certification`).
-
-    Raises
-    ------
-    InputError
-        As :func:`run_analysis`: bad arguments, refused before any work.
-    PluginError
-        As :func:`run_analysis`: a user's solver, model or step that breaks its contract.
-
-    Notes
-    -----
-    Seed ch. 2–3 as :func:`run_analysis`; used by :func:`contact.study.engine.
-    analyse_point`, whose summaries (:func:`contact.study.summary.point_summary`) read
-    only ``/utca``'s peak-to-peak, ``/ltca`` and the root attributes.
-
-    Examples
-    --------
-    One study point's groups::
-
-        groups = analysis_groups(None, [250.0], steps=AnalysisChain.contact_only())
-    """
-    return _analysis(case, torque, misalignment=misalignment, flank=flank, options=options,
-                     operating=None, deviations=deviations, geometry=None, progress=False,
-                     theoretical=theoretical, mesh_interface=None, root_stress=None,
-                     steps=steps, summaries_only=True)[0]
-
-
-def _analysis(case, torque, *, misalignment, flank, options, operating, deviations, geometry,
-              progress, theoretical, mesh_interface, root_stress, steps,
-              summaries_only: bool) -> tuple[dict[str, xr.Dataset], Case, list[str]]:
-    """The chain of :func:`run_analysis` (:func:`analysis_groups` with
-    ``summaries_only``): its groups with the root's as ``"/"``, the case as run and the
-    groups whose ``misalignment`` attribute refers to the root's."""
     _warn_switches(geometry=geometry, mesh_interface=mesh_interface,
                    root_stress=root_stress, operating=operating is False)
     flags = {k: v for k, v in (("geometry", geometry), ("mesh_interface", mesh_interface))
@@ -631,7 +545,7 @@ def _analysis(case, torque, *, misalignment, flank, options, operating, deviatio
     state = run_chain(chain, ChainState(
         case=c, torque=torques, flank=flank, options=opts, operating=operating,
         deviations=resolve_deviations(c, deviations), theoretical=theoretical,
-        progress=progress, fe_options=fe_options, summaries_only=summaries_only))
+        progress=progress, fe_options=fe_options))
     tree, times = state.groups, state.times
     ltca_ds = tree["/ltca"]
     # the misalignment is stored once, at the root: the groups' ``misalignment`` refers to
@@ -649,12 +563,15 @@ def _analysis(case, torque, *, misalignment, flank, options, operating, deviatio
             **{f"{k}_not_run": why for k, why in state.not_run.items()},
         }
     )
-    if not summaries_only:
-        root.attrs["summary"] = result_summary(c.name, tree)
+    root.attrs["summary"] = result_summary(c.name, tree)
     cert = certification(ltca_ds)
     root.attrs["analysis_status"] = cert.status
     root.attrs["analysis_status_reason"] = cert.reason
     tree["/"] = root
+    out = _datatree(tree)
+    for path in refer:
+        out[path].attrs["misalignment"] = MISALIGNMENT_REFERENCE
+    out.attrs["inputs"] = c.to_toml()
     if cert.status != "ok":
         log.warning("%s (/ltca status)", cert.reason)
-    return tree, c, refer
+    return out

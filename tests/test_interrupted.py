@@ -89,8 +89,7 @@ def test_a_study_point_and_a_duty_cycle_bin_do_not_swallow_the_stop(monkeypatch)
     def analysis(*args, **kw):
         raise _wrapped(raised[-1])
 
-    monkeypatch.setattr(contact.pipeline, "run_analysis", analysis)  # a duty-cycle bin's
-    monkeypatch.setattr(contact.pipeline, "analysis_groups", analysis)  # a study point's
+    monkeypatch.setattr(contact.pipeline, "run_analysis", analysis)
     case = resolve_case(None)
     options = LTCAOptions(rolls_per_cycle=4, segments=8)
     point = StudyInputs(case, (250.0,), speed=(1500.0,), options=options)

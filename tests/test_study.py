@@ -135,45 +135,6 @@ def test_summaries_are_consistent(case):
     assert s["edge_load_share"][1] >= s["edge_load_share"][0]
 
 
-@pytest.mark.parametrize("name", [None, "kolivand2009_fh_12x41_measured"])
-def test_a_points_lean_groups_give_the_trees_summaries(name):
-    """What a study point runs (analysis_groups: no /easeoff dataset, /utca without its
-    curve variables, no DataTree) gives bit for bit the summaries of the whole
-    run_analysis tree, efficiency included; its /ltca is the tree's variable for variable
-    (but the solver's timings) and its /utca's variables are the tree's. The default case
-    and an FH case with measured deviations (the deviated surfaces, theoretical=False as
-    a study runs them)."""
-    from contact.chain import AnalysisChain
-    from contact.pipeline import analysis_groups
-    from friction.efficiency import efficiency_analysis
-    from friction.operating import OperatingConditions
-
-    case = resolve_case(name)
-    kw = dict(options=OPTIONS, theoretical=False,
-              steps=AnalysisChain.contact_only().with_root_stress(False))
-    tree = run_analysis(case, [TORQUE], **kw)
-    groups = analysis_groups(case, [TORQUE], **kw)
-    op = OperatingConditions.from_point(case.operating, pinion_speed=1000.0)
-    fr_tree = [efficiency_analysis(tree["/ltca"].to_dataset(), op, pinion_speed=1000.0)]
-    fr_lean = [efficiency_analysis(groups["/ltca"], op, pinion_speed=1000.0)]
-    whole, lean = point_summary(tree, case, fr_tree), point_summary(groups, case, fr_lean)
-    assert set(whole) == set(lean) == set(SUMMARY_VARIABLES)
-    for k in SUMMARY_VARIABLES:
-        np.testing.assert_array_equal(lean[k], whole[k], err_msg=k)
-    assert np.isfinite(lean["efficiency"]).all()
-    lt, lt_tree = groups["/ltca"], tree["/ltca"].to_dataset()
-    assert set(lt.variables) == set(lt_tree.variables)
-    for k in lt.variables:
-        if k not in ("solve_time", "compliance_time"):
-            assert lt.variables[k].equals(lt_tree.variables[k]), k
-    ut, ut_tree = groups["/utca"], tree["/utca"].to_dataset()
-    assert "curve_position" in ut_tree and "curve_position" not in ut
-    for k in ut.variables:
-        assert ut.variables[k].equals(ut_tree.variables[k]), k
-    assert not groups["/easeoff"].variables and groups["/easeoff"].attrs["not_assembled"]
-    assert groups["/"].attrs["analysis_status"] == tree.attrs["analysis_status"]
-
-
 def test_draws_are_reproducible_and_follow_the_distributions():
     """A fixed seed gives the same draws; another seed others; 1024 scrambled Sobol'
     draws of N(0, 0.05) have mean and std within 2 % of σ (QMC error ~ 1/n)."""

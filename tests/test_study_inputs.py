@@ -146,8 +146,7 @@ def test_a_failed_point_keeps_its_input_flag(monkeypatch):
     def boom(*a, **k):
         raise RuntimeError("flanks separate")
 
-    # a study point runs the chain as analysis_groups (run_analysis's, summaries only)
-    monkeypatch.setattr(contact.pipeline, "analysis_groups", boom)
+    monkeypatch.setattr(contact.pipeline, "run_analysis", boom)
     from contact.study.grid import study_inputs
 
     shared = study_inputs(None, [50.0, 250.0], options=OPTS)

@@ -117,9 +117,7 @@ def analyse_point(shared: StudyInputs, index: int, point: Mapping[str, float]) -
     The analysis is exactly :func:`contact.run_analysis` of the case with the point's
     misalignment and scaled deviations (no ``/geometry``, no theoretical groups, no
     ``/mesh_interface``: the summary does not read it, and its roll problems cost 2–3 % of
-    a point), as :func:`contact.pipeline.analysis_groups` runs it: without the
-    ``/easeoff`` dataset, the ``/utca`` contact-curve variables and the result tree, which
-    the summaries do not read (≈ 10 % of a point, issue 75), and
+    a point) and
     :func:`friction.efficiency.efficiency_analysis` of its ``/ltca`` at each speed, so a
     study's numbers equal those of single analyses at the same inputs (but for the order
     of floating-point sums: ≈ 1e-15 relative). The analysis runs inside
@@ -129,7 +127,7 @@ def analyse_point(shared: StudyInputs, index: int, point: Mapping[str, float]) -
     stores), without the stores' bookkeeping.
     """
     from contact.chain import AnalysisChain
-    from contact.pipeline import analysis_groups
+    from contact.pipeline import run_analysis
     from friction.efficiency import efficiency_analysis
 
     case = shared.case
@@ -141,7 +139,7 @@ def analyse_point(shared: StudyInputs, index: int, point: Mapping[str, float]) -
         # a point's contact segments are new (its own misalignment, deviations): the
         # compliance's stores of mapped points and columns would keep nothing it reads
         with rows_not_kept():
-            groups = analysis_groups(
+            tree = run_analysis(
                 case.replaced(misalignment=misalignment_of(case.misalignment, point)),
                 list(shared.torque), flank=shared.flank, options=shared.options,
                 deviations=shared.deviations_at(point.get("deviation_scale")),
@@ -149,13 +147,13 @@ def analyse_point(shared: StudyInputs, index: int, point: Mapping[str, float]) -
                 steps=AnalysisChain.contact_only().with_root_stress(shared.root_stress))
         friction = []
         if shared.speed:
-            ltca = groups["/ltca"]
+            ltca = tree["/ltca"].to_dataset()
             friction = [efficiency_analysis(ltca, shared.operating, pinion_speed=float(n))
                         for n in shared.speed]
-        summary = point_summary(groups, case, friction)
-        root = groups["/"].attrs
-        if root.get("analysis_status", "ok") == "failed":  # no certified roll at a torque
-            return PointResult(index, 2, str(root["analysis_status_reason"]), summary)
+        summary = point_summary(tree, case, friction)
+        cert = tree.attrs.get("analysis_status", "ok")
+        if cert == "failed":  # a torque without any certified roll: no result there
+            return PointResult(index, 2, str(tree.attrs["analysis_status_reason"]), summary)
         status = 0 if bool(np.all(summary["certified"] > 0)) else 1
         return PointResult(index, status, "", summary)
     except Exception as exc:

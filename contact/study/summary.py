@@ -20,7 +20,7 @@ STATUS_MEANINGS    the meaning of the per-point ``status`` flag
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 
 import numpy as np
 import xarray as xr
@@ -168,24 +168,11 @@ def pattern_dimensions(ltca: xr.Dataset, case: Case) -> dict[str, np.ndarray]:
     }
 
 
-def _group(tree: xr.DataTree | Mapping[str, xr.Dataset], path: str) -> xr.Dataset:
-    """Group ``path`` of an analysis tree, or of its groups by path, as a Dataset."""
-    if isinstance(tree, xr.DataTree):
-        return tree[path].to_dataset()
-    return tree[path]
-
-
-def _has(tree: xr.DataTree | Mapping[str, xr.Dataset], path: str) -> bool:
-    """Whether an analysis tree (or its groups by path) has group ``path``."""
-    return path in (tree.groups if isinstance(tree, xr.DataTree) else tree)
-
-
-def _tree_misalignment(tree: xr.DataTree | Mapping[str, xr.Dataset],
-                       case: Case) -> Misalignment:
+def _tree_misalignment(tree: xr.DataTree, case: Case) -> Misalignment:
     """The misalignment an analysis ran at: its root attributes
     (``misalignment_delta_E_mm`` …, :data:`contact.pipeline.MISALIGNMENT_ATTRS`), else the
     case's."""
-    a = tree.attrs if isinstance(tree, xr.DataTree) else tree["/"].attrs
+    a = tree.attrs
     try:
         return Misalignment(
             delta_E=float(a["misalignment_delta_E_mm"]),
@@ -227,17 +214,15 @@ def plausibility_bits(ltca: xr.Dataset | None, case: Case, misalignment: Misalig
     return bits
 
 
-def point_summary(tree: xr.DataTree | Mapping[str, xr.Dataset], case: Case,
+def point_summary(tree: xr.DataTree, case: Case,
                   friction: Sequence[xr.Dataset] = ()) -> dict[str, np.ndarray]:
     """The study summaries of one analysis.
 
     Parameters
     ----------
-    tree : xarray.DataTree or mapping of str to xarray.Dataset
+    tree : xarray.DataTree
         A :func:`contact.run_analysis` result (``/utca``, ``/ltca``; ``/friction``
-        optional) — with deviations, the deviated surfaces' results (main groups) —, or
-        the groups of :func:`contact.pipeline.analysis_groups` (the root attributes in
-        ``"/"``): the same summaries.
+        optional) — with deviations, the deviated surfaces' results (main groups).
     case : geometry.case.Case
         The analysed case (its gear blank converts pattern fractions to mm).
     friction : sequence of xarray.Dataset
@@ -266,7 +251,8 @@ def point_summary(tree: xr.DataTree | Mapping[str, xr.Dataset], case: Case,
     fractions are of the face width on the pitch-cone generator) and along the whole depth
     at the centre (seed §3.5, Fig. 3.7: pattern on the gear flank).
     """
-    ltca, utca = _group(tree, "/ltca"), _group(tree, "/utca")
+    ltca = tree["/ltca"].to_dataset()
+    utca = tree["/utca"].to_dataset()
     found = ltca["found"].values > 0
     NT = found.shape[0]
     out = {
@@ -280,8 +266,8 @@ def point_summary(tree: xr.DataTree | Mapping[str, xr.Dataset], case: Case,
         **pattern_dimensions(ltca, case),
         "certified": found.all(axis=1).astype(np.int8),
     }
-    if not friction and _has(tree, "/friction"):
-        friction = (_group(tree, "/friction"),)
+    if not friction and "/friction" in tree.groups:
+        friction = (tree["/friction"].to_dataset(),)
     if friction:
         out["efficiency"] = np.stack([f["efficiency_mean"].values for f in friction], -1)
         out["power_loss"] = np.stack([f["power_loss_mean"].values for f in friction], -1)

@@ -108,8 +108,7 @@ def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
                  separation: float = DEFAULT_SEPARATION, grid: dict | None = None,
                  method: str = "second_order",
                  n_point: int = 41,
-                 easeoff: EaseOff | None = None,
-                 curves: bool = True) -> tuple[xr.Dataset | None, xr.Dataset]:
+                 easeoff: EaseOff | None = None) -> tuple[xr.Dataset, xr.Dataset]:
     """Ease-off based unloaded TCA of a case over one mesh cycle (seed §2.3.2, §2.4, §4.4).
 
     Parameters
@@ -138,17 +137,11 @@ def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
         A precomputed ease-off of the same case, flank, misalignment and grid (the LTCA
         pipeline shares one); ``flank``, ``misalignment`` and ``grid`` are then not used
         to rebuild it.
-    curves : bool
-        True (default): both datasets whole. False: what a design study keeps of them
-        (:func:`contact.study.engine.analyse_point`, issue 75): no ``/easeoff`` dataset
-        (None) and the ``/utca`` dataset without its variables along the contact curves
-        and paths (``utca_dataset(..., curves=False)``): the same cycle, the same numbers
-        where both have them, without assembling what a study discards.
 
     Returns
     -------
-    easeoff : xarray.Dataset or None
-        See :func:`easeoff_dataset`; None with ``curves=False``.
+    easeoff : xarray.Dataset
+        See :func:`easeoff_dataset`.
     utca : xarray.Dataset
         Dims ``roll``, ``pair``, ``point``, ``path``, ``transition``, ``xyz``; see
         :func:`utca_dataset`.
@@ -175,9 +168,6 @@ def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
     cycle = _memo_cycle(_Same(eo), rolls_per_cycle,
                         _check_cycle_options(rolls_per_cycle, pairs, method, n_point),
                         method, n_point)
-    if not curves:  # a study's point: its ease-off and cycle are new, nothing to memoise
-        return None, utca_dataset(eo, cycle, case=case, separation=separation,
-                                  misalignment=misalignment, curves=False)
     eo_ds, ds = _memo_datasets(_Same(eo), _Same(cycle), _Same(case), separation,
                                _Same(misalignment))
     # (each call its own datasets: a caller may add variables or attributes)
@@ -336,8 +326,7 @@ def _lowest_te(u0: np.ndarray, envelope: np.ndarray) -> float:
 
 def utca_dataset(eo: EaseOff, cycle: UnloadedCycle, *, case: Case,
                  separation: float = DEFAULT_SEPARATION,
-                 misalignment: Misalignment | None = None,
-                 curves: bool = True) -> xr.Dataset:
+                 misalignment: Misalignment | None = None) -> xr.Dataset:
     """Assemble the ``/utca`` Dataset of a mesh cycle over (roll, pair).
 
     Parameters
@@ -351,11 +340,6 @@ def utca_dataset(eo: EaseOff, cycle: UnloadedCycle, *, case: Case,
         Separation bounding the unloaded contact line, > 0 (default 0.0063).
     misalignment : geometry.pair.assembly.Misalignment, optional
         The misalignment used (recorded in the attributes); defaults to the case's.
-    curves : bool
-        False: without the variables along the contact curves and paths (``curve_*``,
-        ``separation``, ``contact_pattern``, ``contact_line_length``, ``contact_u``,
-        ``contact_v``, ``path_*``) and without the ``inputs`` attribute (the case as
-        TOML): what a design study keeps (issue 75); the others are the same numbers.
 
     Returns
     -------
@@ -386,6 +370,11 @@ def utca_dataset(eo: EaseOff, cycle: UnloadedCycle, *, case: Case,
     cc, envelope = cycle.curves, cycle.envelope
     te = cc.ute
     active = np.isfinite(te) & (te <= envelope[:, None] + 1e-15)
+    zr = _plane_places(eo)
+    gap = cc.ease_off_angle + cc.gap
+    sep_env = cc.normal_arm * (gap - envelope[:, None, None])
+    sep_own = cc.normal_arm * (gap - te[..., None])
+    pattern, length, path_u, path_v = _contact_lines(cc, sep_own, separation, active)
     data = {
         "unloaded_transmission_error": _var(
             "roll", envelope * 1e6, "urad",
@@ -397,20 +386,13 @@ def utca_dataset(eo: EaseOff, cycle: UnloadedCycle, *, case: Case,
         "active": _var(("roll", "pair"), active.astype(np.int8), "1",
                        "1 where the pair carries the motion (its UTE is the lower envelope)",
                        **binary_flag("inactive", "active")),
+        **_curve_variables(cc, zr, sep_env, pattern),
+        **_path_variables(cc, length, path_u, path_v, zr),
+        **_cycle_variables(cycle, separation),
     }
-    if curves:
-        zr = _plane_places(eo)
-        gap = cc.ease_off_angle + cc.gap
-        sep_env = cc.normal_arm * (gap - envelope[:, None, None])
-        sep_own = cc.normal_arm * (gap - te[..., None])
-        pattern, length, path_u, path_v = _contact_lines(cc, sep_own, separation, active)
-        data.update(_curve_variables(cc, zr, sep_env, pattern))
-        data.update(_path_variables(cc, length, path_u, path_v, zr))
-    data.update(_cycle_variables(cycle, separation))
     n_point = cc.u.shape[-1]
-    attrs = _utca_attrs(eo, case, mis, cycle.method, inputs=curves)
     # (xarray's Dataset of these tuples, made directly: issue 75)
-    return dataset(data, _utca_coords(cycle, n_point), attrs)
+    return dataset(data, _utca_coords(cycle, n_point), _utca_attrs(eo, case, mis, cycle.method))
 
 
 def _plane_places(eo: EaseOff):
@@ -566,11 +548,9 @@ def _utca_coords(cycle: UnloadedCycle, n_point: int) -> dict:
     }
 
 
-def _utca_attrs(eo: EaseOff, case: Case, mis: Misalignment, method: str,
-                inputs: bool = True) -> dict:
-    """The ``/utca`` attributes: senses and phases of the kinematics, inputs (the case as
-    TOML, where ``inputs``)."""
-    attrs = {
+def _utca_attrs(eo: EaseOff, case: Case, mis: Misalignment, method: str) -> dict:
+    """The ``/utca`` attributes: senses and phases of the kinematics, inputs."""
+    return {
         "title": f"{case.name}: unloaded tooth contact analysis (ease-off method)",
         "method": method,
         "case": case.name,
@@ -589,10 +569,8 @@ def _utca_attrs(eo: EaseOff, case: Case, mis: Misalignment, method: str,
         "misalignment": _misalignment_json(mis),
         "toolkit_version": __version__,
         "source": "contact.utca.unloaded_tca (seed 2.3.2.2, 4.4)",
+        "inputs": case.to_toml(),
     }
-    if inputs:
-        attrs["inputs"] = case.to_toml()
-    return attrs
 
 
 def _misalignment_json(mis: Misalignment) -> str:
