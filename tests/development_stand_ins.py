@@ -46,6 +46,20 @@ def checked(values, metrics, targets, centre_v) -> dev.DevelopmentEvaluation:
                                      full=full, checked=True)
 
 
+def seen_designs(law: Callable[..., Any]) -> tuple[list[dict], Callable[..., Any]]:
+    """(the designs analysed at the nominal mounting, a stand-in analysis): ``fake`` calls
+    ``law(case, torques, misalignment, **kw)`` and records ``dict(case)`` of each call
+    without a misalignment (the designs a step tried, its tolerance checks apart)."""
+    seen: list[dict] = []
+
+    def fake(case, torques, misalignment=None, **kw):
+        if misalignment is None:
+            seen.append(dict(case))
+        return law(case, torques, misalignment, **kw)
+
+    return seen, fake
+
+
 def stand_in(monkeypatch, fake: Callable[..., Any], torques: Iterable[float],
              centre_v: float = 0.6, targets: DevelopmentTargets | None = None,
              options: Any = None):

@@ -18,6 +18,7 @@ from pathlib import Path
 
 import pytest
 from development_stand_ins import metrics as _metrics
+from development_stand_ins import seen_designs as _seen
 from development_stand_ins import stand_in
 
 from contact.optimize import development_check as dcheck
@@ -66,17 +67,6 @@ def _remedy(case, torques, misalignment=None, options=None, teeth=None, pinion_k
                  lte_peak_to_peak=[34.0 + 0.2 * (te - 10.0), 53.0 + 0.1 * (te - 10.0)],
                  lte_spread=[0.3, 0.15], pressure_max_flank=[641.0, 1061.0])
     return m, (0.0, 1.0, 0.0, 1.0, 2400.0)
-
-
-def _seen(law):
-    seen = []
-
-    def fake(case, torques, misalignment=None, **kw):
-        if misalignment is None:
-            seen.append(dict(case))
-        return law(case, torques, misalignment, **kw)
-
-    return seen, fake
 
 
 def test_the_parabola_is_matched_then_met_then_the_bearing_lengthened(monkeypatch):

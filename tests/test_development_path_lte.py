@@ -17,6 +17,7 @@ import inspect
 import numpy as np
 import pytest
 from development_stand_ins import metrics as _metrics
+from development_stand_ins import seen_designs as _seen
 from development_stand_ins import stand_in
 
 from contact.optimize import development_check as dcheck
@@ -56,17 +57,6 @@ def _eight_by_35(case, torques, misalignment=None, options=None, teeth=None,
                                    float(np.interp(path, paths, design))],
                  lte_spread=[0.17, 0.08], pressure_max_flank=[852.0, 1375.0])
     return m, (0.0, 1.0, 0.0, 1.0, 2400.0)
-
-
-def _seen(law):
-    seen = []
-
-    def fake(case, torques, misalignment=None, **kw):
-        if misalignment is None:
-            seen.append(dict(case))
-        return law(case, torques, misalignment, **kw)
-
-    return seen, fake
 
 
 def test_the_path_turned_with_a_shorter_ellipse(monkeypatch):

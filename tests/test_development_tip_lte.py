@@ -18,6 +18,7 @@ import numpy as np
 import pytest
 import xarray as xr
 from development_stand_ins import metrics as _metrics
+from development_stand_ins import seen_designs as _seen
 from development_stand_ins import stand_in
 
 from contact.ltca.summary import edge_load_share
@@ -64,17 +65,6 @@ def _fifteen_by_31(case, torques, misalignment=None, options=None, teeth=None,
                  lte_spread=[0.3, 0.15], pressure_max_flank=[831.0, 1426.0],
                  tip_edge_share=[0.0, 0.004])
     return m, (0.0, 1.0, 0.0, 1.0, 2400.0)
-
-
-def _seen(law):
-    seen = []
-
-    def fake(case, torques, misalignment=None, **kw):
-        if misalignment is None:
-            seen.append(dict(case))
-        return law(case, torques, misalignment, **kw)
-
-    return seen, fake
 
 
 def test_a_lighter_tip_relief_then_a_longer_one(monkeypatch):

@@ -17,6 +17,7 @@ import math
 
 import pytest
 from development_stand_ins import metrics as _metrics
+from development_stand_ins import seen_designs as _seen
 from development_stand_ins import stand_in
 
 from contact.optimize import development_check as dcheck
@@ -50,17 +51,6 @@ def _fifteen_by_28(case, torques, misalignment=None, options=None, teeth=None,
                  edge_load_share=[0.0, 0.004], lte_peak_to_peak=[light, design],
                  lte_spread=[0.4, 0.15], pressure_max_flank=[879.0, 1313.0])
     return m, (0.0, 1.0, 0.0, 1.0, 2400.0)
-
-
-def _seen(law):
-    seen = []
-
-    def fake(case, torques, misalignment=None, **kw):
-        if misalignment is None:
-            seen.append(dict(case))
-        return law(case, torques, misalignment, **kw)
-
-    return seen, fake
 
 
 def test_the_tip_relief_starts_at_its_bound_and_is_kept(monkeypatch):
