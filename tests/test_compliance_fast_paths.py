@@ -566,3 +566,169 @@ def test_contact_segments_refuse_through_the_general_messages(field, value, mess
     fields[field] = bad
     with pytest.raises(InputError, match=message.replace("(", r"\(")):
         ContactSegments(**fields)
+
+
+# ------------------------------------------- whole-array passes over rolls (issue 75 item 4)
+def _interp_rows(a: np.ndarray, valid: np.ndarray) -> np.ndarray:
+    """The row-by-row form fill_rows replaced: numpy.interp of each row's valid entries."""
+    out = np.array(a, dtype=float)
+    idx = np.arange(out.shape[1])
+    for i in range(out.shape[0]):
+        good = valid[i] & np.isfinite(out[i])
+        out[i] = np.interp(idx, idx[good], out[i, good])
+    return out
+
+
+def test_fill_rows_equals_numpy_interp_row_by_row():
+    """fill_rows fills all rows in whole-array passes with numpy.interp's arithmetic: every
+    row equal to numpy.interp of its valid entries bit for bit (tolerance 0: the same
+    operations on the same operands), on rows with gaps at the start, inside and at the
+    end, a single valid entry, none missing, and NaN entries marked valid."""
+    from contact.ltca.discretisation import fill_rows
+
+    rng = np.random.default_rng(79)
+    for _ in range(300):
+        rows, cols = int(rng.integers(1, 40)), int(rng.integers(1, 20))
+        a = rng.normal(size=(rows, cols)) * 10.0 ** rng.uniform(-3, 3)
+        valid = rng.random((rows, cols)) < rng.uniform(0.1, 1.0)
+        a[rng.random((rows, cols)) < 0.05] = np.nan  # invalid whatever valid says
+        empty = ~(valid & np.isfinite(a)).any(axis=1)
+        j = rng.integers(0, cols, size=int(empty.sum()))
+        valid[np.flatnonzero(empty), j] = True
+        a[np.flatnonzero(empty), j] = 1.5
+        np.testing.assert_array_equal(fill_rows(a, valid), _interp_rows(a, valid))
+    with pytest.raises(ValueError, match="no valid entry"):
+        fill_rows(np.ones((2, 3)), np.array([[True, False, True], [False] * 3]))
+
+
+def test_distinct_ends_of_rolls_equal_each_roll_alone():
+    """The distinct ends of all rolls in one pass are each roll's (_distinct_ends of its
+    segments alone), roll after roll, bit for bit; an end shared across two rolls (a
+    roll's last segment ending where the next roll's first starts) is listed in both."""
+    from contact.compliance.mesh import _distinct_ends, _distinct_ends_of_rolls
+
+    rng = np.random.default_rng(80)
+    rolls = []
+    for r in range(5):
+        curves = [rng.normal(size=(int(rng.integers(2, 7)), 3)) for _ in range(1 + r % 3)]
+        rolls.append(np.concatenate([np.stack([c[:-1], c[1:]], axis=1) for c in curves]))
+    rolls[2][0, 0] = rolls[1][-1, 1]  # shared across the roll boundary: not merged
+    counts = np.array([e.shape[0] for e in rolls])
+    points, at, index = _distinct_ends_of_rolls(np.concatenate(rolls), counts)
+    alone = [_distinct_ends(e) for e in rolls]
+    np.testing.assert_array_equal(points, np.concatenate([p for p, _ in alone]))
+    np.testing.assert_array_equal(np.diff(at), [p.shape[0] for p, _ in alone])
+    n = counts.sum()
+    for r, (_, idx) in enumerate(alone):
+        rows = slice(counts[:r].sum(), counts[:r + 1].sum())
+        np.testing.assert_array_equal(index[:n][rows], at[r] + idx[:counts[r]])
+        np.testing.assert_array_equal(index[n:][rows], at[r] + idx[counts[r]:])
+
+
+def test_pair_blocks_equal_each_rolls_own():
+    """The tooth-pair blocks of all rolls (one pass over rolls ordered by pair; the
+    look-up roll by roll where a roll is not) are each roll's {pair: indices} and its
+    slices among the concatenated segments."""
+    from contact.compliance.mesh import _pair_blocks
+
+    class Roll:  # (only pair_index is read)
+        def __init__(self, pairs):
+            self.pair_index = np.asarray(pairs)
+
+    for pairs in ([[-1, -1, 0, 0, 0, 1], [0, 0, 1], [1]],  # ordered: one pass
+                  [[-1, -1, 0, 0], [0, 1, 0]]):  # a roll not ordered: roll by roll
+        segments = [Roll(p) for p in pairs]
+        offsets = np.concatenate([[0], np.cumsum([len(p) for p in pairs])])
+        blocks, flat = _pair_blocks(segments, offsets)
+        k = 0
+        for r, seg in enumerate(segments):
+            want = {int(p): np.flatnonzero(seg.pair_index == p)
+                    for p in np.unique(seg.pair_index)}
+            assert list(blocks[r]) == list(want)
+            for p, idx in want.items():
+                np.testing.assert_array_equal(blocks[r][p], idx)
+                np.testing.assert_array_equal(np.arange(offsets[-1])[flat[k]],
+                                              offsets[r] + idx)
+                k += 1
+        assert k == len(flat)
+
+
+def test_contact_segments_of_rolls_equal_one_per_roll():
+    """ContactSegments.of_rolls (the LTCA pool's rolls, checked in one pass) gives each
+    roll what ContactSegments of its rows gives, field by field and bit for bit; a roll
+    the checks refuse raises that roll's message, a roll without segments the N >= 1
+    message, counts that do not add up say so."""
+    from contact.compliance.mesh import ContactSegments
+
+    fields = _segment_fields(12)
+    del fields["pinion_rotation"], fields["gear_rotation"]  # (each roll's own here)
+    counts = np.array([3, 6, 3])
+    pin, gear = np.array([0.1, 0.2, 0.3]), np.array([-0.4, -0.5, -0.6])
+    batch = ContactSegments.of_rolls(counts, pin, gear, **fields)
+    at = np.concatenate([[0], np.cumsum(counts)])
+    names = ("midpoints", "ends", "normals", "length", "r_eq", "load", "pair_index",
+             "pinion_rotation", "gear_rotation")
+    for r, seg in enumerate(batch):
+        one = ContactSegments(**{k: v[at[r]:at[r + 1]] for k, v in fields.items()},
+                              pinion_rotation=float(pin[r]), gear_rotation=float(gear[r]))
+        for name in names:
+            a, b = getattr(seg, name), getattr(one, name)
+            assert type(a) is type(b) and np.asarray(a).dtype == np.asarray(b).dtype, name
+            np.testing.assert_array_equal(a, b, err_msg=name)
+        assert not np.shares_memory(seg.midpoints, fields["midpoints"])
+    bad = dict(fields, length=fields["length"].copy())
+    bad["length"][4] = 0.0
+    with pytest.raises(InputError, match="length: must be finite and > 0"):
+        ContactSegments.of_rolls(counts, pin, gear, **bad)
+    with pytest.raises(InputError, match=r"N >= 1"):
+        ContactSegments.of_rolls(np.array([3, 0, 9]), pin, gear, **fields)
+    with pytest.raises(InputError, match="add up"):
+        ContactSegments.of_rolls(np.array([3, 6, 2]), pin, gear, **fields)
+
+
+def test_several_rolls_parts_add_up_to_their_compliance():
+    """mesh_compliance_many sums all rolls' parts in one buffer: each roll's C is its
+    shell, foundation and Weber parts added (symmetrised) — to the bit where the parts
+    are symmetric — and its parts equal those of mesh_compliance of the roll alone
+    (1e-12 relative: the mapping's batch, as the C of
+    test_mesh_compliance_of_several_rolls_in_one_batch_equals_one_by_one)."""
+    from contact.compliance.mesh import mesh_compliance, mesh_compliance_many
+
+    case, batch = _three_rolls()
+    parts = ("pinion_shell", "gear_shell", "pinion_foundation", "gear_foundation", "weber")
+    for b, (c, info) in zip(batch, mesh_compliance_many(case, batch), strict=True):
+        total = info[parts[0]] + info[parts[1]]
+        for name in parts[2:]:
+            total = total + info[name]
+        np.testing.assert_allclose(c, 0.5 * (total + total.T), rtol=0,
+                                   atol=1e-15 * np.abs(c).max())
+        _, alone = mesh_compliance(case, b)
+        for name in parts:
+            np.testing.assert_allclose(info[name], alone[name], rtol=1e-12,
+                                       atol=1e-12 * np.abs(alone[name]).max(), err_msg=name)
+
+
+def test_pool_of_several_rolls_equals_each_roll_assembled_alone():
+    """CompliancePool.assemble gathers and checks every roll's pool at once: each roll's
+    structural compliance and Weber depths equal that roll's pool assembled alone (to
+    1e-12 relative: the one-roll batch maps its points in a batch of its own)."""
+    from contact.ltca import LTCAOptions, segment_geometry
+    from contact.ltca.pool import CompliancePool
+    from contact.utca.easeoff import ease_off
+
+    case = load_case(ROOT / "cases" / "hypoid_iso23509_s2.toml")
+    eo = ease_off(case)
+    opts = LTCAOptions(cycles=1, rolls_per_cycle=4, segments=8)
+    roll = 0.1 + np.arange(4) * eo.pitch / 4
+    seg = segment_geometry(case, eo, roll, opts.pairs, opts.segments)
+    jobs = [(j, np.isfinite(seg.r_eq[j]) & (seg.length[j] > 0)) for j in (0, 2, 3)]
+    together = CompliancePool(case, seg, opts, eo)
+    together.assemble(jobs)
+    for j, mask in jobs:
+        alone = CompliancePool(case, seg, opts, eo)
+        alone.assemble([(j, mask)])
+        np.testing.assert_array_equal(together.mask(j), mask)
+        a, da = together.restricted(j, mask)
+        b, db = alone.restricted(j, mask)
+        np.testing.assert_allclose(a, b, rtol=1e-12, atol=1e-12 * np.abs(b).max())
+        np.testing.assert_allclose(da, db, rtol=1e-12)

@@ -85,6 +85,10 @@ def _array(name: str, value: Any, shape: tuple[int, ...], unit: str, *,
     return a
 
 
+#: the per-segment fields of :class:`ContactSegments` (its rows)
+_ROW_FIELDS = ("midpoints", "ends", "normals", "length", "r_eq", "pair_index", "load")
+
+
 @dataclass(frozen=True, eq=False)
 class ContactSegments:
     """Contact segments of one roll position, in the pair frame.
@@ -194,6 +198,78 @@ class ContactSegments:
     def size(self) -> int:
         """Number of segments N."""
         return int(self.midpoints.shape[0])
+
+    @classmethod
+    def of_rolls(cls, counts, pinion_rotation, gear_rotation,
+                 **fields: Any) -> list[ContactSegments]:
+        """The segments of several roll positions from their rows concatenated, checked
+        in one pass.
+
+        Parameters
+        ----------
+        counts : array_like (R,) of int — [1] segments of each roll position (≥ 1)
+        pinion_rotation, gear_rotation : array_like (R,) — [rad] each roll position's
+            member rotations
+        **fields
+            ``midpoints`` (N, 3) [mm], ``ends`` (N, 2, 3) [mm], ``normals`` (N, 3) [1],
+            ``length`` (N,) [mm], ``r_eq`` (N,) [mm], ``pair_index`` (N,) [1], ``load``
+            (N,) [N]: as the class takes them, the R roll positions' rows one after the
+            other (N = Σ counts).
+
+        Returns
+        -------
+        list of ContactSegments (R,)
+            Roll r's the rows of its segments, with its rotations: equal, field by field,
+            to ``ContactSegments`` of those rows (its arrays views of one checked copy of
+            all rows instead of a copy each).
+
+        Raises
+        ------
+        InputError
+            As the class, with the message of the first roll position it refuses (a
+            count < 1: that roll's N ≥ 1); counts that do not match the rotations or
+            add up to another number of rows than the fields have.
+
+        Notes
+        -----
+        The LTCA's pool of segments of every computed roll (:mod:`contact.ltca.pool`)
+        hands its rolls over in one batch (:func:`mesh_compliance_many`): its fields
+        gathered for all rolls at once and checked once, where a roll at a time paid the
+        checks and copies per roll (issue 75 item 4).
+        """
+        counts = np.asarray(counts)
+        pin = np.asarray(pinion_rotation, dtype=float)
+        gear = np.asarray(gear_rotation, dtype=float)
+        if (counts.ndim != 1 or counts.dtype.kind not in "iu" or pin.shape != counts.shape
+                or gear.shape != counts.shape):
+            raise InputError(f"counts: must be (R,) integers with (R,) pinion_rotation and "
+                             f"gear_rotation, got shapes {counts.shape}, {pin.shape}, "
+                             f"{gear.shape}")
+        at = np.concatenate([[0], np.cumsum(counts)]).tolist()
+        whole = None
+        if (counts.size and int(counts.min()) >= 1 and np.all(np.isfinite(pin))
+                and np.all(np.isfinite(gear))):
+            with contextlib.suppress(InputError):  # (refused: roll by roll, to name it)
+                whole = cls(**fields)
+        if whole is None or whole.size != at[-1]:
+            if whole is not None:
+                raise InputError(f"counts: must add up to the {whole.size} segments given, "
+                                 f"got {at[-1]}")
+            # roll by roll: each roll's checks and messages (the first refused raises)
+            rows = {k: np.asarray(v) for k, v in fields.items()}
+            return [cls(**{k: v[at[r]:at[r + 1]] if v.ndim else v for k, v in rows.items()},
+                        pinion_rotation=float(pin[r]), gear_rotation=float(gear[r]))
+                    for r in range(counts.size)]
+        values = [(name, getattr(whole, name)) for name in _ROW_FIELDS]
+        out = []
+        for r, (p_r, g_r) in enumerate(zip(pin.tolist(), gear.tolist(), strict=True)):
+            seg = object.__new__(cls)
+            for name, value in values:
+                object.__setattr__(seg, name, value[at[r]:at[r + 1]])
+            object.__setattr__(seg, "pinion_rotation", p_r)
+            object.__setattr__(seg, "gear_rotation", g_r)
+            out.append(seg)
+        return out
 
 
 @dataclass(frozen=True, eq=False)
@@ -324,24 +400,57 @@ def _take(sp: ShellPoints, idx: np.ndarray) -> ShellPoints:
     return ShellPoints(*(None if a is None else a[idx] for a in sp))
 
 
-def _distinct_ends(ends: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def _distinct_ends(ends: np.ndarray, breaks: np.ndarray | None = None
+                   ) -> tuple[np.ndarray, np.ndarray]:
     """Segment ends (N, 2, 3) [mm] without the repeats of consecutive segments.
 
     Returns the distinct points (D, 3) and the index (2N,) of each of the first N then
     second N ends among them: where segment k ends exactly (bit for bit) where segment
     k + 1 starts, as along one contact curve, that point is listed once (D ≈ N + curves
-    instead of 2N).
+    instead of 2N). ``breaks`` (int array): segments whose second end is listed whatever
+    the next segment's start (the last segment of each roll where several rolls'
+    segments are concatenated: :func:`_distinct_ends_of_rolls`).
     """
     n = ends.shape[0]
     starts = ends[:, 0]
     shared = np.zeros(n, dtype=bool)
-    shared[:-1] = np.all(ends[:-1, 1] == ends[1:, 0], axis=1)
+    a, b = ends[:-1, 1], ends[1:, 0]
+    # (the three coordinates compared element-wise: the same as np.all along the length-3
+    # axis, without numpy's slow reduction there)
+    shared[:-1] = (a[:, 0] == b[:, 0]) & (a[:, 1] == b[:, 1]) & (a[:, 2] == b[:, 2])
+    if breaks is not None:
+        shared[breaks] = False
     own = np.flatnonzero(~shared)
     second = np.empty(n, dtype=int)
     second[:-1] = np.arange(1, n)
     second[own] = n + np.arange(own.size)
     return (np.concatenate([starts, ends[own, 1]]),
             np.concatenate([np.arange(n), second]))
+
+
+def _distinct_ends_of_rolls(ends: np.ndarray, counts: np.ndarray
+                            ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """:func:`_distinct_ends` of every roll, the rolls' segments concatenated in ``ends``
+    (N, 2, 3) [mm], ``counts`` (R,) segments a roll: in one pass over all rolls.
+
+    Returns the distinct points (D, 3), roll by roll (each roll's as
+    :func:`_distinct_ends` of its segments alone lists them: its starts, then its own
+    second ends), their start in it per roll (R + 1,), and the index (2N,) of the
+    rolls' first ends (N, roll by roll) then second ends among them: the points and index
+    of the rolls one by one, concatenated, to the bit (no end is shared across rolls).
+    """
+    last = np.cumsum(counts) - 1
+    points, index = _distinct_ends(ends, last[counts > 0])
+    n = ends.shape[0]
+    roll = np.repeat(np.arange(counts.size), counts)  # (N,) each segment's roll
+    # each distinct point's roll: the starts', then the own second ends' (in segment order)
+    roll_d = np.concatenate([roll, roll[index[n:] >= n]])
+    # roll by roll: a stable sort by roll keeps each roll's starts before its own ends
+    order = np.argsort(roll_d, kind="stable")
+    place = np.empty_like(order)
+    place[order] = np.arange(order.size)
+    at = np.concatenate([[0], np.cumsum(np.bincount(roll_d, minlength=counts.size))])
+    return points[order], at, place[index]
 
 
 def mesh_compliance(
@@ -474,23 +583,14 @@ def mesh_compliance_many(
     # the shell matrices of every tooth pair of every roll position: one set of load
     # vectors and one triangular solve per member (the shell's stiffness does not depend
     # on the roll position), one block per (roll, pair)
-    blocks = [{int(pair): np.flatnonzero(seg.pair_index == pair)
-               for pair in np.unique(seg.pair_index)} for seg in segments]
     offsets = np.concatenate([[0], np.cumsum([seg.size for seg in segments])])
-    # a block's segments are consecutive (a roll's segments ordered by pair): its slice,
-    # whose rows the shell and foundation products take as views, not copies
-    flat_blocks = []
-    for r, b in enumerate(blocks):
-        for idx in b.values():
-            rows, _ = _block(offsets[r] + idx)
-            flat_blocks.append(rows if isinstance(rows, slice) else offsets[r] + idx)
+    blocks, flat_blocks = _pair_blocks(segments, offsets)
     shell, found = {}, {}
     for name in names:
-        shell[name] = iter(shell_matrices(model.member(name), mids[name], both[name],
-                                           model.theory,
-                                           model.n_height, model.n_face, flat_blocks))
+        shell[name] = shell_matrices(model.member(name), mids[name], both[name],
+                                     model.theory, model.n_height, model.n_face, flat_blocks)
         # the fillet foundation of every tooth of every roll position in one batch
-        found[name] = iter(member_foundations(model.member(name), mids[name], flat_blocks))
+        found[name] = member_foundations(model.member(name), mids[name], flat_blocks)
     # Weber's depths and compliance of every segment of every roll position at once (each
     # segment's own; the batch changes nothing but the number of calls)
     depth = np.column_stack([weber_depth(model.pinion, mids["pinion"]),
@@ -502,18 +602,52 @@ def mesh_compliance_many(
                            nu1=tp.poisson_ratio, e2=tg.youngs_modulus, nu2=tg.poisson_ratio,
                            r_eq=np.concatenate([seg.r_eq for seg in segments]),
                            kind=weber_kind, load_floor=load_floor)
-    out = []
-    for r, seg in enumerate(segments):
-        mats = {name: [(next(shell[name]), next(found[name])) for _ in blocks[r]]
-                for name in names}
-        rows = slice(offsets[r], offsets[r + 1])
-        out.append(_assemble(seg, model, points[r], blocks[r], mats, depth[rows], c_w[rows]))
+    out = _assemble_rolls(segments, model, points, blocks, shell, found, depth, c_w, offsets)
     share = (time.perf_counter() - t0) / max(len(segments), 1)
     for _, info in out:
         info["time"] = share
         log.debug("mesh compliance: %d segments in %d tooth pairs, %.4f s",
                   len(info["weber_depth"]), len(info["blocks"]), share)
     return out
+
+
+def _pair_blocks(segments: list[ContactSegments], offsets: np.ndarray
+                 ) -> tuple[list[dict[int, np.ndarray]], list]:
+    """Each roll's tooth-pair blocks {pair: its segments' indices in the roll}, pairs
+    ascending, and the same blocks of all rolls in one list, rolls in order, as indices
+    into the rolls' concatenated segments (``offsets`` (R + 1,) each roll's first): a
+    slice where a block's segments are consecutive (a roll's segments ordered by pair, as
+    the LTCA gives them: the rows the shell and foundation products then take as views,
+    not copies), else the index array.
+
+    Where every roll's segments are ordered by pair the blocks are the runs of equal
+    (roll, pair) over all rolls, found in one pass; else each roll's pairs are looked up
+    on their own (the same blocks)."""
+    counts = np.diff(offsets)
+    pairs = np.concatenate([seg.pair_index for seg in segments])
+    roll = np.repeat(np.arange(len(segments)), counts)
+    same_roll = roll[1:] == roll[:-1]
+    if np.all(pairs[1:][same_roll] >= pairs[:-1][same_roll]):
+        new = np.ones(pairs.size, dtype=bool)
+        new[1:] = ~same_roll | (pairs[1:] != pairs[:-1])
+        start = np.flatnonzero(new)
+        stop = np.append(start[1:], pairs.size)
+        blocks: list[dict[int, np.ndarray]] = [{} for _ in segments]
+        flat = []
+        for a, b, r, pair in zip(start.tolist(), stop.tolist(), roll[start].tolist(),
+                                 pairs[start].tolist(), strict=True):
+            first = a - int(offsets[r])
+            blocks[r][pair] = np.arange(first, first + b - a)
+            flat.append(slice(a, b))
+        return blocks, flat
+    blocks = [{int(pair): np.flatnonzero(seg.pair_index == pair)
+               for pair in np.unique(seg.pair_index)} for seg in segments]
+    flat = []
+    for r, b in enumerate(blocks):
+        for idx in b.values():
+            rows, _ = _block(offsets[r] + idx)
+            flat.append(rows if isinstance(rows, slice) else offsets[r] + idx)
+    return blocks, flat
 
 
 def _map_rolls(case: Case, segments: list[ContactSegments],
@@ -557,15 +691,12 @@ def _map_members(case: Case, segments: list[ContactSegments], model: PairComplia
     if not np.allclose(np.einsum("mrji,mrjk->mrik", rot, rot), np.eye(3), atol=1e-9):
         raise InputError("transform: must be a rigid motion (orthonormal rotation block)")
     off = np.stack([t_p[:, :3, 3], t_g[:, :3, 3]])  # (member, roll, 3)
-    distinct = [_distinct_ends(seg.ends) for seg in segments]
     n_mid = np.array([seg.size for seg in segments])
-    n_end = np.array([d[0].shape[0] for d in distinct])
     mid_at = np.concatenate([[0], np.cumsum(n_mid)])
-    end_at = np.concatenate([[0], np.cumsum(n_end)])
-    # each roll's first then second ends among all rolls' distinct ends
-    first = np.concatenate([end_at[r] + d[1][:n_mid[r]] for r, d in enumerate(distinct)])
-    second = np.concatenate([end_at[r] + d[1][n_mid[r]:] for r, d in enumerate(distinct)])
-    take = np.concatenate([first, second])
+    # every roll's distinct ends (roll by roll) in one pass, and each roll's first then
+    # second ends among them
+    distinct, end_at, take = _distinct_ends_of_rolls(
+        np.concatenate([seg.ends for seg in segments]), n_mid)
     jobs = []
     for i, (name, sign) in enumerate((("pinion", 1.0), ("gear", -1.0))):
         mid = np.empty((int(mid_at[-1]), 3))
@@ -575,7 +706,7 @@ def _map_members(case: Case, segments: list[ContactSegments], model: PairComplia
             rows, rows_e = slice(mid_at[r], mid_at[r + 1]), slice(end_at[r], end_at[r + 1])
             mid[rows] = (seg.midpoints - off[i, r]) @ rot[i, r]
             nrm[rows] = (sign * seg.normals) @ rot[i, r]
-            ends[rows_e] = (distinct[r][0] - off[i, r]) @ rot[i, r]
+            ends[rows_e] = (distinct[rows_e] - off[i, r]) @ rot[i, r]
         jobs.append((model.member(name), mid, nrm, None, ends))
     mapped = _kept_mapping(jobs)
     mids, both = {}, {}
@@ -705,31 +836,58 @@ def _block(idx: np.ndarray):
     return np.ix_(idx, idx)
 
 
-def _assemble(seg: ContactSegments, model: PairComplianceModel, points: dict, blocks: dict,
-              mats: dict, depth: np.ndarray, c_w: np.ndarray) -> tuple[np.ndarray, dict]:
-    """The compliance matrices of one roll position from its mapped shell points, its
-    tooth pairs' shell and foundation matrices (``mats[member]``: (shell, foundation), one
-    per block of ``blocks``), Weber's depths (N, 2) [mm] and compliances (N,) [mm/N]."""
-    n = seg.size
-    parts = {k: np.zeros((n, n)) for k in ("pinion_shell", "gear_shell", "pinion_foundation",
-                                           "gear_foundation")}
-    # the total summed block by block, in the order of the parts (pinion shell, gear
-    # shell, pinion foundation, gear foundation, Weber): zero between tooth pairs
-    total = np.zeros((n, n))
-    asym = 0.0
-    for k, idx in enumerate(blocks.values()):
-        (cp, fp), (cg, fg) = mats["pinion"][k], mats["gear"][k]
-        ix = _block(idx)
-        parts["pinion_shell"][ix] = cp.matrix
-        parts["gear_shell"][ix] = cg.matrix
-        parts["pinion_foundation"][ix] = fp
-        parts["gear_foundation"][ix] = fg
-        total[ix] = cp.matrix + cg.matrix + fp + fg
-        asym = max(asym, cp.asymmetry, cg.asymmetry)
-    parts["weber"] = np.diag(c_w)
-    total[np.diag_indices(n)] += c_w
-    total = 0.5 * (total + total.T)
-    info: dict[str, Any] = dict(parts)
-    info.update(asymmetry=asym, pinion_points=points["pinion"], gear_points=points["gear"],
-                weber_depth=depth, blocks=blocks, model=model)
-    return total, info
+def _assemble_rolls(segments: list[ContactSegments], model: PairComplianceModel,
+                    points: list[dict], blocks: list[dict], shell: dict, found: dict,
+                    depth: np.ndarray, c_w: np.ndarray, offsets: np.ndarray
+                    ) -> list[tuple[np.ndarray, dict]]:
+    """The compliance matrices of every roll position from its mapped shell points
+    (``points[r]``), its tooth pairs' blocks (``blocks[r]``), the shell and foundation
+    matrices of all rolls' blocks in order (``shell[member]``: ComplianceMatrix,
+    ``found[member]``: ndarray, one per block of every roll), Weber's depths (N, 2) [mm]
+    and compliances (N,) [mm/N] of all rolls' segments (roll r's rows
+    ``offsets[r]:offsets[r + 1]``).
+
+    Each roll's parts are (n, n) views of one buffer for all rolls (allocated and summed
+    once: C = shell_p + shell_g + foundation_p + foundation_g + Weber, block by block, in
+    that order), then symmetrised roll by roll; the same matrices as one roll at a time
+    (its parts summed in the same order), to the bit."""
+    sizes = np.diff(offsets)
+    at = np.concatenate([[0], np.cumsum(sizes * sizes)])
+    buf = np.zeros((4, int(at[-1])))  # pinion shell, gear shell, pinion and gear foundation
+    views = [buf[:, at[r]:at[r + 1]].reshape(4, int(n), int(n))
+             for r, n in enumerate(sizes.tolist())]
+    k = 0
+    asym = []
+    for r, roll_blocks in enumerate(blocks):
+        parts, a = views[r], 0.0
+        for idx in roll_blocks.values():
+            cp, cg = shell["pinion"][k], shell["gear"][k]
+            ix = _block(idx)
+            parts[0][ix] = cp.matrix
+            parts[1][ix] = cg.matrix
+            parts[2][ix] = found["pinion"][k]
+            parts[3][ix] = found["gear"][k]
+            a = max(a, cp.asymmetry, cg.asymmetry)
+            k += 1
+        asym.append(a)
+    # the total of all rolls at once (zero between tooth pairs), each diagonal with Weber's
+    total = buf[0] + buf[1]
+    total += buf[2]
+    total += buf[3]
+    roll = np.repeat(np.arange(sizes.size), sizes)
+    local = np.arange(int(offsets[-1])) - offsets[roll]
+    total[at[roll] + local * (sizes[roll] + 1)] += c_w
+    out = []
+    for r, seg in enumerate(segments):
+        n = seg.size
+        c = total[at[r]:at[r + 1]].reshape(n, n)
+        rows = slice(offsets[r], offsets[r + 1])
+        parts = views[r]
+        info: dict[str, Any] = {"pinion_shell": parts[0], "gear_shell": parts[1],
+                                "pinion_foundation": parts[2], "gear_foundation": parts[3],
+                                "weber": np.diag(c_w[rows])}
+        info.update(asymmetry=asym[r], pinion_points=points[r]["pinion"],
+                    gear_points=points[r]["gear"], weber_depth=depth[rows],
+                    blocks=blocks[r], model=model)
+        out.append((0.5 * (c + c.T), info))
+    return out

@@ -208,10 +208,53 @@ def gear_to_pair(kin, psi, x: np.ndarray, vec: bool = False) -> np.ndarray:
 
 
 def fill_rows(a: np.ndarray, valid: np.ndarray) -> np.ndarray:
-    """Replace invalid entries of each row by linear interpolation/extension of the valid."""
+    """Replace the invalid entries of each row by linear interpolation between its valid
+    neighbours, and beyond a row's first or last valid entry by that entry.
+
+    Parameters
+    ----------
+    a : array (R, S) — [any unit]
+        The rows (e.g. a field along each contact curve's S segments).
+    valid : array (R, S) of bool
+        The entries to keep (a non-finite entry is invalid whatever ``valid`` says).
+
+    Returns
+    -------
+    ndarray (R, S) — [as ``a``]
+        Row by row what :func:`numpy.interp` of the row's valid entries (at their column
+        indices) gives at every column, to the bit: the valid entries themselves, between
+        two valid entries p < c < q the value (a_q − a_p)/(q − p) · (c − p) + a_p, before
+        the first and after the last the first's and the last's; for all rows in whole-
+        array passes (a roll's curves, every roll at once: issue 75 item 4).
+
+    Raises
+    ------
+    ValueError
+        A row with an invalid entry and no valid one (as :func:`numpy.interp` of no
+        points).
+    """
     out = np.array(a, dtype=float)
-    idx = np.arange(out.shape[1])
-    for i in range(out.shape[0]):
-        good = valid[i] & np.isfinite(out[i])
-        out[i] = np.interp(idx, idx[good], out[i, good])
+    good = np.asarray(valid, dtype=bool) & np.isfinite(out)
+    if good.all():
+        return out
+    n = out.shape[1]
+    col = np.arange(n)
+    # each entry's nearest valid column at or before it (−1: none) and at or after it (n)
+    prev = np.maximum.accumulate(np.where(good, col, -1), axis=1)
+    nxt = np.minimum.accumulate(np.where(good, col, n)[:, ::-1], axis=1)[:, ::-1]
+    r, c = np.nonzero(~good)
+    p, q = prev[r, c], nxt[r, c]
+    if np.any((p < 0) & (q >= n)):
+        raise ValueError("fill_rows: a row has no valid entry to fill from")
+    before, after = p < 0, q >= n
+    inner = ~(before | after)
+    fill = np.empty(r.size)
+    fill[before] = out[r[before], q[before]]
+    fill[after] = out[r[after], p[after]]
+    ri, ci, pi, qi = r[inner], c[inner], p[inner], q[inner]
+    # numpy.interp's arithmetic: slope (f_q − f_p)/(x_q − x_p), then slope·(x − x_p) + f_p
+    lo = out[ri, pi]
+    slope = (out[ri, qi] - lo) / (qi.astype(float) - pi.astype(float))
+    fill[inner] = slope * (ci.astype(float) - pi.astype(float)) + lo
+    out[r, c] = fill
     return out

@@ -179,22 +179,25 @@ class CompliancePool:
             mating tooth).
         """
         seg = self.seg
-        batch = []
-        for j, mask in jobs:
-            wk, ws = np.nonzero(mask)
-            batch.append(ContactSegments(
-                midpoints=seg.midpoint_pair[j, wk, ws],
-                ends=seg.ends_pair[j, wk, ws],
-                normals=seg.normal_pair[j, wk, ws],
-                length=seg.length[j, wk, ws],
-                r_eq=seg.r_eq[j, wk, ws],
-                pair_index=np.asarray(self.options.pairs)[wk],
-                # (Weber's part is replaced by the iteration; a unit line load keeps it
-                # defined)
-                load=seg.length[j, wk, ws],
-                pinion_rotation=float(seg.pinion_rotation[j]),
-                gear_rotation=float(seg.gear_rotation[j]),
-            ))
+        # every roll's pool gathered at once: (roll of the batch, pair, segment) of all
+        # rolls' segments, each roll's in its mask's row-major order
+        rolls = np.array([j for j, _ in jobs], dtype=int)
+        rr, wk, ws = np.nonzero(np.stack([mask for _, mask in jobs]))
+        jj = rolls[rr]
+        length = seg.length[jj, wk, ws]
+        batch = ContactSegments.of_rolls(
+            np.bincount(rr, minlength=len(jobs)), seg.pinion_rotation[rolls],
+            seg.gear_rotation[rolls],
+            midpoints=seg.midpoint_pair[jj, wk, ws],
+            ends=seg.ends_pair[jj, wk, ws],
+            normals=seg.normal_pair[jj, wk, ws],
+            length=length,
+            r_eq=seg.r_eq[jj, wk, ws],
+            pair_index=np.asarray(self.options.pairs)[wk],
+            # (Weber's part is replaced by the iteration; a unit line load keeps it
+            # defined)
+            load=length,
+        )
         fixed = self.options.separation_limit
         try:
             mats = _plugin_call(self._model_name, "its assembler", self._assembler, batch)

@@ -414,10 +414,15 @@ def _curve_r_eq(case, eo: EaseOff, u, v, pos_g, nrm_g, tangent, phi) -> np.ndarr
         okc = ok.reshape(J * K, S)[rows]
         keep = np.any(okc, axis=1)
         rows, okc = rows[keep], okc[keep]
-        uu = fill_rows(u.reshape(J * K, S)[rows], okc)
-        vv = fill_rows(v.reshape(J * K, S)[rows], okc)
+        # u, v and the three coordinates of every curve filled in one pass (each row on
+        # its own: the rows of the five fields stacked)
+        m = rows.size
         pg = pos_g.reshape(J * K, S, 3)[rows]
-        pg = np.stack([fill_rows(pg[..., i], okc) for i in range(3)], axis=-1)
+        filled = fill_rows(np.concatenate([u.reshape(J * K, S)[rows],
+                                           v.reshape(J * K, S)[rows],
+                                           *np.moveaxis(pg, -1, 0)]), np.tile(okc, (5, 1)))
+        uu, vv = filled[:m], filled[m:2 * m]
+        pg = np.ascontiguousarray(np.moveaxis(filled[2 * m:].reshape(3, m, S), 0, -1))
         # across-line direction w = n × t in the gear frame (carried to the pinion frame
         # at each curve's pinion rotation)
         w_g = np.nan_to_num(np.cross(nrm_g, tangent)).reshape(J * K, S, 3)[rows]
