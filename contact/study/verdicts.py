@@ -152,6 +152,7 @@ import json
 import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 import xarray as xr
@@ -165,6 +166,9 @@ from contact.ltca.plausibility import (
 )
 from contact.ltca.summary import edge_load_share, flank_peak
 from geometry.core.errors import InputError
+
+if TYPE_CHECKING:
+    from contact.load_capacity.durability import StaticContactStrength
 
 __all__ = ["CHECKS", "CHECK_ORDER", "DUTY_MIN_SAFETY", "EDGE_SHARE_MIN", "GRADE",
            "LTE_FAIL_FACTOR", "LTE_LIMIT", "MICROPITTING_MIN", "SCUFFING_MIN", "SEVERITIES",
@@ -356,7 +360,7 @@ def weaker_contact_curve(lt: xr.Dataset) -> tuple[object, str] | None:
     return weak, names[curves.index(weak)]
 
 
-def flank_static_strength(lt: xr.Dataset):
+def flank_static_strength(lt: xr.Dataset) -> StaticContactStrength | None:
     """The static contact strength of an analysis' weaker member at the verdict's grade
     :data:`GRADE`: the limit of the ``flank_pressure`` FAIL, of ``edge_pressure``, of
     ``ltca run``'s next steps and of the bearing development
@@ -1117,8 +1121,8 @@ def _duty_static(ds: xr.Dataset) -> tuple[list[Finding], list[str]] | None:
             findings.append(Finding(
                 "fail", "static",
                 f"flank peak pressure {p[i]:.0f} MPa in bin {i} ({_t(torque[i])}){left} "
-                f"above the static contact strength {strength[i]:.0f} MPa (σ_Hlim × Z_NT "
-                "at the S–N curve's static end, the weaker member): no life there"))
+                f"above the static contact strength {strength[i]:.0f} MPa (σ_Hlim × "
+                "Z_NT,stat of the weaker member, ltca run's limit): no life there"))
         elif n[i] and np.isfinite(raw[i]) and raw[i] > strength[i]:
             notes.append(f"static: flank peak pressure {p[i]:.0f} MPa in bin {i} "
                          f"({_t(torque[i])}), within the static contact strength "
@@ -1170,8 +1174,8 @@ def _duty_edge_pressure(ds: xr.Dataset) -> list[Finding] | None:
     each = "; ".join(f"{p[i]:.0f} MPa in bin {i} ({_t(torque[i])}, static strength "
                      f"{strength[i]:.0f} MPa)" for i in bad)
     return [Finding("attention", "edge_pressure",
-                    f"edge peak pressure above the flank's static strength (σ_Hlim × Z_NT at "
-                    f"the S–N curve's static end, the weaker member) in {bad.size} of "
+                    f"edge peak pressure above the flank's static strength (σ_Hlim × "
+                    f"Z_NT,stat of the weaker member, ltca run's limit) in {bad.size} of "
                     f"{p.size} bins: {each}; the S–N curve is of flank contact (no damage "
                     "counted), but the flank under the edge carries more than a flank "
                     "contact survives: a relief or an edge break takes the load off the "
