@@ -51,16 +51,14 @@ def optimised_variables(case, side: str) -> tuple[frozenset[str], str]:
 
 
 def static_flank_strength(lt) -> float:
-    """The static contact strength σ_Hlim·Z_NT,static [MPa] of the weaker member's material
-    at the verdict's grade (:func:`contact.study.verdicts.verdict`'s flank check, ISO
-    6336-2's life factor at the S–N curve's static end); NaN without materials."""
-    from contact.study.verdicts import weaker_contact_curve
+    """The static contact strength σ_Hlim·Z_NT,stat·Z_W·Z_X [MPa] of the weaker member's
+    material at the verdict's grade (:func:`contact.study.verdicts.flank_static_strength`,
+    the limit of the verdict's flank check, ISO 6336-2 at the static stress); NaN without
+    materials."""
+    from contact.study.verdicts import flank_static_strength
 
-    found = weaker_contact_curve(lt)
-    if found is None:
-        return math.nan
-    weak = found[0]
-    return float(weak.allowable * weak.static_life_factor)
+    found = flank_static_strength(lt)
+    return math.nan if found is None else float(found.strength)
 
 
 def _parts(case, pinion_flank: str, half_ranges: Mapping[str, float]) -> list[str]:

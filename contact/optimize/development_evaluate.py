@@ -106,20 +106,15 @@ def _ltca(tree):
 
 
 def static_strength(tree) -> float:
-    """The static strength σ_Hlim·Z_NT,static [MPa] of the weaker member's material of an
-    analysis (the ``/ltca`` attributes ``material_pinion``, ``material_gear`` of its tree or
-    of the ``/ltca`` dataset) at the verdict's grade (:data:`contact.study.verdicts.GRADE`,
-    ISO 6336-5; the S–N curve's life factor at its static end, ISO 6336-2); inf where the
-    tree names no material."""
-    from contact.load_capacity.durability import sn_curves
-    from contact.study.verdicts import GRADE
+    """The static strength σ_Hlim·Z_NT,stat·Z_W·Z_X [MPa] of the weaker member's material of
+    an analysis (the ``/ltca`` attributes ``material_pinion``, ``material_gear`` of its tree
+    or of the ``/ltca`` dataset) at the verdict's grade: the verdict's own
+    (:func:`contact.study.verdicts.flank_static_strength`, ISO 6336-2 at the static
+    stress); inf where the tree names no material."""
+    from contact.study.verdicts import flank_static_strength
 
-    a = _ltca(tree).attrs
-    names = sorted({a.get("material_pinion"), a.get("material_gear")} - {None})
-    if not names:
-        return math.inf
-    curves = [sn_curves(str(n), GRADE)["contact"] for n in names]
-    return float(min(c.allowable * c.static_life_factor for c in curves))
+    found = flank_static_strength(_ltca(tree))
+    return math.inf if found is None else float(found.strength)
 
 
 def design_metrics(tree, case: Case) -> dict[str, np.ndarray]:

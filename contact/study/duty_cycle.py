@@ -43,6 +43,7 @@ from contact.load_capacity.durability import (
     peak_fillet_stress,
     pressure_envelopes,
     sn_curves,
+    static_contact_strength,
 )
 from contact.ltca import LTCAOptions
 from contact.ltca.options import json_options
@@ -452,7 +453,11 @@ def _durability(case: Case, duty: DutyCycle, ds: xr.Dataset,
         # bins of a run before it (no flank_peak_pressure) their envelope's peak
         judged = (np.asarray(ds["flank_peak_pressure"].values, float)
                   if "flank_peak_pressure" in ds else env.reshape(env.shape[0], -1).max(-1))
-        strength = np.array([_peak(contact, b).static_stress for b in range(env.shape[0])])
+        # the static strength ltca run's verdict judges (the material's σ_Hlim Z_NT,stat Z_W
+        # Z_X, ISO 6336-2 at the static stress); the S-N line above keeps the rating's
+        # allowables (its Z_K Z_Hyp) for the damage between the knee and 1e5 cycles
+        strength = np.full(env.shape[0], static_contact_strength(
+            mat, duty.grade).strength)
         out[f"static_strength_{m}"] = strength
         out[f"static_exceeded_{m}"] = bool(np.any(np.nan_to_num(judged) > strength))
         if "root_stress_peak" in ds:
@@ -604,9 +609,10 @@ def duty_cycle_result(shared: DutyInputs, ds: xr.Dataset) -> xr.Dataset:
         "gear profile fraction of the flank point first reaching damage 1")
     out["contact_static_strength"] = data_var(
         ("bin", "member"), np.stack([dur[f"static_strength_{m}"] for m in members], -1),
-        "MPa", "static contact strength of the bin: the S-N curve's static end (sigma_Hlim "
-        "x Z_NT, on the bin's rating where there is one), which the static check holds "
-        "flank_peak_pressure against")
+        "MPa", "static contact strength sigma_Hlim x Z_NT,stat x Z_W x Z_X of the member's "
+        "material at the cycle's grade (ISO 6336-2 at the static stress; "
+        "contact.load_capacity.durability.static_contact_strength, the limit of ltca run's "
+        "verdict), which the static check holds flank_peak_pressure against")
     out["contact_safety_factor"] = data_var(("member",), np.array(
         [dur[f"contact_safety_{m}"] for m in members]), "1",
         "allowable at long life (the rating's sigma_HP/Z_NT of the bin, else sigma_Hlim; "

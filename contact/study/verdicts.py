@@ -152,6 +152,7 @@ import json
 import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 import xarray as xr
@@ -166,10 +167,14 @@ from contact.ltca.plausibility import (
 from contact.ltca.summary import edge_load_share, flank_peak
 from geometry.core.errors import InputError
 
+if TYPE_CHECKING:
+    from contact.load_capacity.durability import StaticContactStrength
+
 __all__ = ["CHECKS", "CHECK_ORDER", "DUTY_MIN_SAFETY", "EDGE_SHARE_MIN", "GRADE",
            "LTE_FAIL_FACTOR", "LTE_LIMIT", "MICROPITTING_MIN", "SCUFFING_MIN", "SEVERITIES",
-           "VH_SAME_POSITION", "VH_TARGET_TOLERANCE", "Finding", "Verdict", "quiet_transfer",
-           "shown_above", "shown_below", "verdict", "weaker_contact_curve"]
+           "VH_SAME_POSITION", "VH_TARGET_TOLERANCE", "Finding", "Verdict",
+           "flank_static_strength", "quiet_transfer", "shown_above", "shown_below", "verdict",
+           "weaker_contact_curve"]
 
 #: the severities, mildest first (a verdict is the worst of its findings)
 SEVERITIES = ("pass", "attention", "fail")
@@ -317,9 +322,10 @@ def _group(tree: xr.DataTree, name: str) -> xr.Dataset | None:
 
 def weaker_contact_curve(lt: xr.Dataset) -> tuple[object, str] | None:
     """The contact S–N curve of the weaker member's material at the verdict's grade and
-    that material's name: what every flank- and edge-pressure check of the verdict (and
-    ``ltca run``'s next steps) judges a pressure against — σ_Hlim ``allowable`` [MPa] and
-    its static strength ``allowable * static_life_factor`` [MPa].
+    that material's name: the endurance limit σ_Hlim ``allowable`` [MPa] the
+    ``flank_pressure`` attention judges a pressure against (its FAIL limit, the static
+    strength, is :func:`flank_static_strength`'s, as ``edge_pressure``'s and ``ltca
+    duty-cycle``'s).
 
     Parameters
     ----------
@@ -354,17 +360,52 @@ def weaker_contact_curve(lt: xr.Dataset) -> tuple[object, str] | None:
     return weak, names[curves.index(weak)]
 
 
+def flank_static_strength(lt: xr.Dataset) -> StaticContactStrength | None:
+    """The static contact strength of an analysis' weaker member at the verdict's grade
+    :data:`GRADE`: the limit of the ``flank_pressure`` FAIL, of ``edge_pressure``, of
+    ``ltca run``'s next steps and of the bearing development
+    (:func:`contact.load_capacity.durability.weaker_static_strength` of the ``/ltca``
+    materials; ``ltca duty-cycle`` writes the same per member as ``contact_static_strength``).
+
+    Parameters
+    ----------
+    lt : xarray.Dataset
+        ``/ltca`` with the attributes ``material_pinion`` / ``material_gear``.
+
+    Returns
+    -------
+    contact.load_capacity.durability.StaticContactStrength or None
+        σ_Hlim·Z_NT,stat·Z_W·Z_X [MPa] (2400 MPa for the bundled case-carburised steel at
+        MQ) and its factors; None where neither attribute is set.
+
+    Raises
+    ------
+    InputError
+        A material or grade the table does not know.
+
+    Notes
+    -----
+    Source: ISO 6336-2:2019 Method B at the static stress (Z_L Z_v Z_R = 1), ISO 6336-5
+    (σ_Hlim), ISO 10300-2:2014 cl. 8 (Z_X, Z_W);
+    :mod:`contact.load_capacity.durability.static_strength` says why not Z_K, Z_Hyp or
+    S_H,min.
+    """
+    from contact.load_capacity.durability import weaker_static_strength
+
+    return weaker_static_strength((lt.attrs.get("material_pinion"),
+                                   lt.attrs.get("material_gear")), GRADE)
+
+
 def _flank_static_torques(lt: xr.Dataset | None) -> frozenset:
     """The torques at which the LTCA's flank peak pressure exceeds the static strength of
     the weaker member (as :func:`_flank_pressure` judges it): the rating's finding there
     does not offer a finite life."""
     if lt is None or "pressure_max_flank" not in lt:
         return frozenset()
-    found = weaker_contact_curve(lt)
+    found = flank_static_strength(lt)
     if found is None:
         return frozenset()
-    weak = found[0]
-    static = weak.allowable * weak.static_life_factor
+    static = found.strength
     return frozenset(float(t) for t, p in zip(lt["torque"].values,
                                               flank_peak(lt).pressure, strict=True)
                      if np.isfinite(p) and p > static)
@@ -386,7 +427,8 @@ def _flank_pressure(lt: xr.Dataset, static_torques: frozenset = frozenset()
     if found is None:
         return []
     weak, mat = found
-    limit, static = weak.allowable, weak.allowable * weak.static_life_factor
+    strength = flank_static_strength(lt)
+    limit, static = weak.allowable, strength.strength
     out = []
     fp = flank_peak(lt)
     for t, p, raw, n in zip(lt["torque"].values, fp.pressure, fp.dataset, fp.corner_curves,
@@ -399,9 +441,9 @@ def _flank_pressure(lt: xr.Dataset, static_torques: frozenset = frozenset()
         if p > static:
             out.append(Finding("fail", "flank_pressure",
                                f"flank peak pressure {p:.0f} MPa at {_t(t)}{left} above the "
-                               f"static strength {static:.0f} MPa (σ_Hlim {limit:.0f} MPa × "
-                               f"Z_NT {weak.static_life_factor:g}, {mat}, grade {GRADE}): "
-                               "no life at this torque"))
+                               f"static strength {static:.0f} MPa ({strength.factors}, "
+                               f"{strength.material}, grade {GRADE}): no life at this "
+                               "torque"))
         elif float(t) in static_torques:  # the rating's finding says what life there is
             out.append(Finding("attention", "flank_pressure",
                                f"flank peak pressure {p:.0f} MPa at {_t(t)}{left} above "
@@ -543,11 +585,10 @@ def _edge_pressure(lt: xr.Dataset) -> list[Finding]:
     spiral bevel 20x24 at Σ 100°'s coast bearing at 169.4 N·m (issue 71, round 17) peaked
     2488 MPa on its pinion edge above 2400 MPa and its coast verdict said only the edge's
     share."""
-    found = weaker_contact_curve(lt) if "pressure_max_edge" in lt else None
+    found = flank_static_strength(lt) if "pressure_max_edge" in lt else None
     if found is None:
         return []
-    weak, mat = found
-    static = weak.allowable * weak.static_life_factor
+    static = found.strength
     cap = float(lt.attrs.get("edge_pressure_limit_MPa", np.nan))
     below_cap = (lambda p: p < cap * (1.0 - 1e-9)) if np.isfinite(cap) else (lambda p: True)
     shares = _edge_shares(lt)
@@ -573,11 +614,11 @@ def _edge_pressure(lt: xr.Dataset) -> list[Finding]:
     limit = f"; the edges' limit {cap:.0f} MPa" if np.isfinite(cap) else ""
     return [Finding("attention", "edge_pressure",
                     f"edge peak pressure above the flank's static strength {static:.0f} MPa "
-                    f"(σ_Hlim {weak.allowable:.0f} MPa × Z_NT {weak.static_life_factor:g}, "
-                    f"{mat}, grade {GRADE}{limit}): {'; '.join(where)}; the S–N curve is "
-                    "of flank contact (no damage counted), but the flank under the edge "
-                    "carries more than a flank contact survives: a relief or an edge break "
-                    "takes the load off the edge")]
+                    f"({found.factors}, {found.material}, grade {GRADE}{limit}): "
+                    f"{'; '.join(where)}; the S–N curve is of flank contact (no damage "
+                    "counted), but the flank under the edge carries more than a flank "
+                    "contact survives: a relief or an edge break takes the load off the "
+                    "edge")]
 
 
 def _certification(lt: xr.Dataset) -> list[Finding]:
@@ -1080,8 +1121,8 @@ def _duty_static(ds: xr.Dataset) -> tuple[list[Finding], list[str]] | None:
             findings.append(Finding(
                 "fail", "static",
                 f"flank peak pressure {p[i]:.0f} MPa in bin {i} ({_t(torque[i])}){left} "
-                f"above the static contact strength {strength[i]:.0f} MPa (σ_Hlim × Z_NT "
-                "at the S–N curve's static end, the weaker member): no life there"))
+                f"above the static contact strength {strength[i]:.0f} MPa (σ_Hlim × "
+                "Z_NT,stat of the weaker member, ltca run's limit): no life there"))
         elif n[i] and np.isfinite(raw[i]) and raw[i] > strength[i]:
             notes.append(f"static: flank peak pressure {p[i]:.0f} MPa in bin {i} "
                          f"({_t(torque[i])}), within the static contact strength "
@@ -1133,8 +1174,8 @@ def _duty_edge_pressure(ds: xr.Dataset) -> list[Finding] | None:
     each = "; ".join(f"{p[i]:.0f} MPa in bin {i} ({_t(torque[i])}, static strength "
                      f"{strength[i]:.0f} MPa)" for i in bad)
     return [Finding("attention", "edge_pressure",
-                    f"edge peak pressure above the flank's static strength (σ_Hlim × Z_NT at "
-                    f"the S–N curve's static end, the weaker member) in {bad.size} of "
+                    f"edge peak pressure above the flank's static strength (σ_Hlim × "
+                    f"Z_NT,stat of the weaker member, ltca run's limit) in {bad.size} of "
                     f"{p.size} bins: {each}; the S–N curve is of flank contact (no damage "
                     "counted), but the flank under the edge carries more than a flank "
                     "contact survives: a relief or an edge break takes the load off the "
