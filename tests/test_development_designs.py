@@ -147,7 +147,7 @@ RUN_FAILS: dict[str, str] = {
 #: developed again at its own design torque (docs/own_gear_set.md, "One design torque that
 #: holds"): "coast_lte60" LTE p-p <= 60 urad on the coast flank at its light and design
 #: torque, "duty" the default duty cycle (`ltca duty-cycle CASE`, the illustrative
-#: spectrum up to the design torque) not FAIL on pitting. Designs not listed were not
+#: spectrum up to the design torque) not FAIL (any check). Designs not listed were not
 #: re-measured.
 COAST_DONE_WHEN: dict[str, set[str]] = {
     "eaxle_hypoid_11x39_s80": {"coast_lte60", "duty"},
@@ -250,6 +250,10 @@ def test_user_design_synthesised_developed_run_and_rated(basic, tmp_path, capsys
         nc_duty = tmp_path / f"{basic.stem}_duty.nc"
         main(["duty-cycle", str(case_path), "--scheduler", "synchronous", "-o", str(nc_duty)])
         duty = xr.open_datatree(nc_duty)
-        pitting = [f.reason for f in verdict(duty).findings
-                   if f.severity == "fail" and f.check == "damage" and "pitting" in f.reason]
-        assert not pitting, pitting
+        # issue 71's Done when: "a duty cycle at the design torque not FAIL" — every
+        # check of the duty cycle's verdict, not only the pitting damage (since static79
+        # the duty cycle judges a bin's flank and edges against ltca run's static strength,
+        # so a bin above it is a FAIL this assertion must see)
+        fails = [f"{f.check}: {f.reason}" for f in verdict(duty).findings
+                 if f.severity == "fail"]
+        assert not fails, fails
