@@ -242,3 +242,21 @@ def test_durability_table_equals_the_file(run_files):
         for key in ("iso_scuffing_safety", "iso_contact_temperature_max",
                     "iso_lengthwise_scuffing_safety", "iso_lengthwise_contact_temperature_max"):
             assert cells[key].text == "–", key
+
+
+def test_gear_torque_of_an_industrial_pair_has_no_exponent():
+    """The page's operating table gives the gear torques to four significant digits
+    without an exponent, as the pinion's: round 19's industrial 24x36 (m_et 13 mm) at its
+    ISO capacity 10440 N·m read "gear torque 2349, 1.566e+04 N·m" (issue 71)."""
+    import xarray as xr
+
+    from contact.plots.report import _operating
+
+    pinion = np.array([1566.0, 10440.0])
+    lt = xr.Dataset(coords={"torque": pinion, "gear_torque": ("torque", pinion * 36 / 24)})
+    rows = dict(_operating(xr.DataTree(), lt, None, xr.Dataset()))
+    assert rows["pinion torque T_p"] == "1566, 10440 N·m"
+    assert rows["gear torque"] == "2349, 15660 N·m (lossless)"
+    small = xr.Dataset(coords={"torque": [0.3], "gear_torque": ("torque", [0.3 * 41 / 14])})
+    assert dict(_operating(xr.DataTree(), small, None, xr.Dataset()))["gear torque"] == (
+        "0.8786 N·m (lossless)")

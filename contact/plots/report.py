@@ -468,8 +468,12 @@ def _operating(tree: xr.DataTree, lt, fr, eo) -> list[tuple[str, str]]:
         rows.append(("pinion torque T_p", ", ".join(f"{t:g}" for t in lt["torque"].values)
                      + " N·m"))
         if "gear_torque" in lt.coords:
-            rows.append(("gear torque", ", ".join(f"{t:.4g}" for t in lt["gear_torque"].values)
-                         + " N·m (lossless)"))
+            # four significant digits, never an exponent: an industrial pair's 15660 N·m
+            # read "1.566e+04" beside the pinion's 10440 (issue 71, round 19)
+            rows.append(("gear torque", ", ".join(
+                np.format_float_positional(float(t), precision=4, unique=False,
+                                           fractional=False, trim="-")
+                for t in lt["gear_torque"].values) + " N·m (lossless)"))
     rows.append(("misalignment (ΔE, ΔP, ΔG, ΔΣ)",
                  misalignment_text(tree.attrs) or misalignment_text(eo.attrs) or "not recorded"))
     src = lt if lt is not None else eo
