@@ -165,6 +165,7 @@ from contact.optimize.development_evaluate import (  # noqa: F401
 )
 from contact.optimize.development_lte_capacity import lte_capacity
 from contact.optimize.development_pitting import checked_pitting
+from contact.optimize.development_range_lte import range_record
 from contact.optimize.development_result import (  # noqa: F401
     COAST_STATUS,
     STATIC_MARGIN,
@@ -596,7 +597,7 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                                coast_cap.reason if coast_cap is not None else "",
                                lte_reach=setup.get("lte_reach", {}).get(
                                    tuple(float(t) for t in setup["torques"])),
-                               tolerant_torque=upto)
+                               tolerant_torque=upto, lte_range=range_record(setup))
     say(result.headline())
     return result
 
