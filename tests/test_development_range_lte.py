@@ -97,9 +97,9 @@ def test_a_peak_between_the_torques_is_seen_and_acted_on(monkeypatch):
 def test_a_variant_is_judged_on_its_largest_lte_over_the_range(monkeypatch):
     """The keep rule's ``better`` on a peak between the torques: the largest LTE over the
     range, not the rank at the two torques."""
-    asked, law = _truck()
+    _asked, law = _truck()
     _, fake = seen_designs(law)
-    targets, setup, chosen = stand_in(monkeypatch, fake, TORQUES)
+    _targets, setup, chosen = stand_in(monkeypatch, fake, TORQUES)
     start = _start(chosen)
     better = drl.range_better(setup, None)
     lower_both = dataclasses.replace(chosen(dict(WRITTEN) | {"path_angle": -66.25}),
@@ -124,7 +124,7 @@ def test_within_the_limit_between_no_design_is_tried(monkeypatch):
     """The LTE over the range within 60 urad: one analysis of the two torques between,
     recorded, no design tried, no line said."""
     asked, law = _truck({-60.0: (38.5, 55.0, 45.0, 38.6)})
-    seen, fake = seen_designs(law)
+    _seen, fake = seen_designs(law)
     targets, setup, chosen = stand_in(monkeypatch, fake, TORQUES)
     start = _start(chosen)
     asked.clear()
@@ -142,7 +142,7 @@ def test_within_the_limit_between_no_design_is_tried(monkeypatch):
 def test_above_the_limit_at_the_design_torque_the_design_torque_steps_act(monkeypatch):
     """61 urad at the design torque: the design torque's steps (the path LTE step among
     them) act on it; this step records the range and tries nothing."""
-    asked, law = _truck({-60.0: (38.5, 65.8, 45.0, 61.0)})
+    _asked, law = _truck({-60.0: (38.5, 65.8, 45.0, 61.0)})
     seen, fake = seen_designs(law)
     targets, setup, chosen = stand_in(monkeypatch, fake, TORQUES)
     start = _start(chosen)
@@ -155,7 +155,7 @@ def test_above_the_limit_at_the_design_torque_the_design_torque_steps_act(monkey
 
 
 def test_an_analysis_that_fails_is_not_judged(monkeypatch):
-    asked, law = _truck()
+    _asked, law = _truck()
 
     def failing(case, torques, misalignment=None, **kw):
         if len(torques) and tuple(torques) != TORQUES:
@@ -173,7 +173,7 @@ def test_an_analysis_that_fails_is_not_judged(monkeypatch):
 def test_the_check_judges_the_range_last(monkeypatch):
     """check_steps ends on the step (the design its steps kept judged between the
     torques): its record is the design returned."""
-    asked, law = _truck()
+    _asked, law = _truck()
     _, fake = seen_designs(law)
     targets, setup, chosen = stand_in(monkeypatch, fake, TORQUES)
     start = _start(chosen)
@@ -205,3 +205,62 @@ def test_the_lte_capacity_acts_on_a_fail_level_peak_between(monkeypatch):
     assert setup["lowered"] and got is not start
     assert float(setup["torques"][1]) < GRID[1]
     assert "its LTE p-p was 140 urad" in lines[0]
+
+
+#: the ellipse's rows at the path's bound (-80 deg): light-load pattern length [1] and the
+#: LTE p-p at GRID [urad] (the shape of the truck 8x41's measured rows, docs/synthesis.md
+#: "The LTE between the development's torques": 0.4135 / 0.445 / 0.46 -> 66 / 61 / 57)
+ELLIPSES = {0.6: (0.58, (38.5, 65.8, 45.0, 38.6)), 0.65: (0.62, (30.0, 61.0, 47.0, 26.0)),
+            0.7: (0.65, (26.0, 57.0, 41.0, 21.0)), 0.75: (0.68, (21.0, 55.0, 35.0, 16.0))}
+
+
+def _at_bound(rows=ELLIPSES):
+    """The stand-in's law through ``rows`` (by the design's ellipse)."""
+    def law(case, torques, misalignment=None, **kw):
+        ts = tuple(float(t) for t in torques) or TORQUES
+        length, curve = rows[round(float(case["ellipse_length"]), 2)]
+        m = {k: np.resize(v, len(ts)) for k, v in _metrics().items()}
+        m["pattern_toe_u"] = np.resize([0.5 - length / 2, 0.1], len(ts))
+        m["pattern_heel_u"] = np.resize([0.5 + length / 2, 0.9], len(ts))
+        m["lte_peak_to_peak"] = np.asarray(np.interp(ts, GRID, curve), float)
+        return m, (0.0, 1.0, 0.0, 1.0, 2400.0)
+
+    return law
+
+
+def test_at_the_path_bound_a_longer_ellipse_buys_the_range_with_the_length(monkeypatch):
+    """The path at its bound (-80 deg: the path step tries nothing): the ellipse 0.05 longer
+    lowers the peak to 61 urad but gives up the pattern's length (0.62 > 0.6) and stays
+    above the limit: not kept; 0.1 longer, 57 urad within the limit, the length given up
+    alone (as the long bearing buys the LTE with it): kept, and the step stops there."""
+    seen, fake = seen_designs(_at_bound())
+    targets, setup, chosen = stand_in(monkeypatch, fake, TORQUES)
+    start = chosen(dict(WRITTEN) | {"path_angle": -80.0})
+    start = dataclasses.replace(start, case=dict(start.values))
+    assert start.full[2]
+    seen.clear()
+    lines: list[str] = []
+    got = drl.checked_range_lte(start, targets, setup, None, lines.append,
+                                lambda v: dict(v))
+    tried = list(dict.fromkeys(s["ellipse_length"] for s in seen))
+    assert tried == [0.6, 0.65, 0.7]  # the design itself between, then two; not 0.75
+    assert "  not kept: the longer ellipse misses length" in lines
+    assert got.stage == drl.STAGE and got.values["ellipse_length"] == 0.7
+    assert [k for k, v in got.full[1].items() if v > 0.0] == ["length"]
+    assert drl.range_record(setup)["peak"] == pytest.approx(57.0)
+    assert "kept on its LTE between the torques" in lines[-1]
+
+
+def test_no_ellipse_within_the_limit_keeps_the_design(monkeypatch):
+    """Where no longer ellipse keeps the limit over the range, none that gives up a met
+    target is kept: the design stays as it was, its peak recorded for synthesize's note."""
+    rows = {k: (0.62 if k > 0.6 else 0.58, (38.5, 65.8, 45.0, 38.6) if k == 0.6 else
+                (30.0, 62.0 - 10 * (k - 0.6), 47.0, 26.0)) for k in ELLIPSES}
+    _, fake = seen_designs(_at_bound(rows))
+    targets, setup, chosen = stand_in(monkeypatch, fake, TORQUES)
+    start = chosen(dict(WRITTEN) | {"path_angle": -80.0})
+    start = dataclasses.replace(start, case=dict(start.values))
+    got = drl.checked_range_lte(start, targets, setup, None, lambda s: None,
+                                lambda v: dict(v))
+    assert got is start
+    assert drl.range_record(setup)["peak"] == pytest.approx(65.8)

@@ -18,14 +18,17 @@ spiral bevel 27x34 of benchmarks/data/unseen_designs, 35 / 52 µrad at 127.8 / 8
 step, does so for the design the steps kept and, where its LTE is above the verdict's limit
 between the torques alone (at both its own torques within it: above it there, the design
 torque's LTE steps ran on it), gives it the design torque's path step
-(:func:`~contact.optimize.development_path_lte.checked_path_lte`) on that peak, each design
-judged on its largest LTE over the range (:func:`range_better`). The record
+(:func:`~contact.optimize.development_path_lte.checked_path_lte`) on that peak, then a
+longer ellipse (:data:`ELLIPSE_STEPS`), each design judged on its largest LTE over the
+range (:func:`range_better`; the pattern's length may be given up for a design whose LTE
+over the range keeps the limit, as the long bearing buys the LTE with it). The record
 (:func:`range_record`) is what the design torque lowered for a FAIL-level LTE
 (:func:`~contact.optimize.development_lte_capacity.lte_capacity`) reads too.
 
 Public names
 ------------
-RANGE_KEY, range_lte, range_peak, range_better, range_record, checked_range_lte
+RANGE_KEY, STAGE, ELLIPSE_STEPS, range_lte, range_peak, range_better, range_record,
+checked_range_lte
 """
 
 from __future__ import annotations
@@ -40,15 +43,22 @@ import numpy as np
 from contact.ltca.lte_range import LTE_TORQUES, bisected, lte_range_torques
 from contact.optimize import development_evaluate as evaluation
 from contact.optimize.development_evaluate import CHECK_LTCA, KeptTeeth, bearing_key
-from contact.optimize.development_keep import ranks_better
+from contact.optimize.development_keep import (
+    kept_why,
+    lost_but_length,
+    lost_targets,
+    ranks_better,
+)
+from contact.optimize.development_lte_steps import ELLIPSE_STEP
 from contact.optimize.development_matched_te import lte_ends
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import DevelopmentTargets
+from contact.optimize.development_variant import said_variant
 from geometry.case import Case
 from geometry.core.errors import raise_if_interrupted
 
-__all__ = ["RANGE_KEY", "checked_range_lte", "range_better", "range_lte", "range_peak",
-           "range_record"]
+__all__ = ["ELLIPSE_STEPS", "RANGE_KEY", "STAGE", "checked_range_lte", "range_better",
+           "range_lte", "range_peak", "range_record"]
 
 log = logging.getLogger("contact.optimize.development")
 
@@ -63,6 +73,25 @@ _MEMO = "lte_range_memo"
 #: two LTE peaks closer than this [µrad] are one (a variant judged on its peak must lower
 #: it by more)
 _SAME_PEAK = 0.05
+
+#: the check stage of the step's longer ellipses (:attr:`DevelopmentEvaluation.stage`)
+STAGE = "range lte"
+
+#: the ellipse's lengthenings :func:`checked_range_lte` tries in turn, in
+#: :data:`~contact.optimize.development_lte_steps.ELLIPSE_STEP` (0.05 of the face) from the
+#: design's, until the LTE over the range keeps the limit. Measured
+#: (``benchmarks/development_levers.py --check --at``, the written cases, 2026-11-27;
+#: largest LTE p-p of the lte_range torques, light-load pattern length): the truck hypoid
+#: 8x41 (path −80°, at its bound) ellipse 0.4135 / 0.43 / 0.445 / 0.46 / 0.48: 66 / 64 / 61
+#: / 57 / 55 µrad, 0.58 / 0.62 / 0.62 / 0.65 / 0.68 long, no other target lost; its tip
+#: relief 13.7-20.5 µm, root relief 25 µm, tip-relief start 0.5-0.7, te_level 45 µrad, no
+#: profile crowning: 53-66 µrad, each of the lighter reliefs and the crowning losing the
+#: edge and plastic targets; the spiral bevel 27x34 (path −80°) ellipse 0.625 / 0.675 / 0.75:
+#: 77 / 67 / 55 µrad (LTE 35 / 53, 33 / 47, 30 / 39 µrad at its light and design torque),
+#: 0.55 / 0.62 / 0.68 long; its tip relief 6 / 18 µm, root relief 40 µm, tip-relief start
+#: 0.95, te_level 25: 68-79 µrad (docs/synthesis.md, "The LTE between the development's
+#: torques")
+ELLIPSE_STEPS = (1, 2, 3)
 
 
 def _limit() -> float:
@@ -272,6 +301,50 @@ def _curve(found: tuple[tuple[float, ...], tuple[float, ...]]) -> str:
             f"{' / '.join(f'{t:.4g}' for t in found[0])} N m")
 
 
+def _longer_ellipse(start: DevelopmentEvaluation, targets: DevelopmentTargets,
+                    setup: Mapping[str, Any], teeth: KeptTeeth | None,
+                    say: Callable[[str], None],
+                    placed: Callable[[Mapping[str, float]], Case], limit: float
+                    ) -> DevelopmentEvaluation:
+    """:func:`checked_range_lte`'s second lever: the ellipse longer by each of
+    :data:`ELLIPSE_STEPS` × :data:`~contact.optimize.development_lte_steps.ELLIPSE_STEP` in
+    turn from ``start``'s (clipped to its bound), until the LTE over the range keeps
+    ``limit``; each kept by the check's one rule with ``better`` judged on the LTE over the
+    range (:func:`range_better`) and, where its LTE over the range keeps the limit, the
+    pattern's length may be given up (:func:`~contact.optimize.development_keep.
+    lost_but_length`, as the long bearing buys the LTE with it), else no met target
+    (:func:`~contact.optimize.development_keep.lost_targets`)."""
+    if ("ellipse_length" not in targets.variables or "ellipse_length" not in start.values):
+        return start
+    lo, hi = (float(x) for x in targets.variables["ellipse_length"])
+    now = float(start.values["ellipse_length"])
+    better = range_better(setup, teeth, limit)
+
+    def lost(b: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:
+        within = range_peak(range_lte(e, setup, teeth))[0] <= limit
+        return lost_but_length(b, e) if within else lost_targets(b, e)
+
+    best, tried = start, {now}
+    for k in ELLIPSE_STEPS:
+        x = round(float(np.clip(now + k * ELLIPSE_STEP, lo, hi)), 4)
+        if x in tried:
+            continue
+        tried.add(x)
+        peak, at = range_peak(range_lte(best, setup, teeth))
+        e = said_variant(start, dict(start.values) | {"ellipse_length": x}, STAGE,
+                         f"with the ellipse {x:.3g} (its LTE {peak:.0f} urad at {at:.4g} N m "
+                         f"between the torques above {limit:g})", targets, setup, teeth, say,
+                         placed)
+        if e is None:
+            continue
+        if not kept_why(best, e, targets, setup, teeth, say, "the longer ellipse",
+                        better=better, lost=lost):
+            best = e
+        if range_peak(range_lte(best, setup, teeth))[0] <= limit:
+            break
+    return best
+
+
 def checked_range_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                       setup: Mapping[str, Any], teeth: KeptTeeth | None,
                       say: Callable[[str], None],
@@ -279,8 +352,11 @@ def checked_range_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     """The check's last step: the kept drive design's LTE judged between the development's
     torques as ``ltca run`` judges it (:func:`range_lte`), and where it exceeds the
     verdict's limit there alone, the path turned towards the profile on that peak
-    (:func:`~contact.optimize.development_path_lte.checked_path_lte`, each design judged on
-    its largest LTE over the range, :func:`range_better`).
+    (:func:`~contact.optimize.development_path_lte.checked_path_lte`), then, where it is
+    still above, the ellipse longer (:data:`ELLIPSE_STEPS`: at most three designs, until
+    the limit is kept), each design judged on its largest LTE over the range
+    (:func:`range_better`), the pattern's length given up only by a design that keeps the
+    limit over the range.
 
     Parameters
     ----------
@@ -324,6 +400,8 @@ def checked_range_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         " ltca run's lte_range torques)")
     kept = checked_path_lte(best, targets, setup, teeth, say, placed, peak=(peak, at),
                             better=range_better(setup, teeth, limit))
+    if not range_peak(range_lte(kept, setup, teeth))[0] <= limit:
+        kept = _longer_ellipse(kept, targets, setup, teeth, say, placed, limit)
     if kept is not best:
         again = range_lte(kept, setup, teeth)
         if again is not None:
