@@ -328,7 +328,8 @@ def between_text(found: DeflectionLTE) -> str | None:
             f"the light {found.torques[0]:.4g} and the design torque {found.torques[-1]:.4g} "
             f"N m, above the limit {found.limit:g} urad it keeps at both ({curve}, ltca "
             "run's lte_range torques): `ltca run`'s verdict finds it there; the "
-            "development's check judged its designs between the torques too, turned the path "
-            "towards the profile and lengthened the ellipse on the peak: no design it tried "
-            "kept the limit there with its other targets (docs/synthesis.md, 'The LTE "
-            "between the development's torques')")
+            "development's check judged its designs between the torques too (the path turned "
+            "towards the profile where its bound allows, the ellipse lengthened, "
+            "contact.optimize.development_range_lte): no design it tried kept the limit "
+            "there with its other targets and its mounting tolerance (docs/synthesis.md, "
+            "'The LTE between the development's torques')")

@@ -280,6 +280,13 @@ def range_record(setup: Mapping[str, Any]) -> dict[str, Any] | None:
     Raises
     ------
     Nothing.
+
+    Notes
+    -----
+    Source: ``ltca run``'s ``lte_range`` step (:mod:`contact.ltca.lte_range`, issue 71);
+    read by :func:`~contact.optimize.development_lte_capacity.lte_capacity` and, through
+    :attr:`~contact.optimize.development_result.DevelopmentResult.lte_range`, by ``ltca
+    synthesize``'s note.
     """
     key = tuple(float(t) for t in setup["torques"])
     return setup.get(RANGE_KEY, {}).get(key) if isinstance(setup, Mapping) else None
