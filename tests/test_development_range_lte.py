@@ -264,3 +264,20 @@ def test_no_ellipse_within_the_limit_keeps_the_design(monkeypatch):
                                 lambda v: dict(v))
     assert got is start
     assert drl.range_record(setup)["peak"] == pytest.approx(65.8)
+
+
+def test_the_result_carries_the_record_of_the_design_written_alone(monkeypatch):
+    """The development's result carries the check's record only where it is of the drive
+    design written at the final torques: a step after the check's (the mounting tolerance,
+    the pitting step) that changed the design leaves synthesize's note to analyse the
+    written case itself."""
+    from contact.optimize.development import _judged
+
+    _, law = _truck({-60.0: (38.5, 55.0, 45.0, 38.6)})
+    targets, setup, chosen = stand_in(monkeypatch, law, TORQUES)
+    start = _start(chosen)
+    drl.checked_range_lte(start, targets, setup, None, lambda s: None, lambda v: dict(v))
+    assert _judged(setup, start)["peak"] == pytest.approx(55.0)
+    later = dataclasses.replace(start, values=dict(WRITTEN) | {"tip_relief": 30.0})
+    assert _judged(setup, later) is None
+    assert _judged(dict(setup, torques=[250.0, 1668.0]), start) is None

@@ -400,7 +400,7 @@ def checked_range_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     _record(setup, best, found)
     limit = _limit()
     peak, at = range_peak(found)
-    if not peak > limit or not max(lte_ends(best)) <= limit:
+    if not peak > limit or not all(x <= limit for x in lte_ends(best)):  # NaN: not run
         return best
     say(f"  design {best.index + 1}: its drive LTE p-p {peak:.1f} urad at {at:.4g} N m, "
         f"between the light and the design torque, is above {limit:g} urad ({_curve(found)};"
