@@ -111,7 +111,14 @@ def test_the_verdicts_lte_finding_states_the_deflection_share():
     assert "the LTE 10.8 % of it, 6.5 % within the limit" in finding.reason
 
 
-def test_synthesize_note_only_above_the_limit_at_the_design_torque(monkeypatch):
+def test_synthesize_note_only_where_the_check_did_not_judge_the_range_within(monkeypatch):
+    """The lock changed (issue 71, "LTE p-p <= 60 urad at every torque"): the note was made
+    only where the design torque's LTE was above 60 urad, so that the truck hypoid 8x41
+    (38.5 / 38.6 urad at 254.3 / 1696 N m, 65.8 at 734.9 N m between) and the spiral bevel
+    27x34 (35 / 52 at 127.8 / 852.2, 77.3 at 369.3 N m) were written without one. Now the
+    written case is analysed also where the development's check judged its LTE above the
+    limit between the torques (its record ``lte_range``), or did not judge it at the
+    written torques (no record); never where it judged it within the limit there."""
     from types import SimpleNamespace
 
     import contact.optimize.development_deflection as dd
@@ -121,9 +128,31 @@ def test_synthesize_note_only_above_the_limit_at_the_design_torque(monkeypatch):
         raise AssertionError("analysed where the LTE keeps the limit")
 
     monkeypatch.setattr(dd, "analysed", fail)
-    within = SimpleNamespace(best=SimpleNamespace(metrics={"lte_peak_to_peak": [70.0, 38.0]}),
-                             torque=(36.9, 246.5))
-    assert _deflection_note(object(), within) is None  # the 13x39's case: never analysed
+    metrics = {"lte_peak_to_peak": [70.0, 38.0]}
+    within = SimpleNamespace(best=SimpleNamespace(metrics=metrics), torque=(36.9, 246.5),
+                             lte_range={"peak": 59.9, "at": 140.1})
+    assert _deflection_note(object(), within) is None  # judged within: never analysed
+    # the truck 8x41's numbers: judged above the limit between the torques by the check
+    truck = DeflectionLTE((254.3, 734.9, 1215.5, 1696.0), (38.5, 65.8, 41.0, 38.6),
+                          (300.0, 700.0, 1000.0, 1300.0), 60.0)
+    asked = []
+
+    def between(case, light, design):
+        asked.append((light, design))
+        return truck
+
+    monkeypatch.setattr(dd, "analysed", between)
+    judged = SimpleNamespace(best=SimpleNamespace(metrics={"lte_peak_to_peak": [38.5, 38.6]}),
+                             torque=(254.3, 1696.0), lte_range={"peak": 65.8, "at": 734.9})
+    text = _deflection_note(object(), judged)
+    assert asked == [(254.3, 1696.0)]
+    assert text == dd.between_text(truck)
+    assert "65.8 urad at 734.9 N m, between the light 254.3 and the design torque 1696" in text
+    assert "above the limit 60 urad" in text
+    # not judged at the written torques (changed after the check's steps): analysed
+    unjudged = SimpleNamespace(best=judged.best, torque=(254.3, 1696.0), lte_range=None)
+    assert _deflection_note(object(), unjudged) == text
+    assert len(asked) == 2
     found = DeflectionLTE(TORQUES_16, LTE_16, DEFLECTION_16, 60.0)
     seen = []
 
@@ -183,3 +212,66 @@ def test_the_verdicts_lte_finding_names_the_torque_within_the_limit():
     # one torque (the single-torque run): nothing new said
     (single,) = _lte(ds.isel(torque=[0]), None, 60.0)
     assert "stays within" not in single.reason
+
+
+def test_an_uncertified_solve_is_nan_never_a_number():
+    """As ``ltca run``'s lte_range step (contact.ltca.lte_range: an uncertified solve NaN):
+    a torque where a roll position has no certified contact solution has no LTE to judge."""
+    ute = [0.0, 0.0, 0.0, 0.0]
+    ds = _ltca([100.0, 300.0], [[200.0, 240.0, 210.0, 220.0], [500.0, 600.0, 520.0, 540.0]],
+               ute)
+    ds["found"] = (("torque", "roll"), np.asarray([[1, 1, 1, 1], [1, 0, 1, 1]], np.int8))
+    d = deflection_lte(ds, limit=60.0)
+    assert d.lte[0] == pytest.approx(40.0)
+    assert math.isnan(d.lte[1])
+    assert d.deflection[1] == pytest.approx(540.0)  # the deflection is still the mean
+    # every roll certified: the numbers as before
+    ds["found"] = (("torque", "roll"), np.ones((2, 4), np.int8))
+    assert deflection_lte(ds, limit=60.0).lte == pytest.approx((40.0, 100.0))
+
+
+def test_analysed_says_nan_where_a_torque_is_not_certified(monkeypatch):
+    """:func:`analysed` (synthesize's note) judges the torques of ``ltca run``'s step with
+    its NaN: the torque whose solve is not certified is NaN, the crossing not bisected past
+    it (contact.ltca.lte_range.bisected: a value up to the crossing not finite)."""
+    import contact.pipeline as pipeline
+    from contact.optimize.development_deflection import analysed
+
+    lte_of = {100.0: 40.0, 200.0: 50.0, 300.0: 100.0, 400.0: 45.0}
+    calls = []
+
+    def fake(case, torques, **kw):
+        calls.append(list(torques))
+        rows = [[t, t + lte_of[round(t, 6)], t, t] for t in torques]
+        ds = _ltca(torques, rows, [0.0] * 4)
+        ds["found"] = (("torque", "roll"),
+                       np.asarray([[0 if round(t) == 200 else 1] * 4 for t in torques],
+                                  np.int8))
+        return xr.DataTree.from_dict({"/ltca": ds})
+
+    monkeypatch.setattr(pipeline, "run_analysis", fake)
+    found = analysed(object(), 100.0, 400.0)
+    assert calls == [[100.0, 200.0, 300.0, 400.0]]  # no bisection past a NaN
+    assert found.torques == (100.0, 200.0, 300.0, 400.0)
+    assert found.lte[0] == pytest.approx(40.0) and math.isnan(found.lte[1])
+    assert found.lte[2:] == pytest.approx((100.0, 45.0))
+
+
+def test_the_between_note_in_numbers_and_where_it_is_silent():
+    # the 27x34's numbers (benchmarks/data/unseen_designs, 2026-11-27): 77.3 urad at
+    # 369.3 N m between 35 and 52 urad at 127.8 and 852.2 N m
+    found = DeflectionLTE((127.8, 369.3, 610.7, 852.2), (35.0, 77.3, 58.0, 52.0),
+                          (100.0, 300.0, 500.0, 700.0), 60.0)
+    text = deflection_text(found)
+    assert text is None  # the design torque within the limit: no deflection note
+    from contact.optimize.development_deflection import between_text
+
+    said = between_text(found)
+    assert "77.3 urad at 369.3 N m, between the light 127.8 and the design torque 852.2" in said
+    assert "LTE p-p 35 / 77 / 58 / 52 urad at 127.8 / 369.3 / 610.7 / 852.2 N m" in said
+    # silent: within at every torque, above at the design torque (deflection_text's), or
+    # at the light torque (its own finding), or two torques only
+    assert between_text(found._replace(lte=(35.0, 59.0, 58.0, 52.0))) is None
+    assert between_text(found._replace(lte=(35.0, 77.3, 58.0, 61.0))) is None
+    assert between_text(found._replace(lte=(61.0, 77.3, 58.0, 52.0))) is None
+    assert between_text(DeflectionLTE((1.0, 2.0), (30.0, 40.0), (1.0, 2.0), 60.0)) is None

@@ -472,13 +472,22 @@ def _with_record(case, record):
 def _deflection_note(case, development) -> str | None:
     """What sets the written drive flank's LTE at the design torque, where it exceeds the
     verdict's limit: the teeth's mean deflection, the LTE's share of it and the torque up
-    to which the written bearing keeps the limit
-    (:mod:`contact.optimize.development_deflection`: the written case analysed at its
-    :data:`~contact.optimize.development_deflection.LTE_TORQUES` torques, ``ltca run``'s
-    sampling); None where it keeps the limit at the design torque or the case cannot be
-    analysed (said in the log)."""
+    to which the written bearing keeps the limit; where it keeps the limit at the light
+    and the design torque and exceeds it between them, that peak, its torque and the
+    limit (:mod:`contact.optimize.development_deflection`: the written case analysed at
+    ``ltca run``'s ``lte_range`` torques, its sampling); None where it keeps the limit at
+    every torque or the case cannot be analysed (said in the log).
+
+    Analysed only where the development's check did not judge the written bearing within
+    the limit between its torques: its LTE at the design torque above the limit, or the
+    check's record of the LTE over the range
+    (:func:`contact.optimize.development_range_lte.range_record`, the development's
+    ``lte_range``) above it or missing (its torques changed after the check's steps);
+    analysing always cost 1.5-3 s CPU a synthesis (docs/synthesis.md, "The LTE between the
+    development's torques")."""
     from contact.optimize.development_deflection import (
         analysed,
+        between_text,
         curvature_ratio,
         deflection_text,
     )
@@ -486,7 +495,9 @@ def _deflection_note(case, development) -> str | None:
     from geometry.core.errors import InputError
 
     lte = development.best.metrics["lte_peak_to_peak"]
-    if not float(lte[-1]) > LTE_LIMIT:
+    judged = getattr(development, "lte_range", None)
+    if not float(lte[-1]) > LTE_LIMIT and judged is not None and not (
+            float(judged.get("peak", math.nan)) > LTE_LIMIT):
         return None
     light, design = (float(t) for t in development.torque)
     try:
@@ -496,6 +507,8 @@ def _deflection_note(case, development) -> str | None:
 
         logging.getLogger(__name__).info("the LTE's deflection note not made: %s", exc)
         return None
+    if not found.lte[-1] > found.limit:
+        return between_text(found)
     pinion, gear = case.pinion.blank, case.gear.blank
     return deflection_text(found, curvature_ratio(pinion.teeth, gear.teeth,
                                                   float(pinion.pitch_angle),

@@ -165,6 +165,7 @@ from contact.optimize.development_evaluate import (  # noqa: F401
 )
 from contact.optimize.development_lte_capacity import lte_capacity
 from contact.optimize.development_pitting import checked_pitting
+from contact.optimize.development_range_lte import range_record
 from contact.optimize.development_result import (  # noqa: F401
     COAST_STATUS,
     STATIC_MARGIN,
@@ -596,7 +597,7 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                                coast_cap.reason if coast_cap is not None else "",
                                lte_reach=setup.get("lte_reach", {}).get(
                                    tuple(float(t) for t in setup["torques"])),
-                               tolerant_torque=upto)
+                               tolerant_torque=upto, lte_range=_judged(setup, best))
     say(result.headline())
     return result
 
@@ -742,6 +743,18 @@ def _lost_at(best: DevelopmentEvaluation, raised: DevelopmentEvaluation) -> list
     met, sorted."""
     return sorted(k for k, v in raised.shortfalls.items()
                   if v > 0 and not (best.shortfalls or {}).get(k, 0.0) > 0)
+
+
+def _judged(setup: dict[str, Any], best: DevelopmentEvaluation) -> dict[str, Any] | None:
+    """The check's record of the LTE over the range (:func:`~contact.optimize.
+    development_range_lte.range_record`) where it is of the drive design written (its
+    prescriptions) at the development's final torques; None otherwise (a later step
+    changed the design, or the torques changed after the check's steps: ``ltca
+    synthesize``'s note then analyses the written case itself)."""
+    found = range_record(setup)
+    if found is None or found.get("values") != dict(best.values):
+        return None
+    return found
 
 
 def _outclassed(setup: dict[str, Any], below: float) -> None:

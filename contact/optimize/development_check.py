@@ -323,7 +323,10 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     (:func:`contact.optimize.development_path_lte.checked_path_lte`); last, where it
     misses its light-load centre v and nothing by more than a small margin, a small
     blade-angle step with the TE level lowered (:func:`checked_near_miss`; ``slopes``:
-    the height stage's measured d(centre v)/d(blade angle) per bearing). Run again where
+    the height stage's measured d(centre v)/d(blade angle) per bearing); then the LTE
+    judged between the light and the design torque as ``ltca run``'s ``lte_range`` step
+    judges it, the path turned towards the profile where it exceeds 60 µrad there alone
+    (:func:`contact.optimize.development_range_lte.checked_range_lte`). Run again where
     the design torque was lowered after them (to the
     bearing's static flank capacity or its FE root-stress capacity): the light torque
     follows the design torque (``light_load`` × it), and the light-load LTE rises as the
@@ -361,8 +364,11 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     best = checked_relief_variants(best, targets, setup, teeth, say, placed)
     from contact.optimize.development_path_lte import checked_path_lte
     best = checked_path_lte(best, targets, setup, teeth, say, placed)
-    return checked_near_miss(best, targets, setup, teeth, say, placed, level,
+    best = checked_near_miss(best, targets, setup, teeth, say, placed, level,
                              slope=(slopes or {}).get(bearing_key(best.values)))
+    # last, the LTE between the torques as `ltca run`'s lte_range step judges it
+    from contact.optimize.development_range_lte import checked_range_lte
+    return checked_range_lte(best, targets, setup, teeth, say, placed)
 
 
 def steps_on_each(chosen: DevelopmentEvaluation, others: list[DevelopmentEvaluation],

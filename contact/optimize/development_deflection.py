@@ -39,7 +39,7 @@ Public names
 LTE_TORQUES (of :mod:`contact.ltca.lte_range`, which `ltca run`'s ``lte_range`` step
 shares), CURVATURE_RATIO_NOTE, DeflectionLTE, deflection_lte, within_torque (of
 :mod:`contact.study.lte_within`, which `ltca run`'s verdict shares), analysed,
-curvature_ratio, deflection_text
+curvature_ratio, deflection_text, between_text
 """
 
 from __future__ import annotations
@@ -55,7 +55,8 @@ from contact.study.lte_within import within_text, within_torque
 from geometry.case import Case
 
 __all__ = ["CURVATURE_RATIO_NOTE", "LTE_TORQUES", "DeflectionLTE", "analysed",
-           "curvature_ratio", "deflection_lte", "deflection_text", "within_torque"]
+           "between_text", "curvature_ratio", "deflection_lte", "deflection_text",
+           "within_torque"]
 
 #: the virtual gears' relative curvature radius over the gear's mean radius [1]
 #: (:func:`curvature_ratio`) above which :func:`deflection_text` says the pair deflects the
@@ -100,13 +101,17 @@ def deflection_lte(ltca: xr.Dataset, limit: float | None = None) -> DeflectionLT
     ltca : xarray.Dataset
         ``/ltca`` of :func:`contact.pipeline.run_analysis`: ``transmission_error`` (torque,
         roll) [µrad], ``unloaded_transmission_error`` (roll) [µrad], ``lte_peak_to_peak``
-        (torque) [µrad], coordinate ``torque`` [N·m].
+        (torque) [µrad], coordinate ``torque`` [N·m]; ``found`` (torque, roll) [1] where
+        the LTCA gives it (a roll position's contact solution certified).
     limit : float, optional — [µrad]
         Default :data:`contact.study.verdicts.LTE_LIMIT` (60 µrad).
 
     Returns
     -------
     DeflectionLTE
+        Its LTE NaN at a torque where a roll position has no certified contact solution
+        (``found`` 0): no LTE to judge there, as ``ltca run``'s ``lte_range`` step says
+        (:func:`contact.ltca.lte_range.lte_range`).
 
     Raises
     ------
@@ -126,10 +131,16 @@ def deflection_lte(ltca: xr.Dataset, limit: float | None = None) -> DeflectionLT
     te = np.asarray(ltca["transmission_error"].values, float)
     ute = np.asarray(ltca["unloaded_transmission_error"].values, float)
     deflection = np.nanmean(te - ute, axis=-1)
+    lte = np.asarray(ltca["lte_peak_to_peak"].values, float)
+    if "found" in ltca.variables:  # an uncertified solve: NaN, never a number (lte_range)
+        found = ltca["found"]
+        rest = [d for d in found.dims if d != "torque"]
+        lte = np.where(np.asarray(found.astype(bool).all(dim=rest).values, bool), lte,
+                       math.nan)
     order = np.argsort(np.asarray(ltca["torque"].values, float))
     return DeflectionLTE(
         tuple(float(x) for x in np.asarray(ltca["torque"].values, float)[order]),
-        tuple(float(x) for x in np.asarray(ltca["lte_peak_to_peak"].values, float)[order]),
+        tuple(float(x) for x in lte[order]),
         tuple(float(x) for x in deflection[order]), float(limit))
 
 
@@ -276,3 +287,49 @@ def deflection_text(found: DeflectionLTE, curvature: float = math.nan) -> str | 
                if curvature > CURVATURE_RATIO_NOTE
                else "") + up_to
             + " (docs/synthesis.md, 'The LTE at the design torque: the teeth's deflection')")
+
+
+def between_text(found: DeflectionLTE) -> str | None:
+    """``ltca synthesize``'s note where the written drive flank's LTE p-p keeps the limit at
+    the light and the design torque and exceeds it between them: the peak, its torque and
+    the limit, in numbers.
+
+    Parameters
+    ----------
+    found : DeflectionLTE
+        The written drive flank's (:func:`analysed`: ``ltca run``'s ``lte_range``
+        torques), its first torque the light and its last the design torque.
+
+    Returns
+    -------
+    str or None
+        None where no torque's LTE exceeds the limit, or the first or the last does (the
+        design torque's note, :func:`deflection_text`, or the light torque's own finding).
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: ``ltca run``'s ``lte_range`` step and verdict (:mod:`contact.ltca.lte_range`,
+    issue 71, "LTE p-p ≤ 60 µrad at every torque"); the development's check judges the
+    same torques (:mod:`contact.optimize.development_range_lte`).
+    """
+    lte = np.asarray(found.lte, float)
+    if lte.size < 3 or not np.any(lte > found.limit):
+        return None
+    if lte[0] > found.limit or lte[-1] > found.limit:
+        return None
+    i = int(np.nanargmax(lte))
+    curve = (f"LTE p-p {' / '.join(f'{x:.0f}' for x in lte)} urad at "
+             f"{' / '.join(f'{t:.4g}' for t in found.torques)} N m")
+    return (f"the drive LTE p-p is {lte[i]:.1f} urad at {found.torques[i]:.4g} N m, between "
+            f"the light {found.torques[0]:.4g} and the design torque {found.torques[-1]:.4g} "
+            f"N m, above the limit {found.limit:g} urad it keeps at both ({curve}, ltca "
+            "run's lte_range torques): `ltca run`'s verdict finds it there; the "
+            "development's check judged its designs between the torques too (the path turned "
+            "towards the profile where its bound allows, the ellipse lengthened, "
+            "contact.optimize.development_range_lte): no design it tried kept the limit "
+            "there with its other targets and its mounting tolerance (docs/synthesis.md, "
+            "'The LTE between the development's torques')")

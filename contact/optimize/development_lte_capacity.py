@@ -58,7 +58,10 @@ def lte_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                  n: int = LTE_TORQUES) -> DevelopmentEvaluation:
     """The design torque lowered to where the chosen design's drive LTE keeps the
     verdict's limit, where its checked LTE the verdict FAILs
-    (:func:`~contact.optimize.development_variant.lte_fails`).
+    (:func:`~contact.optimize.development_variant.lte_fails`) at the light or the design
+    torque or, as the check's last step judged it, between them
+    (:func:`~contact.optimize.development_range_lte.range_record`: ``ltca run``'s
+    ``lte_range`` torques).
 
     Parameters
     ----------
@@ -105,7 +108,8 @@ def lte_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     """
     from contact.study.verdicts import LTE_LIMIT  # imports contact.ltca
 
-    if not lte_fails(best) or best.case is None:
+    between = _between_peak(best, setup)
+    if not (lte_fails(best) or between > _fail_level(LTE_LIMIT)) or best.case is None:
         return best
     light, design = (float(t) for t in setup["torques"])
     key = bearing_key(best.values)
@@ -145,12 +149,25 @@ def lte_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     shown = " / ".join(f"{x:.0f}" for x in lowered.metrics["lte_peak_to_peak"])
     source = (f"the torque up to which the developed bearing keeps the drive LTE within "
               f"{LTE_LIMIT:g} urad: checked at {setup['source'].split(',')[0]} "
-              f"{design:.4g} N m its LTE p-p was {_worst(best):.0f} urad, above ltca run's "
+              f"{design:.4g} N m its LTE p-p was {max(_worst(best), between):.0f} urad, "
+              "above ltca run's "
               f"FAIL level {_fail_level(LTE_LIMIT):g} urad (LTE p-p {before[0]} urad at "
               f"{before[1]} N m); {shown} urad at {torques[0]:.4g} / {torques[1]:.4g} N m")
     setup.update(torques=torques, source=source, lowered=True)
     say(f"  design torque {design:.4g} -> {torques[1]:.4g} N m: {source}")
     return lowered
+
+
+def _between_peak(best: DevelopmentEvaluation, setup: dict[str, Any]) -> float:
+    """The largest LTE p-p [µrad] the check's last step judged ``best`` at between the
+    development's torques (:func:`~contact.optimize.development_range_lte.range_record`),
+    NaN where it judged another design or none at these torques."""
+    from contact.optimize.development_range_lte import range_record
+
+    found = range_record(setup)
+    if found is None or found["values"] != dict(best.values):
+        return math.nan
+    return float(found["peak"])
 
 
 def _worst(e: DevelopmentEvaluation) -> float:

@@ -19,13 +19,14 @@ without an analysis.
 from __future__ import annotations
 
 import logging
+import math
 from collections.abc import Callable, Mapping
 from typing import Any
 
 import numpy as np
 
 from contact.optimize.development_evaluate import KeptTeeth
-from contact.optimize.development_keep import kept_why, lost_targets
+from contact.optimize.development_keep import kept_why, lost_targets, ranks_better
 from contact.optimize.development_lte_steps import lte_reached
 from contact.optimize.development_matched_te import lte_ends
 from contact.optimize.development_result import DevelopmentEvaluation
@@ -86,9 +87,11 @@ def lte_limit() -> float:
     return float(LTE_LIMIT)
 
 
-def runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets) -> bool:
+def runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+            peak: float = math.nan) -> bool:
     """The step's gate, asked without an analysis: ``best`` is checked at ``ltca run``'s
-    sampling, its LTE p-p at the design torque is above :func:`lte_limit`, and the targets
+    sampling, its LTE p-p at the design torque (or ``peak``, its LTE between the
+    development's torques, where given) is above :func:`lte_limit`, and the targets
     and the design vary ``path_angle`` and ``ellipse_length`` with the path not at its
     bound towards the profile (the lower bound of ``path_angle``).
 
@@ -98,6 +101,10 @@ def runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets) -> bool:
         The design the check's steps kept.
     targets : DevelopmentTargets
         The development's targets (``variables``: the bounds [deg], [1]).
+    peak : float, optional — [µrad]
+        The design's largest LTE p-p between the light and the design torque
+        (:func:`~contact.optimize.development_range_lte.range_lte`); default NaN: the
+        design torque's alone.
 
     Returns
     -------
@@ -116,7 +123,7 @@ def runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets) -> bool:
             or "lte_peak_to_peak" not in best.metrics
             or not all(n in targets.variables and n in best.values for n in NAMES)):
         return False
-    if not lte_ends(best)[1] > lte_limit():  # NaN: not run
+    if not (lte_ends(best)[1] > lte_limit() or peak > lte_limit()):  # NaN: not run
         return False
     lo = float(targets.variables["path_angle"][0])
     return float(best.values["path_angle"]) > lo + 1e-9
@@ -125,7 +132,10 @@ def runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets) -> bool:
 def checked_path_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                      setup: Mapping[str, Any], teeth: KeptTeeth | None,
                      say: Callable[[str], None],
-                     placed: Callable[[Mapping[str, float]], Case]) -> DevelopmentEvaluation:
+                     placed: Callable[[Mapping[str, float]], Case], *,
+                     peak: tuple[float, float] | None = None,
+                     better: Callable[[DevelopmentEvaluation, DevelopmentEvaluation], bool]
+                     = ranks_better) -> DevelopmentEvaluation:
     """A drive design whose design torque's LTE exceeds the verdict's limit
     (:func:`runs_on`), its path turned towards the profile: the path angle turned by each
     of :data:`PATH_LTE_STEPS` from the design's (clipped to its bound), the ellipse
@@ -146,6 +156,15 @@ def checked_path_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         As every check step's (:func:`~contact.optimize.development_check.check_steps`;
         ``targets.variables``: the bounds of ``path_angle`` [deg] and ``ellipse_length``
         [1]; ``targets.pattern_length`` [1 of the face]).
+    peak : (float, float), optional — [µrad], [N·m]
+        The design's largest LTE p-p between the light and the design torque and its
+        torque, where the step acts on it (:func:`~contact.optimize.development_range_lte.
+        checked_range_lte`); default None: on the design torque's.
+    better : callable (best, e) → bool, optional
+        The keep rule's ``better`` (default
+        :func:`~contact.optimize.development_keep.ranks_better`; on a peak between the
+        torques, :func:`~contact.optimize.development_range_lte.range_better`: judged on
+        the largest LTE over the range).
 
     Returns
     -------
@@ -171,7 +190,8 @@ def checked_path_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     0.75, M −0.059 of the face) reads 47 / 62 µrad at 55.3 / 368.9 N m, and turned by
     −6.25° with the ellipse 0.7: 31 / 39 µrad, every target met (:data:`PATH_LTE_STEPS`).
     """
-    if not runs_on(best, targets):
+    between = (math.nan, math.nan) if peak is None else tuple(float(x) for x in peak)
+    if not runs_on(best, targets, between[0]):
         return best
     start = best
     (p_lo, p_hi), (e_lo, e_hi) = (tuple(float(x) for x in targets.variables[n])
@@ -194,14 +214,16 @@ def checked_path_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
             # 18 / 88 µrad, −80° / 0.65 21 / 99 µrad against 18 / 85)
             continue
         tried.append(values)
+        where = ("the design torque's" if peak is None else
+                 f"{between[0]:.0f} urad at {between[1]:.4g} N m between the torques")
         e = said_variant(start, values, STAGE,
                          f"with path_angle {path:.4g}, ellipse_length {ellipse:.3g} (its "
-                         f"LTE {light:.0f}/{design:.0f} urad, the design torque's above "
+                         f"LTE {light:.0f}/{design:.0f} urad, {where} above "
                          f"{limit:g})", targets, setup, teeth, say, placed)
         if e is None:
             continue
         why = kept_why(best, e, targets, setup, teeth, say, "the path turned",
-                       lost=lost_targets)
+                       better=better, lost=lost_targets)
         lte_reached(setup, e, f"design {start.index + 1} with path_angle {path:.4g}, "
                     f"ellipse_length {ellipse:.3g}", why, LEVER)
         if not why:

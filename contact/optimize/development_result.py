@@ -169,6 +169,12 @@ class DevelopmentResult:
         one does not (:func:`contact.optimize.development_check.tolerant_torque`); NaN
         where not found (tolerant, a clearance missed, or the edges failing at the light
         torque: then the second is the light torque).
+    lte_range : dict or None
+        The drive design's LTE p-p judged between :attr:`torque` as ``ltca run``'s
+        ``lte_range`` step judges it, by the check's last step
+        (:func:`contact.optimize.development_range_lte.range_record`: ``"torques"`` [N·m],
+        ``"lte"`` [µrad], ``"peak"`` [µrad], ``"at"`` [N·m]); None where the check's steps
+        did not judge it at these torques.
     """
 
     basic: BasicDesign
@@ -199,6 +205,7 @@ class DevelopmentResult:
     gear_process_text: str = ""
     lte_reach: dict | None = None
     tolerant_torque: tuple[float, float] = (math.nan, math.nan)
+    lte_range: dict | None = None
 
     @property
     def tolerant(self) -> bool:

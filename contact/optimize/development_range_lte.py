@@ -1,0 +1,418 @@
+"""The drive LTE judged between the development's torques, as ``ltca run`` judges it (issue
+71: "LTE p-p ≤ 60 µrad at every torque").
+
+``ltca run`` judges a synthesised case's LTE p-p at its light and design torque and between
+them (its chain step ``lte_range``, :mod:`contact.ltca.lte_range`: :data:`LTE_TORQUES`
+evenly spaced torques, the interval where the LTE first exceeds 60 µrad bisected). The
+development's check analysed the two torques alone, and the LTE of a localised bearing is
+no smooth function of the torque. Two designs it wrote met every check at both and were
+judged above the limit between them by ``ltca run`` (2026-11-27): the truck hypoid 8x41 of
+tests/data/designs, 38.5 / 38.6 µrad at 254.3 / 1696 N m and 65.8 µrad at 734.9 N m; the
+spiral bevel 27x34 of benchmarks/data/unseen_designs, 35 / 52 µrad at 127.8 / 852.2 N m and
+77.3 µrad at 369.3 N m.
+
+:func:`range_lte` analyses a checked design at the torques of ``ltca run``'s step
+(:func:`~contact.ltca.lte_range.lte_range_torques` of the development's two,
+:func:`~contact.ltca.lte_range.bisected` alike) at the check's sampling (:data:`CHECK_LTCA`,
+``ltca run``'s), its own two values the check's; :func:`checked_range_lte`, the check's last
+step, does so for the design the steps kept and, where its LTE is above the verdict's limit
+between the torques alone (at both its own torques within it: above it there, the design
+torque's LTE steps ran on it), gives it the design torque's path step
+(:func:`~contact.optimize.development_path_lte.checked_path_lte`) on that peak, then a
+longer ellipse (:data:`ELLIPSE_STEPS`), each design judged on its largest LTE over the
+range (:func:`range_better`; the pattern's length may be given up for a design whose LTE
+over the range keeps the limit, as the long bearing buys the LTE with it). The record
+(:func:`range_record`) is what the design torque lowered for a FAIL-level LTE
+(:func:`~contact.optimize.development_lte_capacity.lte_capacity`) reads too.
+
+Public names
+------------
+RANGE_KEY, STAGE, ELLIPSE_STEPS, range_lte, range_peak, range_better, range_record,
+checked_range_lte
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from collections.abc import Callable, Mapping
+from typing import Any
+
+import numpy as np
+
+from contact.ltca.lte_range import LTE_TORQUES, bisected, lte_range_torques
+from contact.optimize import development_evaluate as evaluation
+from contact.optimize.development_evaluate import CHECK_LTCA, KeptTeeth, bearing_key
+from contact.optimize.development_keep import (
+    kept_why,
+    lost_but_length,
+    lost_targets,
+    ranks_better,
+)
+from contact.optimize.development_lte_steps import ELLIPSE_STEP
+from contact.optimize.development_matched_te import lte_ends
+from contact.optimize.development_result import DevelopmentEvaluation
+from contact.optimize.development_targets import DevelopmentTargets
+from contact.optimize.development_variant import said_variant
+from geometry.case import Case
+from geometry.core.errors import raise_if_interrupted
+
+__all__ = ["ELLIPSE_STEPS", "RANGE_KEY", "STAGE", "checked_range_lte", "range_better",
+           "range_lte", "range_peak", "range_record"]
+
+log = logging.getLogger("contact.optimize.development")
+
+#: the development setup's key of the LTE over the range of the design the check's last
+#: step kept, by the development's torques (:func:`range_record`)
+RANGE_KEY = "lte_range"
+
+#: the setup's key of the analyses kept (a design the steps reach again is not analysed
+#: again)
+_MEMO = "lte_range_memo"
+
+#: two LTE peaks closer than this [µrad] are one (a variant judged on its peak must lower
+#: it by more)
+_SAME_PEAK = 0.05
+
+#: the check stage of the step's longer ellipses (:attr:`DevelopmentEvaluation.stage`)
+STAGE = "range lte"
+
+#: the ellipse's lengthenings :func:`checked_range_lte` tries in turn, in
+#: :data:`~contact.optimize.development_lte_steps.ELLIPSE_STEP` (0.05 of the face) from the
+#: design's, until the LTE over the range keeps the limit. Measured
+#: (``benchmarks/development_levers.py --check --at``, the written cases, 2026-11-27;
+#: largest LTE p-p of the lte_range torques, light-load pattern length): the truck hypoid
+#: 8x41 (path −80°, at its bound) ellipse 0.4135 / 0.43 / 0.445 / 0.46 / 0.48: 66 / 64 / 61
+#: / 57 / 55 µrad, 0.58 / 0.62 / 0.62 / 0.65 / 0.68 long, no other target lost; its tip
+#: relief 13.7-20.5 µm, root relief 25 µm, tip-relief start 0.5-0.7, te_level 45 µrad, no
+#: profile crowning: 53-66 µrad, each of the lighter reliefs and the crowning losing the
+#: edge and plastic targets; the spiral bevel 27x34 (path −80°) ellipse 0.625 / 0.675 / 0.75:
+#: 77 / 67 / 55 µrad (LTE 35 / 53, 33 / 47, 30 / 39 µrad at its light and design torque),
+#: 0.55 / 0.62 / 0.68 long; its tip relief 6 / 18 µm, root relief 40 µm, tip-relief start
+#: 0.95, te_level 25: 68-79 µrad (docs/synthesis.md, "The LTE between the development's
+#: torques")
+ELLIPSE_STEPS = (1, 2, 3)
+
+
+def _limit() -> float:
+    from contact.study.verdicts import LTE_LIMIT  # imports contact.ltca
+
+    return float(LTE_LIMIT)
+
+
+def range_lte(e: DevelopmentEvaluation, setup: Mapping[str, Any], teeth: KeptTeeth | None,
+              n: int = LTE_TORQUES) -> tuple[tuple[float, ...], tuple[float, ...]] | None:
+    """A checked drive design's LTE p-p at the torques ``ltca run``'s ``lte_range`` step
+    judges a case analysed at the development's light and design torque.
+
+    Parameters
+    ----------
+    e : DevelopmentEvaluation
+        A design checked at :data:`CHECK_LTCA` (its ``case``, ``values`` and
+        ``metrics["lte_peak_to_peak"]`` [µrad] at ``setup["torques"]``).
+    setup : mapping
+        The development's state: ``torques`` [N·m] (light, design); the analyses are kept
+        in it (a dict).
+    teeth : KeptTeeth or None
+        The shell teeth kept across the development's designs (the pinion's under the
+        design's bearing, :func:`~contact.optimize.development_evaluate.bearing_key`).
+    n : int, optional
+        :func:`~contact.ltca.lte_range.lte_range_torques`' ``n`` (default
+        :data:`~contact.ltca.lte_range.LTE_TORQUES`).
+
+    Returns
+    -------
+    (torques, lte) : (tuple of float, tuple of float) — [N·m], [µrad], or None
+        Ascending, the light and the design torque among them with the check's own values,
+        the torques between analysed at :data:`CHECK_LTCA` and those of
+        :func:`~contact.ltca.lte_range.bisected` (the interval where the LTE first exceeds
+        the verdict's limit halved twice). None where ``e`` has no case or checked LTE, or
+        its analysis failed (logged).
+
+    Raises
+    ------
+    Nothing: a failed analysis is logged, its design not judged between the torques.
+
+    Notes
+    -----
+    Source: ``ltca run``'s ``lte_range`` step (:mod:`contact.ltca.lte_range`, issue 71) and
+    the check's sampling (:data:`CHECK_LTCA`, ``ltca run``'s defaults). The check's own
+    LTCA (shell compliance, the teeth kept) at the torques between: the same analysis as
+    the check's at its two torques, so that one design is judged on one LTE curve.
+    """
+    if (e is None or e.case is None or not e.checked or e.metrics is None
+            or "lte_peak_to_peak" not in e.metrics):
+        return None
+    light, design = (float(t) for t in setup["torques"])
+    own = dict(zip((light, design), lte_ends(e), strict=True))
+    memo = setup.setdefault(_MEMO, {}) if isinstance(setup, dict) else {}
+    key = (tuple((k, float(v)) for k, v in sorted(e.values.items())), light, design, int(n),
+           id(teeth))
+    if key in memo:
+        return memo[key]
+    pinion = bearing_key(e.values)
+
+    def analyse(torques: list[float]) -> list[float]:
+        ms, _ = evaluation.analyse_design(e.case, list(torques), options=CHECK_LTCA,
+                                          teeth=teeth, pinion_key=pinion)
+        lte = np.asarray(ms["lte_peak_to_peak"], float).ravel()
+        if lte.shape != (len(torques),):
+            raise ValueError(f"{lte.size} LTE values at {len(torques)} torques")
+        return [float(x) for x in lte]
+
+    judged = lte_range_torques((light, design), design, int(n))
+    between = [t for t in judged if t not in own]
+    try:
+        alone = dict(zip(between, analyse(between), strict=True)) if between else {}
+        values = [own[t] if t in own else alone[t] for t in judged]
+        torques, lte, _ = bisected(judged, values, _limit(), lambda t: analyse([t])[0])
+    except Exception as exc:  # reported, never fatal: the design is not judged between
+        raise_if_interrupted(exc)
+        log.info("development: the LTE between %.4g and %.4g N m of %s not analysed: %s",
+                 light, design, dict(e.values), exc)
+        memo[key] = None
+        return None
+    memo[key] = (tuple(torques), tuple(lte))
+    return memo[key]
+
+
+def range_peak(found: tuple[tuple[float, ...], tuple[float, ...]] | None
+               ) -> tuple[float, float]:
+    """The largest LTE p-p of :func:`range_lte` and its torque.
+
+    Parameters
+    ----------
+    found : (torques, lte) or None
+        [N·m], [µrad] (:func:`range_lte`).
+
+    Returns
+    -------
+    (float, float) — [µrad], [N·m]
+        NaN, NaN where ``found`` is None or no value is finite (an uncertified solve).
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: the verdict's ``lte`` check judges the largest LTE over the run's torques
+    (:mod:`contact.study.verdicts`, issue 71).
+    """
+    if found is None:
+        return math.nan, math.nan
+    t, y = np.asarray(found[0], float), np.asarray(found[1], float)
+    if not np.any(np.isfinite(y)):
+        return math.nan, math.nan
+    i = int(np.nanargmax(y))
+    return float(y[i]), float(t[i])
+
+
+def range_better(setup: Mapping[str, Any], teeth: KeptTeeth | None,
+                 limit: float | None = None
+                 ) -> Callable[[DevelopmentEvaluation, DevelopmentEvaluation], bool]:
+    """The ``better`` of the check's keep rule
+    (:func:`~contact.optimize.development_keep.kept_why`) for a step acting on an LTE peak
+    between the torques: a design judged on its largest LTE over the range
+    (:func:`range_lte`).
+
+    Parameters
+    ----------
+    setup : mapping
+        The development's state (``torques`` [N·m]).
+    teeth : KeptTeeth or None
+        The kept shell teeth.
+    limit : float, optional — [µrad]
+        Default ``ltca run``'s verdict limit (:data:`contact.study.verdicts.LTE_LIMIT`).
+
+    Returns
+    -------
+    callable (best, e) → bool
+        True where ``e``'s largest LTE over the range is lower than ``best``'s (by more
+        than 0.05 µrad) and ``best``'s is above ``limit``; where both are within it, where
+        ``e`` ranks better by the check's rank
+        (:func:`~contact.optimize.development_keep.ranks_better`); never where ``e``'s is
+        above it and ``best``'s within, or ``e``'s is not finite.
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    The keep rule's other clauses (no met target lost, tolerant at the mounting
+    excursions) are the step's own, asked by ``kept_why`` as before; only what "better"
+    means follows the miss the step acts on, as the FAIL-level LTE rank
+    (:func:`~contact.optimize.development_keep.verdict_lost`) does for the verdict's FAIL
+    (issue 71).
+    """
+    cap = _limit() if limit is None else float(limit)
+
+    def better(best: DevelopmentEvaluation, e: DevelopmentEvaluation) -> bool:
+        old, _ = range_peak(range_lte(best, setup, teeth))
+        new, _ = range_peak(range_lte(e, setup, teeth))
+        if not math.isfinite(new):
+            return False
+        if math.isfinite(old) and old > cap:
+            return new < old - _SAME_PEAK
+        if new > cap:
+            return False
+        return ranks_better(best, e)
+
+    return better
+
+
+def range_record(setup: Mapping[str, Any]) -> dict[str, Any] | None:
+    """The LTE over the range of the design the check's last step kept at the
+    development's torques (:func:`checked_range_lte`).
+
+    Parameters
+    ----------
+    setup : mapping
+        The development's state (``torques`` [N·m]).
+
+    Returns
+    -------
+    dict or None
+        ``{"torques": (…), "lte": (…), "peak": µrad, "at": N·m, "values": {…}}``; None
+        where the step has not judged a design at these torques.
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: ``ltca run``'s ``lte_range`` step (:mod:`contact.ltca.lte_range`, issue 71);
+    read by :func:`~contact.optimize.development_lte_capacity.lte_capacity` and, through
+    :attr:`~contact.optimize.development_result.DevelopmentResult.lte_range`, by ``ltca
+    synthesize``'s note.
+    """
+    key = tuple(float(t) for t in setup["torques"])
+    return setup.get(RANGE_KEY, {}).get(key) if isinstance(setup, Mapping) else None
+
+
+def _record(setup: Mapping[str, Any], e: DevelopmentEvaluation,
+            found: tuple[tuple[float, ...], tuple[float, ...]]) -> None:
+    if not isinstance(setup, dict):
+        return
+    peak, at = range_peak(found)
+    key = tuple(float(t) for t in setup["torques"])
+    setup.setdefault(RANGE_KEY, {})[key] = {"torques": found[0], "lte": found[1],
+                                            "peak": peak, "at": at,
+                                            "values": dict(e.values)}
+
+
+def _curve(found: tuple[tuple[float, ...], tuple[float, ...]]) -> str:
+    return (f"LTE p-p {' / '.join(f'{x:.0f}' for x in found[1])} urad at "
+            f"{' / '.join(f'{t:.4g}' for t in found[0])} N m")
+
+
+def _longer_ellipse(start: DevelopmentEvaluation, targets: DevelopmentTargets,
+                    setup: Mapping[str, Any], teeth: KeptTeeth | None,
+                    say: Callable[[str], None],
+                    placed: Callable[[Mapping[str, float]], Case], limit: float
+                    ) -> DevelopmentEvaluation:
+    """:func:`checked_range_lte`'s second lever: the ellipse longer by each of
+    :data:`ELLIPSE_STEPS` × :data:`~contact.optimize.development_lte_steps.ELLIPSE_STEP` in
+    turn from ``start``'s (clipped to its bound), until the LTE over the range keeps
+    ``limit``; each kept by the check's one rule with ``better`` judged on the LTE over the
+    range (:func:`range_better`) and, where its LTE over the range keeps the limit, the
+    pattern's length may be given up (:func:`~contact.optimize.development_keep.
+    lost_but_length`, as the long bearing buys the LTE with it), else no met target
+    (:func:`~contact.optimize.development_keep.lost_targets`)."""
+    if ("ellipse_length" not in targets.variables or "ellipse_length" not in start.values):
+        return start
+    lo, hi = (float(x) for x in targets.variables["ellipse_length"])
+    now = float(start.values["ellipse_length"])
+    better = range_better(setup, teeth, limit)
+
+    def lost(b: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:
+        within = range_peak(range_lte(e, setup, teeth))[0] <= limit
+        return lost_but_length(b, e) if within else lost_targets(b, e)
+
+    best, tried = start, {now}
+    for k in ELLIPSE_STEPS:
+        x = round(float(np.clip(now + k * ELLIPSE_STEP, lo, hi)), 4)
+        if x in tried:
+            continue
+        tried.add(x)
+        peak, at = range_peak(range_lte(best, setup, teeth))
+        e = said_variant(start, dict(start.values) | {"ellipse_length": x}, STAGE,
+                         f"with the ellipse {x:.3g} (its LTE {peak:.0f} urad at {at:.4g} N m "
+                         f"between the torques above {limit:g})", targets, setup, teeth, say,
+                         placed)
+        if e is None:
+            continue
+        if not kept_why(best, e, targets, setup, teeth, say, "the longer ellipse",
+                        better=better, lost=lost):
+            best = e
+        if range_peak(range_lte(best, setup, teeth))[0] <= limit:
+            break
+    return best
+
+
+def checked_range_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                      setup: Mapping[str, Any], teeth: KeptTeeth | None,
+                      say: Callable[[str], None],
+                      placed: Callable[[Mapping[str, float]], Case]) -> DevelopmentEvaluation:
+    """The check's last step: the kept drive design's LTE judged between the development's
+    torques as ``ltca run`` judges it (:func:`range_lte`), and where it exceeds the
+    verdict's limit there alone, the path turned towards the profile on that peak
+    (:func:`~contact.optimize.development_path_lte.checked_path_lte`), then, where it is
+    still above, the ellipse longer (:data:`ELLIPSE_STEPS`: at most three designs, until
+    the limit is kept), each design judged on its largest LTE over the range
+    (:func:`range_better`), the pattern's length given up only by a design that keeps the
+    limit over the range.
+
+    Parameters
+    ----------
+    best : DevelopmentEvaluation
+        The design the check's steps kept (checked).
+    targets, setup, teeth, say, placed
+        As every check step's (:func:`~contact.optimize.development_check.check_steps`).
+
+    Returns
+    -------
+    DevelopmentEvaluation
+        The design kept: ``best`` itself where it is not checked, its LTE over the range is
+        within the limit (or not analysed), its LTE at its own torques is above it (the
+        design torque's steps act on that), or no design was kept. Its LTE over the range
+        recorded in ``setup`` (:func:`range_record`).
+
+    Raises
+    ------
+    Nothing: a design whose synthesis or analysis fails is not kept (logged).
+
+    Notes
+    -----
+    Source: ``ltca run``'s ``lte_range`` step and verdict (issue 71, "LTE p-p ≤ 60 µrad at
+    every torque"); the path lever measured on the face-hobbed hypoid 8x35 at Σ 85°
+    (:data:`~contact.optimize.development_path_lte.PATH_LTE_STEPS`: the largest LTE of the
+    four torques 76 → 57 / 48 / 42 µrad). Cost: one analysis of the two torques between
+    (and the bisections' where the LTE crosses the limit) per call, at the check's sampling.
+    """
+    from contact.optimize.development_path_lte import checked_path_lte
+
+    found = range_lte(best, setup, teeth)
+    if found is None:
+        return best
+    _record(setup, best, found)
+    limit = _limit()
+    peak, at = range_peak(found)
+    if not peak > limit or not all(x <= limit for x in lte_ends(best)):  # NaN: not run
+        return best
+    say(f"  design {best.index + 1}: its drive LTE p-p {peak:.1f} urad at {at:.4g} N m, "
+        f"between the light and the design torque, is above {limit:g} urad ({_curve(found)};"
+        " ltca run's lte_range torques)")
+    kept = checked_path_lte(best, targets, setup, teeth, say, placed, peak=(peak, at),
+                            better=range_better(setup, teeth, limit))
+    if not range_peak(range_lte(kept, setup, teeth))[0] <= limit:
+        kept = _longer_ellipse(kept, targets, setup, teeth, say, placed, limit)
+    if kept is not best:
+        again = range_lte(kept, setup, teeth)
+        if again is not None:
+            _record(setup, kept, again)
+            say(f"  design {kept.index + 1} kept on its LTE between the torques: "
+                f"{_curve(again)}")
+    return kept
