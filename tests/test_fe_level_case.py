@@ -163,14 +163,26 @@ def test_ltca_run_of_a_coarse_case_names_its_level(tmp_path, monkeypatch, capsys
     in the file's summary, in ``/ltca``'s attributes and in the verdict's notes. The
     level's fields are the CI tests' coarse model here (monkeypatched: seconds, not the
     ~10 s of the real level's build; the wiring is what is tested)."""
-    import xarray as xr
-
-    from contact.cli import main
     from contact.compliance.fe import CACHE_ENV
-    from contact.study.verdicts import verdict
+    from contact.ltca import root_stress as rs_module
 
     monkeypatch.setenv(CACHE_ENV, str(tmp_path / "fe"))
     monkeypatch.setitem(LEVELS, "coarse10", TINY)
+    # the memo of which level coefficients are: its answer for TINY not kept for the next
+    # test (TINY is the CI tests' coarse model, no level of its own)
+    rs_module._coefficients_level.cache_clear()
+    try:
+        _run_coarse(tmp_path, capsys)
+    finally:
+        rs_module._coefficients_level.cache_clear()
+
+
+def _run_coarse(tmp_path, capsys):
+    import xarray as xr
+
+    from contact.cli import main
+    from contact.study.verdicts import verdict
+
     case_path = tmp_path / "coarse.toml"
     case_path.write_text(with_fe_level(resolve_case(None), "coarse10").to_toml(),
                          encoding="utf-8")
@@ -193,3 +205,19 @@ def test_ltca_run_of_a_coarse_case_names_its_level(tmp_path, monkeypatch, capsys
     keys = tree["/ltca"]["root_stress"].attrs["fe_cache_keys"].split()
     flank = case.pair.drive_flank
     assert keys[0] == cache_key(case.member("pinion"), flank, opt)
+
+
+def test_the_level_is_that_of_the_coefficients_used():
+    """The level a root stress names is read from the coefficients it used (their
+    ``options`` attribute), so a study's or a duty cycle's coefficients, built once and
+    handed to each point, say it too; members of different models, or a model of no
+    level, name none."""
+    from contact.ltca.root_stress import _coefficients_level
+
+    default, coarse = FEOptions().to_json(), FEOptions.at_level("coarse10").to_json()
+    assert _coefficients_level(default, default) == "default"
+    assert _coefficients_level(coarse, coarse) == "coarse10"
+    assert _coefficients_level(default, coarse) is None
+    own = FEOptions(face_divisions=11).to_json()
+    assert _coefficients_level(own, own) is None
+    assert _coefficients_level("", "") is None

@@ -552,6 +552,22 @@ def root_stress_notes(ltca: xr.Dataset) -> list[str]:
             for line in str(attrs.get(attr, "")).splitlines() if line]
 
 
+@memoised(maxsize=16)
+def _coefficients_level(*options: str) -> str | None:
+    """The level (:data:`contact.compliance.fe.options.LEVELS`) of the FE model whose
+    coefficients carry these ``options`` attributes (``FEOptions.to_json``), one per member:
+    the coefficients used, whether built here, read from the cache or given (a study's,
+    a duty cycle's); None where the members' models differ, are no named level or do not
+    say."""
+    import json
+
+    try:
+        names = {level_name(FEOptions(**json.loads(text))) for text in options}
+    except (ValueError, TypeError, InputError):
+        return None
+    return names.pop() if len(names) == 1 else None
+
+
 def fe_level_note(ltca: xr.Dataset) -> str | None:
     """The sentence that names the FE level of a root stress on a named cheaper model and
     its stated accuracy (the ``fe_level`` and ``fe_level_accuracy`` attributes of
@@ -942,7 +958,7 @@ def root_stress(case, easeoff: EaseOff, ltca: xr.Dataset,
         str(coef[m].attrs.get("cache_key", "")) for m in MEMBERS)
     ds["root_stress"].attrs["source"] = ("superposition of FE fillet-stress influence "
                                          "coefficients (contact.ltca.root_stress; docs/fe.md)")
-    level = level_name(opt) if coefficients is None else None
+    level = _coefficients_level(*(str(coef[m].attrs.get("options", "")) for m in MEMBERS))
     if level not in (None, "default"):  # a named cheaper model: said with its accuracy
         # (the default model's dataset as before: no attribute)
         for name in ("root_stress", "root_stress_max"):
