@@ -159,7 +159,9 @@ def result_summary(name: str, groups: dict[str, xr.Dataset]) -> str:
         flanks and of the edges [MPa], the edges' share of the torque [%], the efficiency
         [%], the mean mesh stiffness [N/µm] and the peak root stress of both members
         [MPa] where the groups hold them (the text spells the units as UDUNITS does,
-        ``urad``, ``N/um``, so that a catalogue shows them as the file's variables do).
+        ``urad``, ``N/um``, so that a catalogue shows them as the file's variables do);
+        the FE level of a root stress on a named cheaper model with its accuracy
+        (:func:`contact.ltca.root_stress.fe_level_note`).
     """
     lt = groups["/ltca"]
     fr = groups.get("/friction")
@@ -189,6 +191,11 @@ def result_summary(name: str, groups: dict[str, xr.Dataset]) -> str:
             text += (f"; peak root stress pinion {float(rs[members.index('pinion')]):.0f} "
                      f"MPa, gear {float(rs[members.index('gear')]):.0f} MPa")
         parts.append(text + ".")
+    from contact.ltca.root_stress import fe_level_note
+
+    level = fe_level_note(lt)  # a root stress on a named cheaper FE model: said, with its
+    if level is not None:  # accuracy (nothing for the default model)
+        parts.append(level[0].upper() + level[1:] + ".")
     if fr is not None:
         a = fr.attrs
         parts.append(f"Efficiency at {a.get('pinion_speed_rpm', float('nan')):g} rpm, "
@@ -196,6 +203,30 @@ def result_summary(name: str, groups: dict[str, xr.Dataset]) -> str:
                      f"degC, Rq {a.get('roughness_rq_um', 0):g} um, friction model "
                      f"{a.get('friction_model', '')}.")
     return " ".join(parts)
+
+
+def _fe_level_options(case: Case, fe_level: str | None, fe_options):
+    """The FE options of :func:`run_analysis`'s root stress where ``fe_level`` is given
+    (``FEOptions.at_level(fe_level)``), else ``fe_options`` as given (None: the root-stress
+    step takes the case's level); the case's ``[root_stress]`` table checked either way.
+
+    Raises
+    ------
+    InputError
+        A bad ``[root_stress]`` table or ``fe_level`` (named, with the levels), or
+        ``fe_level`` beside FE options given.
+    """
+    from contact.compliance.fe.options import LEVELS, FEOptions, fe_level_of
+    from geometry.core.validation import one_of
+
+    fe_level_of(case)  # refused before any work where bad
+    if fe_level is None:
+        return fe_options
+    one_of("fe_level", fe_level, LEVELS)
+    if fe_options is not None:
+        raise InputError("fe_level: FE options were given too (root_stress, or steps' "
+                         "with_root_stress); give one of the two")
+    return FEOptions.at_level(fe_level)
 
 
 def _point_as_run(c: Case, torques, operating: OperatingConditions | None):
@@ -374,6 +405,7 @@ def run_analysis(
     mesh_interface: bool | None = None,
     root_stress: bool | FEOptions | None = None,  # noqa: F821 (FEOptions: imported lazily)
     steps: AnalysisChain | Mapping[str, StepChoice] | None = None,
+    fe_level: str | None = None,
 ) -> xr.DataTree:
     """Run the analysis chain of a case — geometry, ease-off UTCA, LTCA, root stress, mesh
     interface, efficiency, load capacity (:class:`contact.AnalysisChain`) — and return one
@@ -440,6 +472,9 @@ def run_analysis(
         builds its FE influence coefficients, ~15–20 s per member, later runs read them
         from the cache (~1 s); False skips the step. Deprecated (issue 72): give
         ``steps=AnalysisChain.analysis().with_root_stress(True | False | FEOptions)``.
+        Without FE options given here or in ``steps``, the root stress is computed on the
+        FE level the case names (``[root_stress] fe_level``: the cases ``ltca synthesize``
+        writes name ``"coarse10"``; absent, the default model), or ``fe_level``'s.
     steps : contact.AnalysisChain or mapping, optional
         The chain's steps (:mod:`contact.chain`): an :class:`contact.AnalysisChain`, or
         the steps that differ from its defaults, each a name
@@ -453,6 +488,15 @@ def run_analysis(
         and pinion speed, from the case's ``[design]`` and ``[rating]`` tables) and, with
         ``/friction``, ``/rating/flash_temperature``; without those tables or a speed it
         writes nothing and the root attribute ``load_capacity_not_run`` says why.
+    fe_level : str, optional
+        The FE model of the root stress by its level
+        (:data:`contact.compliance.fe.options.LEVELS`: ``"default"``, ``"coarse"``,
+        ``"coarse10"``) instead of the case's ``[root_stress] fe_level`` — ``"default"``
+        refines a new design's coarse root stress to the default model (``ltca run
+        --fe-level``). Not with FE options given (``root_stress`` or ``steps``). A root
+        stress on a level other than the default says so in ``/ltca``
+        (``root_stress_max`` attributes ``fe_level``, ``fe_level_accuracy``), the file's
+        summary and the verdict's notes.
 
     Returns
     -------
@@ -477,9 +521,10 @@ def run_analysis(
     Raises
     ------
     InputError
-        Bad case, torque, misalignment, flank, options, flags, steps, operating conditions
-        or ``[rating]``/``[design]`` table (with the load-capacity step), refused before
-        any work (the message names the argument, what was given and what
+        Bad case, torque, misalignment, flank, options, flags, steps, operating conditions,
+        FE level (``fe_level`` or the case's ``[root_stress]`` table, named with the
+        accepted levels) or ``[rating]``/``[design]`` table (with the load-capacity
+        step), refused before any work (the message names the argument, what was given and what
         is accepted; torques and operating conditions against
         :data:`geometry.core.bounds.PHYSICAL_BOUNDS`, the oil temperature against the oil's
         range).
@@ -532,6 +577,8 @@ def run_analysis(
                           efficiency=False if operating is False else None)
     if fe_options is None:
         fe_options = chain.fe_options
+    if fe_level is not None or "root_stress" in c.extra:  # (skfem imported only then)
+        fe_options = _fe_level_options(c, fe_level, fe_options)
     torques = flank_torques(c, flank)[0] if torque is None else torque
     opts = options or LTCAOptions()
     if chain.efficiency is None:

@@ -418,8 +418,9 @@ class Case:
         can hold what its TOML does not say (a face-hobbing indexing ratio other than
         −z0/z, say), and the rebuilt case would be another pair's teeth.
 
-        The operating point (``[operating]``: torques, speed, oil) and the ``[rating]``
-        table are left out too: neither changes a tooth (what the memos compute reads the
+        The operating point (``[operating]``: torques, speed, oil), the ``[rating]``
+        table and the ``[root_stress]`` table (the FE level of the root stress) are left
+        out too: none changes a tooth (what the memos compute reads the
         members, the pair and the name alone), and the development's checks analyse one
         case at several design torques, which each wrote into both (the coast flank's
         capacity search made the same ease-off and tooth models again at each torque).
@@ -438,8 +439,9 @@ class Case:
         key = self.__dict__.get("_teeth_key")
         if key is None:
             extra = self.extra
-            if "rating" in extra:
-                extra = MappingProxyType({k: v for k, v in extra.items() if k != "rating"})
+            if not _NOT_TEETH_TABLES.isdisjoint(extra):
+                extra = MappingProxyType({k: v for k, v in extra.items()
+                                          if k not in _NOT_TEETH_TABLES})
             teeth = dataclasses.replace(self, misalignment=Misalignment(), deviations=None,
                                         operating=OperatingPoint(), extra=extra)
             key = TeethKey(teeth, repr(teeth))
@@ -488,6 +490,9 @@ class Case:
 
 #: the case's fields :meth:`Case.teeth_key` leaves out (no tooth depends on them)
 _NOT_TEETH = frozenset({"misalignment", "deviations", "operating"})
+#: tables of ``Case.extra`` no tooth depends on, left out of :meth:`Case.teeth_key`: the
+#: rating's inputs and the FE level of the root stress (contact's ``[root_stress]``)
+_NOT_TEETH_TABLES = frozenset({"rating", "root_stress"})
 
 
 class TeethKey:

@@ -100,12 +100,32 @@ def test_the_development_builds_both_flanks_of_each_member_and_survives_a_failur
     said: list[str] = []
     with caplog.at_level(logging.INFO, logger="contact.optimize.development_root"):
         both_flanks_built(_case(), say=said.append)
-    assert calls == [("pinion", "drive", None, True), ("gear", "drive", None, True)]
+    # the case's FE level (no [root_stress] table: the default model)
+    assert calls == [("pinion", "drive", FEOptions(), True),
+                     ("gear", "drive", FEOptions(), True)]
     assert "pinion's FE models of both flanks not built: mapped fillet inverted" in caplog.text
     # each cold build is announced before it starts (issue 71, unseen (12): `ltca
     # synthesize` was silent for up to 138 s of wall time there on a loaded machine)
     assert [line.split(" FE models")[0] for line in said] == [
         "development: building the pinion's", "development: building the gear's"]
+
+
+def test_the_development_builds_the_level_its_case_names(monkeypatch, tmp_path):
+    """A case that names an FE level (``[root_stress] fe_level``, as ``ltca synthesize``
+    writes ``coarse10``): ``both_flanks_built`` builds that level's models, the ones the
+    root-stress checks and ``ltca run`` of the case read (issue 75). Stubbed: milliseconds."""
+    import contact.compliance.fe as fe
+    from contact.compliance.fe.options import with_fe_level
+    from contact.optimize.development_root import both_flanks_built
+
+    calls = []
+    monkeypatch.setattr(fe, "influence_coefficients",
+                        lambda case, member, flank="drive", options=None, **kw:
+                        calls.append((member, options)))
+    monkeypatch.setenv(CACHE_ENV, str(tmp_path))
+    both_flanks_built(with_fe_level(_case(), "coarse10"))
+    coarse = FEOptions.at_level("coarse10")
+    assert calls == [("pinion", coarse), ("gear", coarse)]
 
 
 def test_the_development_reads_a_cached_drive_model_once_for_its_checks(monkeypatch,

@@ -43,13 +43,16 @@ import sys
 from pathlib import Path
 
 __all__ = [
+    "FE_LEVEL_NAMES",
     "FLANK_CHOICES",
     "analysis_file_argument",
     "case_argument",
     "case_stem",
+    "checked_fe_level",
     "count",
     "default_output",
     "deprecated_alias",
+    "fe_level_option",
     "film_model_options",
     "flank_option",
     "misalignment_from_args",
@@ -367,6 +370,41 @@ def root_stress_option(p: argparse.ArgumentParser, what: str) -> None:
     p.add_argument("--root-stress", action=argparse.BooleanOptionalAction, default=True,
                    help=f"{what} (on by default; docs/fe.md): {ROOT_STRESS_COST}; "
                         "--no-root-stress leaves it out")
+
+
+#: the FE levels ``--fe-level`` accepts, as the help text names them (the keys of
+#: :data:`contact.compliance.fe.options.LEVELS`, which the command checks against: not
+#: imported to build the parser)
+FE_LEVEL_NAMES = ("default", "coarse", "coarse10")
+
+
+def fe_level_option(p: argparse.ArgumentParser, what: str) -> None:
+    """``--fe-level LEVEL``: the FE model of the root stress by its level
+    (:data:`contact.compliance.fe.options.LEVELS`); ``what`` says its default in this
+    command."""
+    p.add_argument("--fe-level", default=None, metavar="LEVEL",
+                   help=f"the FE model of the root stress: {', '.join(FE_LEVEL_NAMES)} "
+                        f"(docs/fe.md: coarse10's peak root stress -1.0 ... +7.1 %% of the "
+                        f"default model's, at ~0.5 of its build CPU); {what}")
+
+
+def checked_fe_level(level: str | None) -> str | None:
+    """``--fe-level``'s value checked against the levels (None where not given).
+
+    Raises
+    ------
+    InputError — a level not in :data:`contact.compliance.fe.options.LEVELS` (named as
+        ``--fe-level``, with the levels).
+    """
+    if level is None:
+        return None
+    from contact.compliance.fe.options import LEVELS
+    from geometry.core.errors import InputError
+
+    if level not in LEVELS:
+        raise InputError(f"--fe-level: must be one of {', '.join(LEVELS)} (the FE model "
+                         f"of the root stress, docs/fe.md), got {level!r}")
+    return level
 
 
 def rolls_per_cycle_option(p: argparse.ArgumentParser, default: int | None = None,

@@ -17,8 +17,10 @@ from contact.commands.options import (
     analysis_file_argument,
     case_and_misalignment,
     case_argument,
+    checked_fe_level,
     checked_outputs,
     compliance_option,
+    fe_level_option,
     flank_option,
     misalignment_from_args,
     misalignment_options,
@@ -91,6 +93,9 @@ def register(sub) -> None:
                    help="write the one-page HTML report (as `ltca report`) to HTML")
     root_stress_option(p, "the tooth-root stress of both members from FE influence "
                           "coefficients, in the summary, the file and the report")
+    fe_level_option(p, "default the case's [root_stress] fe_level (the cases `ltca "
+                       "synthesize` writes: coarse10), else default; --fe-level default "
+                       "refines a new design's root stress to the default model")
     p.add_argument("--rating", action=argparse.BooleanOptionalAction, default=True,
                    help="the load-capacity rating of the case (ISO 10300 Method B1 unless "
                    "--rating-method or the case's [rating] method names another) at the "
@@ -284,6 +289,12 @@ def _run(args: argparse.Namespace) -> int:
 
         raise InputError("--rating-method: a method was named with --no-rating; give one "
                          "of the two")
+    fe_level = checked_fe_level(getattr(args, "fe_level", None))
+    if fe_level is not None and not args.root_stress:
+        from geometry.core.errors import InputError
+
+        raise InputError("--fe-level: names the FE model of the root stress, which "
+                         "--no-root-stress leaves out; give one of the two")
     case, mis = case_and_misalignment(args)
     opts = ltca_options(args)
     devs = None  # the case's [deviations] table, if any
@@ -307,6 +318,7 @@ def _run(args: argparse.Namespace) -> int:
         # a bar on a terminal, plain lines in a log (the LTCA and a first FE build)
         progress=args.progress,
         steps=_chain_of(args, operating, case),
+        fe_level=fe_level,
     )
     rating_why = ("ISO 10300 rating not computed (--no-rating)" if not args.rating
                   else str(tree.attrs.get("load_capacity_not_run", "")))
@@ -393,13 +405,19 @@ def _run(args: argparse.Namespace) -> int:
               "superposition) [MPa], at the face station u (toe 0, heel 1):")
         print(tabulate(root_stress_rows(lt), headers=["T_p [N m]", "pinion", "u", "gear",
                                                       "u"], tablefmt="github"))
-        from contact.ltca.root_stress import root_stress_notes, slot_bottom_notes
+        from contact.ltca.root_stress import (
+            fe_level_note,
+            root_stress_notes,
+            slot_bottom_notes,
+        )
 
         for line in root_stress_notes(lt):  # NaN torques and loads left out, and why
             print(line)
         for line in slot_bottom_notes(case, lt, args.flank or "drive"):  # step 2's arc
             print(line)
-        print("the FE model's peak fillet stress is mesh-converged within 5 % (docs/fe.md, "
+        level = fe_level_note(lt)  # a new design's coarse FE level: said, with its accuracy
+        print(level if level is not None else
+              "the FE model's peak fillet stress is mesh-converged within 5 % (docs/fe.md, "
               "Mesh convergence)")
     for line in rating_lines(tree, rating_why, args.case):
         print(line)

@@ -7,7 +7,12 @@ import math
 import sys
 from pathlib import Path
 
-from contact.commands.options import output_option, progress_option
+from contact.commands.options import (
+    checked_fe_level,
+    fe_level_option,
+    output_option,
+    progress_option,
+)
 from contact.commands.output_paths import check_output_file
 from geometry.core.atomic_files import atomic_path
 
@@ -41,6 +46,9 @@ def register(sub) -> None:
     output_option(p, default="<stem>.toml of BASIC in this directory; <stem>_case.toml "
                   "where that is BASIC itself", what="case file (TOML)")
     progress_option(p)
+    fe_level_option(p, "default the basic file's [root_stress] fe_level, else coarse10 "
+                       "(a new design's root-stress checks, written into the case: `ltca "
+                       "run` of it reads the same models)")
     p.add_argument("--no-development", dest="development", action="store_false",
                    help="write the local synthesis of the [synthesis] prescriptions as they "
                         "are, without developing the bearing under load (default: the "
@@ -602,6 +610,27 @@ def _size_line(basic, targets) -> str | None:
     return line + " (docs/synthesis.md)"
 
 
+def synthesis_fe_level(basic, given: str | None = None) -> str:
+    """The FE level (:data:`contact.compliance.fe.options.LEVELS`) of a new design's root
+    stress: ``given`` (``--fe-level``), else the basic design's ``[root_stress] fe_level``,
+    else :data:`contact.compliance.fe.options.SYNTHESIS_LEVEL` (``"coarse10"``: its peak
+    root stress −1.0 … +7.1 % of the default model's at about half its build CPU,
+    docs/fe.md). ``ltca synthesize`` checks the design's root stress on it and writes it
+    into the case, which ``ltca run`` then reads.
+
+    Raises
+    ------
+    InputError — a bad ``[root_stress]`` table of the basic design (named, with the
+        levels).
+    """
+    from contact.compliance.fe.options import SYNTHESIS_LEVEL, fe_level_of
+
+    own = fe_level_of(basic.root_stress)
+    if given is not None:
+        return given
+    return own if "fe_level" in basic.root_stress else SYNTHESIS_LEVEL
+
+
 def run_synthesize(args: argparse.Namespace) -> int:
     """``ltca synthesize``: the case of a basic design file, developed and checked; dask
     kept out of the process (:func:`contact.commands.run.dask_hidden`).
@@ -658,6 +687,10 @@ def _run_synthesize(args: argparse.Namespace) -> int:
     shown = (f"cases/basic/{source.name}" if args.basic is None or not Path(args.basic).is_file()
              else Path(args.basic).as_posix())
     basic = dataclasses.replace(load_basic(source), path=shown)
+    # the FE level of the root-stress checks, written into every case the development
+    # synthesises (and the one written): the basic file's or --fe-level, else coarse10
+    basic = dataclasses.replace(basic, root_stress={"fe_level": synthesis_fe_level(
+        basic, checked_fe_level(getattr(args, "fe_level", None)))})
     if basic.rating:  # a bad [rating] table refused before the work (rating.<field>)
         RatingInputs.from_mapping(basic.rating)
     steps = (StepLines("synthesize", SYNTHESIS_STEPS) if getattr(args, "progress", False)

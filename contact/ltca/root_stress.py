@@ -56,6 +56,7 @@ import xarray as xr
 
 from contact.compliance.fe import FEOptions, locate_flank_points
 from contact.compliance.fe.contact_compliance import pair_coefficients
+from contact.compliance.fe.options import LEVEL_ACCURACY, case_fe_options, level_name
 from contact.compliance.fe.superposition import GRID_TOLERANCE
 from contact.ltca.segments import roll_phases
 from contact.utca import EaseOff
@@ -64,8 +65,9 @@ from geometry.core.conventions import data_var, dataset
 from geometry.core.errors import InputError, LTCAError
 from geometry.pair.assembly import case_transforms
 
-__all__ = ["DESIGN_LIMIT", "GRID_LIMIT", "LEFT_OUT_ATTR", "MEMBERS", "NOT_COMPUTED_ATTR",
-           "OFF_FLANK_LIMIT", "UNPLACED_SHARE", "Unplaced", "coefficients_cached",
+__all__ = ["DESIGN_LIMIT", "FE_ACCURACY_ATTR", "FE_LEVEL_ATTR", "GRID_LIMIT",
+           "LEFT_OUT_ATTR", "MEMBERS", "NOT_COMPUTED_ATTR", "OFF_FLANK_LIMIT",
+           "UNPLACED_SHARE", "Unplaced", "coefficients_cached", "fe_level_note",
            "member_contact_points", "prepare_coefficients", "root_stress",
            "root_stress_notes", "slot_bottom_notes", "unplaced_reason"]
 
@@ -118,6 +120,12 @@ LEFT_OUT_ATTR = "left_out"
 #: the attribute that says, one sentence per member, that its FE coefficients were built
 #: and used from memory because the cache could not be written (issue 72)
 CACHE_NOTE_ATTR = "fe_cache_not_written"
+#: the attributes that name the FE level of a root stress computed on a named cheaper
+#: model (:data:`contact.compliance.fe.options.LEVELS`: the case's ``[root_stress]
+#: fe_level`` or the options given) and its stated accuracy against the default model;
+#: absent for the default model
+FE_LEVEL_ATTR = "fe_level"
+FE_ACCURACY_ATTR = "fe_level_accuracy"
 
 #: rows (pair, distinct loads) whose fillet stresses are superposed and reduced at once
 ROW_BLOCK = 32
@@ -153,7 +161,9 @@ def prepare_coefficients(case, flank: str | None = None, options=None, *,
     flank : str or None
         The working flank role or name, as :func:`contact.run_analysis` takes it.
     options : contact.compliance.fe.FEOptions, optional
-        The FE model (default ``FEOptions()``).
+        The FE model (default the case's level, ``[root_stress] fe_level``:
+        :func:`contact.compliance.fe.options.case_fe_options`; ``FEOptions()`` where it
+        names none).
     progress : bool
         A progress bar while unit loads are solved.
 
@@ -171,7 +181,8 @@ def prepare_coefficients(case, flank: str | None = None, options=None, *,
     from contact.utca.easeoff import working_flanks
 
     flanks = dict(zip(MEMBERS, working_flanks(case, flank), strict=True))
-    return pair_coefficients(case, flanks, options, progress=progress)
+    opt = options if options is not None else case_fe_options(case)
+    return pair_coefficients(case, flanks, opt, progress=progress)
 
 
 def coefficients_cached(case, flank: str | None = None, options=None, *,
@@ -184,8 +195,8 @@ def coefficients_cached(case, flank: str | None = None, options=None, *,
     case : geometry.case.Case
     flank : str or None — the working flank role or name, as :func:`contact.run_analysis`
         takes it
-    options : contact.compliance.fe.FEOptions, optional — the FE model (default
-        ``FEOptions()``)
+    options : contact.compliance.fe.FEOptions, optional — the FE model (default the
+        case's level, :func:`contact.compliance.fe.options.case_fe_options`)
     cache_dir : path, optional — as :func:`contact.compliance.fe.influence_coefficients`
 
     Returns
@@ -199,7 +210,7 @@ def coefficients_cached(case, flank: str | None = None, options=None, *,
     from contact.compliance.fe import cache_key, cache_path
     from contact.utca.easeoff import working_flanks
 
-    opt = options if options is not None else FEOptions()
+    opt = options if options is not None else case_fe_options(case)
     return all(cache_path(cache_key(case.member(m), f, opt), cache_dir).exists()
                for m, f in zip(MEMBERS, working_flanks(case, flank), strict=True))
 
@@ -541,6 +552,47 @@ def root_stress_notes(ltca: xr.Dataset) -> list[str]:
             for line in str(attrs.get(attr, "")).splitlines() if line]
 
 
+@memoised(maxsize=16)
+def _coefficients_level(*options: str) -> str | None:
+    """The level (:data:`contact.compliance.fe.options.LEVELS`) of the FE model whose
+    coefficients carry these ``options`` attributes (``FEOptions.to_json``), one per member:
+    the coefficients used, whether built here, read from the cache or given (a study's,
+    a duty cycle's); None where the members' models differ, are no named level or do not
+    say."""
+    import json
+
+    try:
+        names = {level_name(FEOptions(**json.loads(text))) for text in options}
+    except (ValueError, TypeError, InputError):
+        return None
+    return names.pop() if len(names) == 1 else None
+
+
+def fe_level_note(ltca: xr.Dataset) -> str | None:
+    """The sentence that names the FE level of a root stress on a named cheaper model and
+    its stated accuracy (the ``fe_level`` and ``fe_level_accuracy`` attributes of
+    ``root_stress_max``, :func:`root_stress`), as ``ltca run``, the file's summary and the
+    verdict say it; None for the default model (or no root stress).
+
+    Parameters
+    ----------
+    ltca : xarray.Dataset — ``/ltca``
+
+    Returns
+    -------
+    str or None — e.g. ``"root stress: FE coarse10 level (−1.0 … +7.1 % against the
+        default mesh, docs/fe.md)"``
+    """
+    if "root_stress_max" not in ltca.variables:
+        return None
+    attrs = ltca.variables["root_stress_max"].attrs
+    level = attrs.get(FE_LEVEL_ATTR)
+    if not level:
+        return None
+    return (f"root stress: FE {level} level ({attrs.get(FE_ACCURACY_ATTR, '')}, docs/fe.md; "
+            "`ltca run --fe-level default` gives the default model)")
+
+
 #: the end of a slot bottom's kind (:attr:`contact.compliance.fe.section.ToothSections.
 #: kinds`) where the FE model rounds the two cuts' crossing by step 2's small arc
 NOTCHED_KIND = ", rounded into a fillet"
@@ -798,8 +850,10 @@ def root_stress(case, easeoff: EaseOff, ltca: xr.Dataset,
     ltca : xarray.Dataset — ``/ltca`` of :func:`contact.ltca.loaded_tca`: ``force``
         (torque, roll, pair, segment) [N], ``contact_point`` (roll, pair, segment, xyz)
         [mm]
-    options : contact.compliance.fe.FEOptions, optional — the FE model (default
-        ``FEOptions()``; its coefficients are built once per member and design, then
+    options : contact.compliance.fe.FEOptions, optional — the FE model (default the
+        case's level, ``[root_stress] fe_level``
+        (:func:`contact.compliance.fe.options.case_fe_options`): ``FEOptions()`` where the
+        case names none; its coefficients are built once per member and design, then
         read from the cache: docs/fe.md gives the cost, ~0.5–1.5 min per member with PARDISO)
     coefficients : dict, optional — ``{"pinion": ds, "gear": ds}`` influence coefficients
         of the ease-off's working flanks (then ``options`` and the cache are not used)
@@ -840,8 +894,9 @@ def root_stress(case, easeoff: EaseOff, ltca: xr.Dataset,
         raise InputError(f"ltca: lacks {', '.join(missing)} (not an /ltca dataset)")
     t0 = time.perf_counter()
     flanks = {"pinion": easeoff.pinion_flank, "gear": easeoff.gear_flank}
+    opt = options if options is not None else case_fe_options(case)
     # read once per process (a study's worker, a duty cycle's bins)
-    coef = pair_coefficients(case, flanks, options, coefficients, cache=cache,
+    coef = pair_coefficients(case, flanks, opt, coefficients, cache=cache,
                              cache_dir=cache_dir, progress=progress, solver=solver)
     t1 = time.perf_counter()
     pts = member_contact_points(case, easeoff, ltca)
@@ -903,6 +958,12 @@ def root_stress(case, easeoff: EaseOff, ltca: xr.Dataset,
         str(coef[m].attrs.get("cache_key", "")) for m in MEMBERS)
     ds["root_stress"].attrs["source"] = ("superposition of FE fillet-stress influence "
                                          "coefficients (contact.ltca.root_stress; docs/fe.md)")
+    level = _coefficients_level(*(str(coef[m].attrs.get("options", "")) for m in MEMBERS))
+    if level not in (None, "default"):  # a named cheaper model: said with its accuracy
+        # (the default model's dataset as before: no attribute)
+        for name in ("root_stress", "root_stress_max"):
+            ds[name].attrs[FE_LEVEL_ATTR] = level
+            ds[name].attrs[FE_ACCURACY_ATTR] = LEVEL_ACCURACY[level]
     log.info("root stress: coefficients %.2f s, superposition %.3f s", t1 - t0,
              time.perf_counter() - t1)
     ds.attrs["time_root_stress_coefficients_s"] = t1 - t0

@@ -838,7 +838,8 @@ def _both_flanks_built(case: Case, wanted: bool, built: list[Case],
     nothing was built here (not ``wanted``, or no case before: unknown)."""
     if not wanted:
         return True
-    from contact.compliance.fe import FEOptions, cache_key
+    from contact.compliance.fe import cache_key
+    from contact.compliance.fe.options import case_fe_options
     from contact.optimize.development_root import both_flanks_built
 
     earlier = built[-1] if built else None
@@ -847,8 +848,9 @@ def _both_flanks_built(case: Case, wanted: bool, built: list[Case],
     if earlier is None:
         return True
     try:
-        return any(m not in kept and cache_key(case.member(m), "concave", FEOptions())
-                   != cache_key(earlier.member(m), "concave", FEOptions())
+        opt = case_fe_options(case)  # the case's FE level ([root_stress] fe_level)
+        return any(m not in kept and cache_key(case.member(m), "concave", opt)
+                   != cache_key(earlier.member(m), "concave", case_fe_options(earlier))
                    for m in ("pinion", "gear"))
     except Exception as exc:  # unknown: taken as changed (the root capacity taken again)
         raise_if_interrupted(exc)

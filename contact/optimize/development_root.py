@@ -126,15 +126,16 @@ def _in_worker_session(function: Callable) -> Callable:
 
 
 def _drive_cached(case, member: str) -> bool:
-    """Whether the member's default FE model of its drive flank has a cache entry (its
+    """Whether the member's FE model of its drive flank (the case's level,
+    :func:`contact.compliance.fe.options.case_fe_options`) has a cache entry (its
     file exists; :func:`contact.compliance.fe.contact_compliance.shared_coefficients`
     checks it when it reads it and builds it again where it fails a check)."""
     from contact.compliance.fe.cache import cache_key, cache_path
-    from contact.compliance.fe.options import FEOptions, member_flank
+    from contact.compliance.fe.options import case_fe_options, member_flank
 
     try:
         key = cache_key(case.member(member), member_flank(case, member, "drive"),
-                        FEOptions())
+                        case_fe_options(case))
         return cache_path(key).is_file()
     except OSError:
         return False
@@ -143,7 +144,8 @@ def _drive_cached(case, member: str) -> bool:
 @_in_worker_session
 def both_flanks_built(case, earlier=None,
                       say: Callable[[str], None] | None = None) -> dict[str, float]:
-    """Both members' default FE models of the written ``case`` built once for both flanks
+    """Both members' FE models of the written ``case`` (its level, ``[root_stress]
+    fe_level``: :func:`contact.compliance.fe.options.case_fe_options`) built once for both flanks
     (:func:`contact.compliance.fe.influence_coefficients` with ``other_flank``: the coast
     flank's coefficients on the drive build's solid and factorisation, the same numbers as
     a build of their own), cached for the drive flank's root-stress check, the coast
@@ -177,8 +179,10 @@ def both_flanks_built(case, earlier=None,
         remember_written,
         shared_coefficients,
     )
+    from contact.compliance.fe.options import case_fe_options
     from contact.compliance.fe.reuse import REUSE_DEPTH_FRACTION, reuse_near_model
 
+    opt = case_fe_options(case)  # ltca run's model of the case written (its FE level)
     kept = {}
     for member in ("pinion", "gear"):
         if earlier is not None and earlier is not case:
@@ -186,7 +190,7 @@ def both_flanks_built(case, earlier=None,
             try:
                 # the earlier entries through the process's memo (built or read by the
                 # first pass), the new ones kept there as written (issue 75)
-                deviation = reuse_near_model(case, earlier, member, refused=refused,
+                deviation = reuse_near_model(case, earlier, member, opt, refused=refused,
                                              read=cached_entry, written=remember_written)
             except Exception as exc:  # built below as before
                 raise_if_interrupted(exc)
@@ -207,7 +211,7 @@ def both_flanks_built(case, earlier=None,
                 # read once for the root-stress checks that follow (the process's memo of
                 # contact.compliance.fe.contact_compliance.shared_coefficients): read
                 # here and again there, ~0.25 s of CPU per file (issue 75)
-                shared_coefficients(case, member, "drive", progress=False)
+                shared_coefficients(case, member, "drive", opt, progress=False)
             else:
                 if say is not None:  # the longest stretch of a new design without a line
                     say(f"development: building the {member}'s FE models (both flanks) for "
@@ -215,7 +219,7 @@ def both_flanks_built(case, earlier=None,
                         "run` (~15-20 s of CPU per member, docs/fe.md)")
                 # the four entries kept in the process's memo as written: the checks
                 # that follow read none of them back from disk (issue 75)
-                influence_coefficients(case, member, "drive", progress=False,
+                influence_coefficients(case, member, "drive", opt, progress=False,
                                        other_flank=True, written=remember_written)
         except Exception as exc:  # the checks build their own and report (never fatal)
             raise_if_interrupted(exc)

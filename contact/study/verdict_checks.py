@@ -152,6 +152,8 @@ def _root_stress(lt: xr.Dataset, rt: xr.Dataset | None) -> list:
     from contact.study.verdicts import Finding
 
     rs = lt["root_stress_max"].transpose("torque", "member")
+    level = rs.attrs.get("fe_level")  # a named cheaper FE model (absent: the default)
+    fe = f"FE root stress ({level} level)" if level else "FE root stress"
     names = member_names(rs)
     torques = rs["torque"].values
     values = np.asarray(rs.values, float)
@@ -175,7 +177,7 @@ def _root_stress(lt: xr.Dataset, rt: xr.Dataset | None) -> list:
                 fp = float(np.atleast_1d(rt["sigma_FP"].values)[j])
                 ynt = float(y_nt[j % y_nt.size])
                 static = fp * _static_factor(lt, j) / ynt
-                reason = (f"FE root stress of the {m} at {_t(t)}: {values[i, j]:.0f} MPa × "
+                reason = (f"{fe} of the {m} at {_t(t)}: {values[i, j]:.0f} MPa × "
                           f"K_A {k_a:g} × K_v {k_v:.3f} = {eff:.0f} MPa against σ_FP "
                           f"{fp:.0f} MPa (ISO 10300-3, σ_Flim Y_ST Y_NT Y_δrelT Y_RrelT Y_X): "
                           f"S_F {s:.2f} below S_Fmin {smin:g}")
@@ -206,7 +208,7 @@ def _root_stress(lt: xr.Dataset, rt: xr.Dataset | None) -> list:
             x = values[i, j]
             if not np.isfinite(x) or x <= limit:
                 continue
-            bits = (f"FE root stress of the {m} at {_t(t)}: {x:.0f} MPa (no ISO 10300 "
+            bits = (f"{fe} of the {m} at {_t(t)}: {x:.0f} MPa (no ISO 10300 "
                     f"rating: K_A = K_v = 1, Y_δrelT = Y_RrelT = Y_X = 1) above")
             if x > static:
                 out.append(Finding("fail", "root_stress",

@@ -262,7 +262,9 @@ class Verdict:
         What a check left out and why, where no finding says it: a flank peak pressure
         above σ_Hlim in the dataset only through contact curves clipped into a flank
         corner (:func:`contact.ltca.summary.flank_peak`); a duty-cycle bin's above the
-        static strength only through them (the ``static`` check).
+        static strength only through them (the ``static`` check); the FE level of a
+        root stress computed on a named cheaper model and its accuracy against the
+        default model (:func:`contact.ltca.root_stress.fe_level_note`).
     """
 
     kind: str
@@ -1425,7 +1427,13 @@ def verdict(result: xr.DataTree | xr.Dataset, *, lte_limit: float = LTE_LIMIT) -
     findings, checks = _KINDS[kind](result, lte_limit=lte_limit)
     notes: list[str] = []
     if kind == "analysis" and isinstance(result, xr.DataTree):
-        notes = _flank_notes(_group(result, "ltca"))
+        lt = _group(result, "ltca")
+        notes = _flank_notes(lt)
+        if lt is not None:  # a root stress on a named cheaper FE model: its level said
+            from contact.ltca.root_stress import fe_level_note
+
+            level = fe_level_note(lt)
+            notes += [level] if level is not None else []
     elif kind == "duty cycle":
         ds = result["duty_cycle"].to_dataset() if isinstance(result, xr.DataTree) else result
         notes = (_duty_static(ds) or ([], []))[1]

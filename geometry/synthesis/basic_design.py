@@ -455,6 +455,11 @@ class BasicDesign:
         The file's ``[development]`` table: the development-bearing targets of
         ``ltca synthesize`` (schema of :class:`contact.optimize.development.DevelopmentTargets`,
         ``docs/synthesis.md``), unvalidated here; empty for the stated defaults.
+    root_stress : dict
+        The file's ``[root_stress]`` table (``fe_level``: the FE model of the root stress,
+        :func:`contact.compliance.fe.options.fe_level_of`), copied into the synthesised
+        case; unvalidated here (``ltca synthesize`` writes the level it used: its
+        ``--fe-level``, else this table's, else ``"coarse10"``); empty if absent.
     """
 
     name: str
@@ -469,6 +474,7 @@ class BasicDesign:
     rating: Mapping[str, Any] = field(default_factory=dict)
     path: str = ""
     development: Mapping[str, Any] = field(default_factory=dict)
+    root_stress: Mapping[str, Any] = field(default_factory=dict)
 
     def blank(self) -> BlankGeometry:
         """ISO 23509 blank geometry of the design (pitch cone and both members), its face
@@ -558,7 +564,7 @@ _OPTION_FIELDS = {"drive_flank", "gear_process", "pinion_process", "cutter_radiu
                   "design_torque", "edge_break_radius"}
 _FLANK_FIELDS = {f.name for f in fields(FlankOptions)}
 _TOP = {"name", "source", "design", "targets", "synthesis", "notes", "operating", "optimize",
-        "rating", "development"}
+        "rating", "development", "root_stress"}
 
 
 def _same(v):
@@ -761,7 +767,8 @@ def basic_from_dict(raw: Mapping[str, Any], *, fit: bool = True) -> BasicDesign:
                        targets=targets, adjust=tuple(adjust), options=options,
                        comments=dict(notes), operating=operating,
                        optimize=dict(raw.get("optimize", {})),
-                       rating=dict(rating), development=_table(raw, "development"))
+                       rating=dict(rating), development=_table(raw, "development"),
+                       root_stress=_table(raw, "root_stress"))
 
 
 def _table(raw: Mapping[str, Any], name: str) -> dict[str, Any]:

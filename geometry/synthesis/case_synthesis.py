@@ -456,7 +456,8 @@ def synthesize(basic: BasicDesign, *, conjugate: bool = False,
         the prescriptions and the design positions (informational); ``extra["design"]``
         and ``extra["rating"]`` are the ISO 10300 rating's inputs (the fitted basic design
         data; the basic file's ``[rating]`` table, else :data:`~geometry.synthesis.
-        basic_design.DEFAULT_RATING`).
+        basic_design.DEFAULT_RATING`); ``extra["root_stress"]`` the basic design's
+        ``root_stress`` table where it has one (the FE level of the root stress).
     report : SynthesisReport
         What the synthesis did: the blank geometry, the gear's tools and, per pinion
         flank, its synthesis (prescriptions, mean point, local synthesis, tools).
@@ -1314,4 +1315,6 @@ def _assemble(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
     # the ISO 10300 rating's inputs: the (fitted) basic design data and the rating table
     doc["design"] = d.to_degrees()
     doc["rating"] = dict(basic.rating) if basic.rating else dict(DEFAULT_RATING)
+    if basic.root_stress:  # the FE level of the root stress (contact's to read)
+        doc["root_stress"] = dict(basic.root_stress)
     return case_from_dict(doc)

@@ -9,6 +9,13 @@ Public names
 ------------
 FEOptions          the options, validated on construction
 LEVELS             named FE models (FEOptions.at_level) → the fields each sets
+LEVEL_ACCURACY     named FE model → its peak root stress against the default model's (words)
+CASE_TABLE         the case's table naming the FE level of its root stress ("root_stress")
+SYNTHESIS_LEVEL    the level ``ltca synthesize`` writes into a new design's case
+fe_level_of        the FE level a case's ``[root_stress]`` table names, validated
+case_fe_options    the FE model of a case's root stress: its level's FEOptions
+level_name         the level an FEOptions is (None for another model)
+with_fe_level      a case with the FE level of its root stress written
 ELEMENTS           element name → (scikit-fem element class, nodes per element)
 CONSTRAINTS        support name → what is held fixed (words; the facets are chosen in
                    :mod:`contact.compliance.fe.solid`)
@@ -32,14 +39,21 @@ from geometry.core.hertz import STEEL
 from geometry.core.validation import integer, one_of, positive, real
 
 __all__ = [
+    "CASE_TABLE",
     "CONSTRAINTS",
     "ELEMENTS",
     "FLANK_ROLES",
     "LEVELS",
+    "LEVEL_ACCURACY",
     "MATING_FLANK",
     "SLOT_BOTTOMS",
+    "SYNTHESIS_LEVEL",
     "FEOptions",
+    "case_fe_options",
+    "fe_level_of",
+    "level_name",
     "member_flank",
+    "with_fe_level",
 ]
 
 #: element name → (scikit-fem element, nodes per element). Both are quadratic: the
@@ -84,13 +98,120 @@ FLANK_ROLES = ("drive", "coast")
 #: hypoid against 83 172 / 73 992 and 231, its build of both members and both flanks 0.42–0.50
 #: of the default's CPU. Its peak root stress against the default model's, measured on
 #: four designs, both flanks, both members, at each flank's torques: docs/fe.md, "A
-#: coarse model for a new design". Not the default of any command: a model a verdict
-#: may rest on only where that error is accepted.
+#: coarse model for a new design". ``"coarse10"``: the same with 10 elements along the
+#: face (its peak root stress −1.03 … +7.08 % of the default model's on the same four
+#: designs: low by at most ~1 %, the unsafe side), the root-stress model of the cases
+#: ``ltca synthesize`` writes (:data:`SYNTHESIS_LEVEL`; issue 75). A case names its
+#: level in ``[root_stress] fe_level`` (:func:`fe_level_of`); absent, the default.
 LEVELS: dict[str, dict[str, int]] = {
     "default": {},
     "coarse": {"face_divisions": 8, "fillet_divisions": 4, "flank_divisions": 5,
                "slot_divisions": 2, "rim_divisions": 3, "load_row_step": 2},
+    "coarse10": {"face_divisions": 10, "fillet_divisions": 4, "flank_divisions": 5,
+                 "slot_divisions": 2, "rim_divisions": 3, "load_row_step": 2},
 }
+
+#: level → its peak root stress (``root_stress_max``) against the default model's, as
+#: measured on four designs (the default case, the 10×43 and 5×43 hypoids, the
+#: face-hobbed 11×46), both flanks, both members, at each flank's torques (docs/fe.md,
+#: "A coarse model for a new design"); what ``ltca run``, the file's summary and the
+#: verdict say beside a root stress of that level
+LEVEL_ACCURACY: dict[str, str] = {
+    "default": "mesh-converged within 5 %",
+    "coarse": "−3.6 … +6.3 % against the default mesh",
+    "coarse10": "−1.0 … +7.1 % against the default mesh",
+}
+
+#: the case table that names the FE level of the case's root stress (``fe_level``)
+CASE_TABLE = "root_stress"
+
+#: the FE level ``ltca synthesize`` develops a new design with and writes into its case:
+#: 0.5–0.6 of the default build's CPU, its peak root stress low by at most ~1 % (the
+#: unsafe side) and high by up to 7 % (docs/fe.md)
+SYNTHESIS_LEVEL = "coarse10"
+
+
+def fe_level_of(case_or_table: Any) -> str:
+    """The FE level (a key of :data:`LEVELS`) of a case's root stress: its
+    ``[root_stress] fe_level``, ``"default"`` where the table or the field is absent.
+
+    Parameters
+    ----------
+    case_or_table : geometry.case.Case or mapping
+        A case (its ``extra["root_stress"]``, the file's ``[root_stress]`` table) or the
+        table itself (a basic design file's).
+
+    Returns
+    -------
+    str — a key of :data:`LEVELS`
+
+    Raises
+    ------
+    InputError
+        The table not a table, a field other than ``fe_level``, or a level not in
+        :data:`LEVELS` (the message names ``root_stress.fe_level`` and the levels).
+    """
+    if hasattr(case_or_table, "extra"):
+        table = case_or_table.extra.get(CASE_TABLE, {})
+    else:
+        table = {} if case_or_table is None else case_or_table
+    if not hasattr(table, "keys"):
+        raise InputError(f"{CASE_TABLE}: must be a table (fe_level = one of "
+                         f"{', '.join(map(repr, LEVELS))}), got {table!r}")
+    unknown = sorted(set(table) - {"fe_level"})
+    if unknown:
+        raise InputError(f"{CASE_TABLE}.{unknown[0]}: unknown field (the table has one: "
+                         f"fe_level, the FE model of the root stress)")
+    level = table.get("fe_level", "default")
+    if not isinstance(level, str) or level not in LEVELS:
+        raise InputError(f"{CASE_TABLE}.fe_level: must be one of "
+                         f"{', '.join(map(repr, LEVELS))} (the FE model of the root stress, "
+                         f"docs/fe.md), got {level!r}")
+    return level
+
+
+def case_fe_options(case) -> FEOptions:
+    """The FE model of ``case``'s root stress: :meth:`FEOptions.at_level` of its level
+    (:func:`fe_level_of`; ``FEOptions()`` where the case names none).
+
+    Raises
+    ------
+    InputError — as :func:`fe_level_of`.
+    """
+    return FEOptions.at_level(fe_level_of(case))
+
+
+def level_name(options: FEOptions) -> str | None:
+    """The key of :data:`LEVELS` whose model ``options`` is (every field equal), else
+    None (a model of the user's own)."""
+    for name in LEVELS:
+        if options == FEOptions.at_level(name):
+            return name
+    return None
+
+
+def with_fe_level(case, level: str):
+    """``case`` with ``[root_stress] fe_level = level`` written into its tables (the
+    case ``ltca synthesize`` writes names the level its root-stress checks used).
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    level : str — a key of :data:`LEVELS`
+
+    Returns
+    -------
+    geometry.case.Case
+
+    Raises
+    ------
+    InputError — an unknown level (the message lists :data:`LEVELS`).
+    """
+    from types import MappingProxyType
+
+    fe_level_of({"fe_level": level})
+    extra = {**case.extra, CASE_TABLE: {"fe_level": level}}
+    return dataclasses.replace(case, extra=MappingProxyType(extra))
 
 
 def member_flank(case, member: str, flank: str) -> str:
@@ -323,10 +444,12 @@ class FEOptions:
         Parameters
         ----------
         level : str
-            A key of :data:`LEVELS`: ``"default"`` (``FEOptions()``) or ``"coarse"``
+            A key of :data:`LEVELS`: ``"default"`` (``FEOptions()``), ``"coarse"``
             (fewer elements along the face and in the depth, every other load row
             above the root's first rows; 0.42–0.50 of the default's build CPU; its accuracy in
-            docs/fe.md, "A coarse model for a new design").
+            docs/fe.md, "A coarse model for a new design") or ``"coarse10"`` (the same
+            with 10 elements along the face: the cases ``ltca synthesize`` writes;
+            :data:`LEVEL_ACCURACY`).
         **changes
             Fields set after the level's (e.g. ``youngs_modulus``), as
             :func:`dataclasses.replace`.
