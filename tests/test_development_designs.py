@@ -272,7 +272,7 @@ REMEDIED = {"spiral_bevel_15x28_s110": ("b2", 28.0, 36.5, 62.4)}
 @pytest.mark.parametrize("name", sorted(REMEDIED))
 def test_remedied_design_applied_developed_and_run(name, tmp_path, capsys):
     """``ltca synthesize BASIC --apply-remedy``: the first line says the change, the case
-    records it (its ``[applied_remedy]`` table, its source's notes and blank), and the
+    records it (its ``[applied_remedy]`` table, its source's first sentence), and the
     remedied design's runs: no FAIL, the drive LTE within 60 urad at the run's torques
     and within the measured bound between them, the coast LTE within 60 urad at every
     torque analysed."""
@@ -292,7 +292,9 @@ def test_remedied_design_applied_developed_and_run(name, tmp_path, capsys):
     table = case["applied_remedy"]
     assert (table["field"], table["before"], table["after"]) == (field, before, after)
     assert table["eps_vb_after"] >= 1.25 > table["eps_vb_before"]
-    assert "applied remedy: " in case["source"] and f"{field} {after:g}" in case["source"]
+    said = case["source"].split(". ")[0]  # the first sentence: the basic data's source
+    assert "; remedied by ltca synthesize --apply-remedy: " in said and \
+        f"{field} {before:g} -> {after:g}" in said, said
 
     nc = tmp_path / f"{name}.nc"
     assert main(["run", str(case_path), "-o", str(nc)]) == 0

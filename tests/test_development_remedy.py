@@ -78,8 +78,8 @@ def test_apply_remedy_applies_the_checked_remedy_and_records_it(monkeypatch):
     at its written prescriptions, the best that passed (b2 36.5 mm: 60 against 173 µrad)
     applied to the basic data and that design developed; the result carries the change,
     the contact ratios before and after (ε_vβ 0.91 -> 1.25 on the real blank) and the
-    design as given's LTE, the remedied basic data say it in their notes (the case's
-    source) and the case's table records it, TOML-safe."""
+    design as given's LTE, the remedied basic data say it in their source (the case's
+    first sentence) and the case's table records it, TOML-safe."""
     basic = load_basic(FIFTEEN)
     seen = _stand_in_checks(monkeypatch, MEASURED)
     developed: list = []
@@ -103,8 +103,10 @@ def test_apply_remedy_applies_the_checked_remedy_and_records_it(monkeypatch):
                                  "91.8/445.5 N m")
     assert applied.given_worst == 93.0
     assert result.best.metrics["lte_peak_to_peak"][1] == 45.0  # the remedied development
-    note = developed[1].comments["applied remedy"]
-    assert note.startswith("gear face width b2 28 -> 36.5 mm")
+    assert developed[1].source == (basic.source.rstrip(".") + "; remedied by ltca synthesize "
+                                   "--apply-remedy: gear face width b2 28 -> 36.5 mm, the "
+                                   "contact-ratio remedy its note checked (contact.optimize."
+                                   "development_remedy; the basic data otherwise as given)")
     assert any("b2 28 -> 36.5 mm applied" in line for line in said)
     table = json.loads(json.dumps(applied_table(applied)))
     assert (table["field"], table["before"], table["after"]) == ("b2", 28.0, 36.5)
@@ -126,8 +128,8 @@ def test_apply_remedy_takes_the_spiral_angle_where_the_face_width_is_refused(mon
     assert result.remedy.check.change.field == "beta_m"
     assert math.degrees(developed[1].design.beta_m) == pytest.approx(43.9, abs=1e-9)
     assert developed[1].design.b2 == 28.0
-    assert developed[1].comments["applied remedy"].startswith(
-        "mean spiral angle beta_m 35 -> 43.9 deg")
+    assert "; remedied by ltca synthesize --apply-remedy: mean spiral angle beta_m 35 -> " \
+        "43.9 deg, " in developed[1].source
 
 
 def test_apply_remedy_refuses_where_no_remedy_passed(monkeypatch):

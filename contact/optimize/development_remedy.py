@@ -21,8 +21,8 @@ change that passed its check, on request:
   check_change`), the :class:`~contact.optimize.remedy_check.RemedyRecord` the note prints
   and the case records; :func:`chosen_check` the best that passed
   (:func:`~contact.optimize.remedy_check.ranked_changes`' first);
-* :func:`remedied_basic` — the basic data with that change, the change said in the
-  ``[notes]`` the case's ``source`` cites;
+* :func:`remedied_basic` — the basic data with that change, the change said in their
+  ``source``, which the case's ``source`` cites first;
 * :func:`developed_with_remedy` — the development of the basic data as given (the one
   whose written case the check needs), the check, and the development of the remedied
   basic data, returned with :class:`AppliedRemedy` as its ``remedy``.
@@ -266,8 +266,9 @@ def change_text(field: str, before: float, after: float) -> str:
 
 
 def remedied_basic(basic, change):
-    """The basic data with a remedy applied, the change said in its ``[notes]`` (which the
-    written case's ``source`` cites: "applied remedy: ...").
+    """The basic data with a remedy applied, the change said at the end of its ``source``
+    (the first sentence of the written case's: "...; remedied by ltca synthesize
+    --apply-remedy: gear face width b2 28 -> 36.5 mm, ...").
 
     Parameters
     ----------
@@ -290,11 +291,12 @@ def remedied_basic(basic, change):
                          f"field; accepted: {', '.join(_FIELDS)}")
     before = file_value(basic.design, change.field)
     design = dataclasses.replace(basic.design, **_design_fields(change))
-    said = (f"{change_text(change.field, before, file_value(design, change.field))}, the "
-            "contact-ratio remedy ltca synthesize checked (contact.optimize."
-            "development_remedy; the user's basic data otherwise as given)")
+    said = (f"remedied by ltca synthesize --apply-remedy: "
+            f"{change_text(change.field, before, file_value(design, change.field))}, the "
+            "contact-ratio remedy its note checked (contact.optimize.development_remedy; the "
+            "basic data otherwise as given)")
     return dataclasses.replace(basic, design=design,
-                               comments={**basic.comments, "applied remedy": said})
+                               source=f"{basic.source.strip().rstrip('.')}; {said}")
 
 
 def lte_parts(development) -> list[str]:
