@@ -48,7 +48,10 @@ def _result(basic, lte, coast_lte=(52.0, 78.0)):
     """A development result of ``basic`` whose chosen design reads ``lte`` (light, design)
     [µrad] at 91.8 / 612.4 N·m (the 15x28's torques) and its coast flank ``coast_lte``."""
     targets = DevelopmentTargets()
-    best = checked({"path_angle": -45.0}, metrics(lte_peak_to_peak=list(lte)), targets, 0.6)
+    # its written drive bearing's path and TE parabola (docs/synthesis.md, evb71: te_level
+    # 128.1 urad, matched to the load on purpose)
+    best = checked({"path_angle": -45.0, "te_level": 128.1},
+                   metrics(lte_peak_to_peak=list(lte)), targets, 0.6)
     case = types.SimpleNamespace(gear=types.SimpleNamespace(process="Formate"))
     coast = metrics(lte_peak_to_peak=list(coast_lte))
     return DevelopmentResult(basic, case, None, best, (best,), (91.8, 612.4), "given", {},
@@ -160,8 +163,9 @@ def test_apply_remedy_refuses_a_design_without_a_low_ratio_before_any_work(monke
 
 def test_first_lines_say_the_ratio_its_lte_and_the_checked_remedy(monkeypatch):
     """``ltca synthesize``'s first lines without the flag: ε_vβ, the developed LTE, the
-    limit and the checked remedy with its contact ratios and check; with it, what changed
-    and both designs' LTE; nothing where the LTE keeps the limit."""
+    limit and the checked remedy with its contact ratios and check (the unloaded TE named
+    instead where it is what the LTE is: remedy_check.lte_diagnosis); with it, what
+    changed and both designs' LTE; nothing where the LTE keeps the limit."""
     from contact.commands.synthesize import first_lines
     from contact.optimize.development_remedy import checked_record
 
@@ -177,6 +181,14 @@ def test_first_lines_say_the_ratio_its_lte_and_the_checked_remedy(monkeypatch):
                                "0.91 -> 1.25, eps_va 1.19 -> 1.19, unloaded TE p-p 60 urad "
                                "at the written prescriptions (the written case's 90)")
     assert "ltca synthesize x.toml --apply-remedy" in lines[1]
+    # where the written unloaded TE is what the LTE is (the 8x35 at k_d 2.16 of round 15:
+    # 609 urad, LTE 605/600 urad at a te_level of 10), no ratio remedy is offered first
+    ute = checked_record(basic, basic.design, (609.0, 859.0), 60.0)
+    loud = _result(basic, (605.0, 600.0))
+    loud.best.values["te_level"] = 10.0
+    lines = first_lines(basic, loud, ute, "x.toml")
+    assert lines[1] == ("  the drive LTE is the written flank's unloaded TE, not the contact "
+                        "ratio's (the note below): no contact-ratio remedy is the lever")
     assert first_lines(basic, _result(basic, (30.0, 50.0), (40.0, 55.0)), record,
                        "x.toml") == []
     applied = developed_with_remedy(

@@ -465,7 +465,10 @@ def first_lines(basic, development, record, shown: str) -> list[str]:
     -------
     list of str
         Empty without a development, or where no ratio is low (nothing checked) and no
-        remedy was applied, or where every written LTE p-p is within the limit.
+        remedy was applied, or where every written LTE p-p is within the limit. Where the
+        written drive flank's unloaded TE is what its LTE is
+        (:func:`contact.optimize.remedy_check.lte_diagnosis`), that is said instead of a
+        remedy.
     """
     from contact.optimize.development_remedy import (
         change_text,
@@ -507,6 +510,9 @@ def first_lines(basic, development, record, shown: str) -> list[str]:
            f"{PROFILE_CONTACT_RATIO_NOTE:g}")
     lines = [f"{low}: the developed LTE p-p {', '.join(lte_parts(development))} "
              f"(light/design), above the verdict's {LTE_LIMIT:g} urad"]
+    if _ute_is_the_lte(development, record):
+        return [*lines, "  the drive LTE is the written flank's unloaded TE, not the contact "
+                        "ratio's (the note below): no contact-ratio remedy is the lever"]
     chosen = chosen_check(record)
     if chosen is None:
         return [*lines, "  no contact-ratio remedy passed its check by a synthesis (the "
@@ -678,6 +684,21 @@ def run_synthesize(args: argparse.Namespace) -> int:
             if extra and extra not in str(exc):
                 exc.args = (f"{exc}{extra}", *exc.args[1:])
             raise
+
+
+def _ute_is_the_lte(development, record) -> bool:
+    """Whether the written drive flank's unloaded TE is what its LTE is
+    (:func:`contact.optimize.remedy_check.lte_diagnosis`, the note's and ``ltca run``'s one
+    statement), from the remedies' record's unloaded TE: then no contact-ratio remedy is
+    offered first."""
+    from contact.optimize.remedy_check import lte_diagnosis
+    from contact.study.verdicts import LTE_LIMIT
+
+    written = ((record.reference_ute, record.reference_span)
+               if math.isfinite(record.reference_ute) else None)
+    diagnosis = lte_diagnosis(development.best.metrics["lte_peak_to_peak"], LTE_LIMIT,
+                              written, getattr(development.best, "values", None) or {})
+    return diagnosis.cause == "unloaded_te"
 
 
 def _print_lines(lines: list[str]) -> None:
