@@ -247,8 +247,9 @@ def test_an_lte_finding_names_the_contact_ratios_and_the_remedy():
     # settings given by hand records no check of its remedies: said so
     assert "whether it lowers the LTE is not estimated from the basic data" in low[0]
     assert "(not checked by a synthesis: this case records no check" in low[0]
-    assert low[0].endswith("a trial: ltca synthesize BASIC.toml with it, then ltca run of "
-                           "the case it writes")
+    assert low[0].endswith("a trial: ltca synthesize BASIC.toml --apply-remedy (the best "
+                           "change that passes its check applied and developed; contact."
+                           "optimize.development_remedy), then ltca run of the case it writes")
     assert next_steps(tree, load_case(ROOT / "cases" / "iso10300_30_sample2.toml"),
                       "c.toml", None) == []
     # beyond twice the limit the finding FAILs (verdicts.LTE_FAIL_FACTOR): the same remedy

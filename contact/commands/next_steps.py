@@ -222,7 +222,9 @@ def overlap_lines(case, what: str = "the LTE spread", lte: Sequence[float] | Non
                  " (not checked by a synthesis: this case records no check; `ltca "
                  "synthesize` of its basic file checks each)")
     return [f"  next, {what} may be the design's: {said}{unchecked}; {cause}; a trial: ltca "
-            "synthesize BASIC.toml with it, then ltca run of the case it writes"]
+            "synthesize BASIC.toml --apply-remedy (the best change that passes its check "
+            "applied and developed; contact.optimize.development_remedy), then ltca run of "
+            "the case it writes"]
 
 
 def _written_ute(case, record) -> tuple[float, float] | None:

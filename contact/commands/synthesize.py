@@ -54,6 +54,14 @@ def register(sub) -> None:
                         "are, without developing the bearing under load (default: the "
                         "drive flank's path angle, ellipse and relief are developed to the "
                         "[development] targets, contact.optimize.development)")
+    p.add_argument("--apply-remedy", dest="apply_remedy", action="store_true",
+                   help="where a contact ratio is below its limit (face eps_vb < 1.25, "
+                        "profile eps_va < 1), apply the remedy the note checks (a gear face "
+                        "width b2 or mean spiral angle beta_m; a depth factor k_d or "
+                        "pressure angle alpha_dD) to the basic data and write the remedied "
+                        "design's development, the change recorded in its source (default: "
+                        "the basic data as given, the remedy only offered; about twice the "
+                        "CPU; contact.optimize.development_remedy)")
     # on a fresh numba cache only the envelope's kernels earn their compile back within
     # one synthesis (~10 s of compiling against ~14 s saved); the iso-lines', the shell's
     # and the block pivoting's (~17 s) do not: NumPy until cached (issue 75)
@@ -201,18 +209,15 @@ def low_overlap_lte(development, written_ute: tuple[float, float] | None = None)
         E.g. "the developed bearing's LTE p-p: drive 25/52 urad at 27/180 N m, coast 30/48
         urad at 27/121 N m (light/design), the development's target 40 urad missed".
     """
-    lte = development.best.metrics["lte_peak_to_peak"]
-    light, design = development.torque
-    parts = [f"drive {lte[0]:.0f}/{lte[1]:.0f} urad at {light:.4g}/{design:.4g} N m"]
-    worst = drive = float(max(lte))
+    from contact.optimize.development_remedy import lte_parts
+    from contact.study.verdicts import LTE_LIMIT
+
+    parts = lte_parts(development)
+    worst = drive = float(max(development.best.metrics["lte_peak_to_peak"]))
     coast = None
     if development.coast is not None:
-        c = development.coast["lte_peak_to_peak"]
-        cl, cd = development.coast_design_torques
-        parts.append(f"coast {c[0]:.0f}/{c[1]:.0f} urad at {cl:.4g}/{cd:.4g} N m")
-        coast = float(max(c))
+        coast = float(max(development.coast["lte_peak_to_peak"]))
         worst = max(worst, coast)
-    from contact.study.verdicts import LTE_LIMIT
 
     target = development.targets.max_lte
     # which flank misses, where one does and the other not (a face-hobbed 8x37 read
@@ -363,14 +368,18 @@ def _lte_notes(basic, case, development, ratios) -> tuple[list[str], object]:
         # each checked by a synthesis before it is offered; the written case's unloaded TE,
         # where it is what the LTE is, named instead of the contact ratios
         from contact.load_capacity.iso10300.face_contact import low_ratio_text
-        from contact.optimize.remedy_check import RemedyRecord
+        from contact.optimize.development_remedy import checked_record
+        from contact.optimize.remedy_check import recorded_judge
         from contact.study.verdicts import LTE_LIMIT
 
         written = _written_ute(case, development, ratios)
-        checks: list = []
-        judge = _remedy_judge(_prescribed(basic, case, development), written, checks)
+        # each change checked once (the record the case keeps and --apply-remedy applies),
+        # the sentence said from those checks
+        record = checked_record(_prescribed(basic, case, development), basic.design,
+                                written, LTE_LIMIT)
         said = low_ratio_text(basic.design, FACE_CONTACT_RATIO_NOTE,
-                              PROFILE_CONTACT_RATIO_NOTE, judge=judge)
+                              PROFILE_CONTACT_RATIO_NOTE,
+                              judge=None if record is None else recorded_judge(record))
         lines.append((said if said is not None else
                       f"contact ratios eps_va {ratios[0]:.2f}, eps_vb {ratios[1]:.2f}: "
                       f"below {PROFILE_CONTACT_RATIO_NOTE:g} / {FACE_CONTACT_RATIO_NOTE:g}"
@@ -379,10 +388,6 @@ def _lte_notes(basic, case, development, ratios) -> tuple[list[str], object]:
                       "a deeper tooth (k_d) or a smaller pressure angle (alpha_dD) eps_va")
                      + (f"; {low_overlap_lte(development, written)}"
                         if development is not None else ""))
-        if checks:
-            record = RemedyRecord(tuple(checks),
-                                  *(written if written is not None else (math.nan,) * 2),
-                                  LTE_LIMIT)
     if misjudged is not None:
         lines.append(misjudged)
     if far is None and development is not None:
@@ -425,43 +430,110 @@ def _prescribed(basic, case, development):
     (both flanks as written), the file's own without a development; its gear process the
     written case's where the file leaves it to ``"auto"`` (the remedies' syntheses then
     make the gear the written case has, not the first process that succeeds)."""
-    import dataclasses
+    from contact.optimize.development_remedy import prescribed_basic
 
-    prescribed = basic if development is None else development.basic
-    process = getattr(case.gear, "process", None)
-    if prescribed.options.gear_process == "auto" and process in ("Formate", "Generate"):
-        prescribed = dataclasses.replace(prescribed, options=dataclasses.replace(
-            prescribed.options, gear_process=process))
-    return prescribed
-
-
-def _remedy_judge(prescribed, written, checks: list | None = None):
-    """The check of each contact-ratio remedy before the note offers it
-    (:func:`contact.optimize.remedy_check.checked_remedy_text`): a synthesis of the changed
-    basic data at ``prescribed``'s prescriptions (the written case's) each, measured
-    against the written case's unloaded TE p-p (``written``: (µrad, µm) or None); each
-    check appended to ``checks`` where given (the case's record)."""
-    from contact.optimize.remedy_check import check_change, checked_remedy_text
-    from contact.study.verdicts import LTE_LIMIT
-
-    reference = written[0] if written is not None else math.nan
-
-    def judge(changes, target, none):
-        made = [check_change(prescribed, c) for c in changes]
-        if checks is not None:
-            checks.extend(made)
-        return checked_remedy_text(made, target, none, reference, LTE_LIMIT)
-
-    return judge
+    return prescribed_basic(basic, case, development)
 
 
 def _noted(basic, case, development):
-    """(case, contact ratios, LTE notes) of the case to write: :func:`_lte_notes` made
-    before it is written, the remedies' checks recorded in it (:func:`_with_record`) for
-    ``ltca run``'s next step."""
+    """(case, contact ratios, LTE notes, remedies' record) of the case to write:
+    :func:`_lte_notes` made before it is written, the remedies' checks recorded in it
+    (:func:`_with_record`) for ``ltca run``'s next step."""
     ratios = _contact_ratios(case)
     notes, record = _lte_notes(basic, case, development, ratios)
-    return (case if record is None else _with_record(case, record)), ratios, notes
+    return ((case if record is None else _with_record(case, record)), ratios, notes,
+            record)
+
+
+def _ratios_text(before: tuple[float, float], after: tuple[float, float]) -> str:
+    """"eps_vb 0.91 -> 1.25, eps_va 1.19 -> 1.18": both contact ratios before and after a
+    remedy (:func:`contact.optimize.development_remedy.contact_ratios_of`)."""
+    return (f"eps_vb {before[1]:.2f} -> {after[1]:.2f}, eps_va {before[0]:.2f} -> "
+            f"{after[0]:.2f}")
+
+
+def first_lines(basic, development, record, shown: str) -> list[str]:
+    """``ltca synthesize``'s first lines where a contact ratio is below its limit and the
+    developed LTE p-p exceeds the verdict's limit, or a remedy was applied: the ratio, the
+    LTE it leads to, the limit and the checked remedy (its contact ratios and its check's
+    unloaded TE p-p), or what ``--apply-remedy`` changed and both designs' LTE (issue 71:
+    the remedy said first and in numbers; :mod:`contact.optimize.development_remedy`).
+
+    Parameters
+    ----------
+    basic : geometry.synthesis.basic_design.BasicDesign
+        The basic data written (remedied where a remedy was applied).
+    development : contact.optimize.development.DevelopmentResult or None
+    record : contact.optimize.remedy_check.RemedyRecord or None
+        The remedies' checks of the case written (:func:`_lte_notes`).
+    shown : str
+        The basic file as the user named it.
+
+    Returns
+    -------
+    list of str
+        Empty without a development, or where no ratio is low (nothing checked) and no
+        remedy was applied, or where every written LTE p-p is within the limit. Where the
+        written drive flank's unloaded TE is what its LTE is
+        (:func:`contact.optimize.remedy_check.lte_diagnosis`), that is said instead of a
+        remedy.
+    """
+    from contact.optimize.development_remedy import (
+        change_text,
+        chosen_check,
+        contact_ratios_of,
+        file_value,
+        lte_parts,
+        remedied_basic,
+        worst_lte,
+    )
+    from contact.study.verdicts import LTE_LIMIT
+
+    if development is None:
+        return []
+    worst = worst_lte(development)
+    within = "within" if worst <= LTE_LIMIT else "above"
+    applied = getattr(development, "remedy", None)
+    if applied is not None:
+        change = applied.check.change
+        after = file_value(applied.basic.design, change.field)
+        given = ("above" if applied.given_worst > LTE_LIMIT else "within")
+        said = change_text(change.field, applied.before, after)
+        ratios = _ratios_text(applied.ratios_before, applied.ratios_after)
+        return [f"applied remedy (--apply-remedy): {said}: {ratios} (checked: "
+                f"unloaded TE p-p {applied.check.ute:.0f} urad at the written prescriptions "
+                f"of the design as given, whose own is {applied.record.reference_ute:.0f})",
+                f"  the design as given ({shown}), developed: LTE p-p "
+                f"{applied.given_lte} (light/design), {given} "
+                f"the verdict's {LTE_LIMIT:g} urad; not written",
+                f"  the remedied design, developed and written: LTE p-p "
+                f"{', '.join(lte_parts(development))} (light/design), {within} the "
+                f"verdict's {LTE_LIMIT:g} urad (ltca run judges it between its torques too)"]
+    if record is None or worst <= LTE_LIMIT:
+        return []
+    before = contact_ratios_of(basic.design)
+    low = (f"face contact ratio eps_vb {before[1]:.2f} below {FACE_CONTACT_RATIO_NOTE:g}"
+           if before[1] < FACE_CONTACT_RATIO_NOTE else
+           f"profile contact ratio eps_va {before[0]:.2f} below "
+           f"{PROFILE_CONTACT_RATIO_NOTE:g}")
+    lines = [f"{low}: the developed LTE p-p {', '.join(lte_parts(development))} "
+             f"(light/design), above the verdict's {LTE_LIMIT:g} urad"]
+    if _ute_is_the_lte(development, record):
+        return [*lines, "  the drive LTE is the written flank's unloaded TE, not the contact "
+                        "ratio's (the note below): no contact-ratio remedy is the lever"]
+    chosen = chosen_check(record)
+    if chosen is None:
+        return [*lines, "  no contact-ratio remedy passed its check by a synthesis (the "
+                        "note below says why each is refused)"]
+    remedied = remedied_basic(basic, chosen.change)
+    field = chosen.change.field
+    old, new = (file_value(b.design, field) for b in (basic, remedied))
+    return [*lines, f"  checked remedy: {change_text(field, old, new)}: "
+                    f"{_ratios_text(before, contact_ratios_of(remedied.design))}, unloaded "
+                    f"TE p-p {chosen.ute:.0f} urad at the written prescriptions (the written "
+                    f"case's {record.reference_ute:.0f}); its LTE is its own development's, "
+                    f"not estimated: ltca synthesize {shown} --apply-remedy applies it and "
+                    "writes that development"]
 
 
 def _with_record(case, record):
@@ -656,6 +728,56 @@ def run_synthesize(args: argparse.Namespace) -> int:
             raise
 
 
+def _ute_is_the_lte(development, record) -> bool:
+    """Whether the written drive flank's unloaded TE is what its LTE is
+    (:func:`contact.optimize.remedy_check.lte_diagnosis`, the note's and ``ltca run``'s one
+    statement), from the remedies' record's unloaded TE: then no contact-ratio remedy is
+    offered first."""
+    from contact.optimize.remedy_check import lte_diagnosis
+    from contact.study.verdicts import LTE_LIMIT
+
+    written = ((record.reference_ute, record.reference_span)
+               if math.isfinite(record.reference_ute) else None)
+    diagnosis = lte_diagnosis(development.best.metrics["lte_peak_to_peak"], LTE_LIMIT,
+                              written, getattr(development.best, "values", None) or {})
+    return diagnosis.cause == "unloaded_te"
+
+
+def _print_lines(lines: list[str]) -> None:
+    """Each line on standard output."""
+    for line in lines:
+        print(line)
+
+
+def _check_apply(args: argparse.Namespace) -> None:
+    """``--apply-remedy`` refused with ``--no-development``, before the work."""
+    from geometry.core.errors import InputError
+
+    if getattr(args, "apply_remedy", False) and not getattr(args, "development", True):
+        raise InputError("--apply-remedy: the remedy is checked at the developed design's "
+                         "written prescriptions and the remedied design is developed; it "
+                         "cannot be combined with --no-development")
+
+
+def _developed(basic, args: argparse.Namespace, steps):
+    """(development, the basic data written, its targets) of ``ltca synthesize``: the
+    development of ``basic`` to its ``[development]`` targets or, with ``--apply-remedy``,
+    that of the remedied basic data (:func:`contact.optimize.development_remedy.
+    developed_with_remedy`; each design's own targets, its µm amounts following its
+    size)."""
+    from contact.optimize.development import develop, targets_from_table
+
+    apply = getattr(args, "apply_remedy", False)
+    # refused before the work; the µm amounts follow the design's size
+    targets = targets_from_table(basic.development, size_scale=_size_scale(basic))
+    development = develop(basic, targets=None if apply else targets,
+                          progress=_say if getattr(args, "progress", False) else None,
+                          synthesis_progress=steps, apply_remedy=apply)
+    if development.remedy is not None:
+        return development, development.remedy.basic, development.targets
+    return development, basic, targets
+
+
 def _run_synthesize(args: argparse.Namespace) -> int:
     import dataclasses
     import tomllib
@@ -693,6 +815,7 @@ def _run_synthesize(args: argparse.Namespace) -> int:
         basic, checked_fe_level(getattr(args, "fe_level", None)))})
     if basic.rating:  # a bad [rating] table refused before the work (rating.<field>)
         RatingInputs.from_mapping(basic.rating)
+    _check_apply(args)
     steps = (StepLines("synthesize", SYNTHESIS_STEPS) if getattr(args, "progress", False)
              else None)
     development = targets = None
@@ -700,17 +823,10 @@ def _run_synthesize(args: argparse.Namespace) -> int:
     while True:
         try:
             if getattr(args, "development", True):
-                from contact.optimize.development import develop, targets_from_table
-
-                # refused before the work; the µm amounts follow the design's size
-                targets = targets_from_table(basic.development,
-                                             size_scale=_size_scale(basic))
-                development = develop(basic, targets=targets,
-                                      progress=_say if getattr(args, "progress", False)
-                                      else None, synthesis_progress=steps)
+                development, written_basic, targets = _developed(basic, args, steps)
                 case, report = development.case, development.report
             else:
-                case, report = synthesize(basic, progress=steps)
+                (case, report), written_basic = synthesize(basic, progress=steps), basic
             break
         except ReliefError as exc:
             adjusted = relief_for_profile(basic, exc)
@@ -721,6 +837,7 @@ def _run_synthesize(args: argparse.Namespace) -> int:
                           f"default, raised: the blade's circular profile turns "
                           f"{1e3 * exc.least:.3g} um from its tangent over the relief)")
             basic = adjusted
+    basic = written_basic  # the basic data written: the remedied where one was applied
     case, torque, torque_why = with_design_torque(case, basic.options.design_torque)
     if development is not None:
         case = development.recorded(case)
@@ -739,12 +856,14 @@ def _run_synthesize(args: argparse.Namespace) -> int:
     from contact.commands.synthesize_contact import checked_contact
 
     coast = checked_contact(case, basic.design)
-    case, ratios, notes = _noted(basic, case, development)
+    case, ratios, notes, record = _noted(basic, case, development)
     notes += coast
     text = _HEADER.format(basic=shown) + case.to_toml()
     # the written text must load back to the same case
     case_from_dict(tomllib.loads(text))
     path = write_text_atomic(Path(output), text)
+    # the cause and its checked remedy first, in numbers (issue 71)
+    _print_lines(first_lines(basic, development, record, shown))
     geom = report.blank
     print(f"{case.name}: {geom.design.z1}x{geom.design.z2}, offset {geom.design.a:g} mm, "
           f"beta_m {math.degrees(geom.pinion.beta_m):.2f}/{math.degrees(geom.gear.beta_m):.2f}"

@@ -225,12 +225,29 @@ __all__ = ["CHECK_LTCA", "COARSE_LTCA", "COAST_STATUS", "CROWNING_NAME", "CROWNI
            "working_depth_centre"]
 
 
+def _wrapped(basic: BasicDesign, apply_remedy: bool, **kw: Any) -> DevelopmentResult:
+    """:func:`develop` with ``apply_remedy`` (the design as given, its remedies checked,
+    the best applied: :func:`contact.optimize.development_remedy.developed_with_remedy`)
+    or ``gear_fallback`` (the generated gear too where the Formate gear's design fails:
+    :func:`contact.optimize.development_process.with_generated_gear`)."""
+    if apply_remedy:
+        from contact.optimize.development_remedy import developed_with_remedy
+
+        return developed_with_remedy(functools.partial(develop, **kw), basic,
+                                     kw.get("progress"))
+    from contact.optimize.development_process import with_generated_gear
+
+    kw.pop("outclassed_below", None)
+    return with_generated_gear(functools.partial(develop, **{**kw, "gear_fallback": False}),
+                               basic, kw.get("progress"))
+
+
 @blas_threads()  # small dense matrices: one BLAS thread (geometry.core.blas)
 def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
             progress: Callable[[str], None] | None = None,
             synthesis_progress: Any = None, root_stress: bool = True,
-            gear_fallback: bool = True, outclassed_below: float = math.nan
-            ) -> DevelopmentResult:
+            gear_fallback: bool = True, outclassed_below: float = math.nan,
+            apply_remedy: bool = False) -> DevelopmentResult:
     """Develop the drive flank, then the coast flank, of a basic design to the bearing of
     ``targets``.
 
@@ -267,6 +284,15 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
         outcome could not beat the design it is compared with
         (:func:`~contact.optimize.development_process.with_generated_gear`, which gives
         it). Default NaN: never.
+    apply_remedy : bool, optional
+        Default False: the basic data as given. True: develop the design as given, check
+        its contact-ratio remedies at its written prescriptions as ``ltca synthesize``'s
+        note does, apply the best that passed to the basic data (a gear face width b2 or
+        mean spiral angle β_m where ε_vβ < 1.25, a depth factor k_d or pressure angle
+        α_dD where ε_vα < 1) and return the remedied design's development, its
+        ``remedy`` saying what changed
+        (:func:`contact.optimize.development_remedy.developed_with_remedy`; about twice
+        the CPU).
 
     Returns
     -------
@@ -279,7 +305,9 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     Raises
     ------
     InputError
-        Bad targets, or no design could be synthesised and analysed (the reasons).
+        Bad targets, or no design could be synthesised and analysed (the reasons);
+        ``apply_remedy`` where no contact ratio is below its limit (before any work) or
+        no remedy passed its check (each refusal said).
     Outclassed
         The design torque lowered below ``outclassed_below``.
 
@@ -353,12 +381,10 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     from geometry.machine.relief import ReliefError
     from geometry.synthesis.case_synthesis import synthesize, tried_text
 
-    if gear_fallback:  # the generated gear too where the Formate gear's design fails
-        from contact.optimize.development_process import with_generated_gear
-
-        return with_generated_gear(functools.partial(
-            develop, targets=targets, progress=progress, synthesis_progress=synthesis_progress,
-            root_stress=root_stress, gear_fallback=False), basic, progress)
+    if apply_remedy or gear_fallback:
+        return _wrapped(basic, apply_remedy, targets=targets, progress=progress,
+                        synthesis_progress=synthesis_progress, root_stress=root_stress,
+                        gear_fallback=gear_fallback, outclassed_below=outclassed_below)
     t0 = time.process_time()
     basic.blank()  # blanks the basic data cannot make: its own error, before any trial
     targets = targets or targets_from_table(basic.development, size_scale=basic.size_scale())

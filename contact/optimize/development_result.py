@@ -175,6 +175,11 @@ class DevelopmentResult:
         (:func:`contact.optimize.development_range_lte.range_record`: ``"torques"`` [N·m],
         ``"lte"`` [µrad], ``"peak"`` [µrad], ``"at"`` [N·m]); None where the check's steps
         did not judge it at these torques.
+
+    remedy : contact.optimize.development_remedy.AppliedRemedy or None
+        The contact-ratio remedy applied to the user's basic data before this development
+        (``develop(..., apply_remedy=True)``, ``ltca synthesize --apply-remedy``; its
+        ``basic`` the remedied basic data as given); None where none was.
     """
 
     basic: BasicDesign
@@ -206,6 +211,8 @@ class DevelopmentResult:
     lte_reach: dict | None = None
     tolerant_torque: tuple[float, float] = (math.nan, math.nan)
     lte_range: dict | None = None
+
+    remedy: Any = None
 
     @property
     def tolerant(self) -> bool:
@@ -383,11 +390,18 @@ class DevelopmentResult:
         """``case`` (the developed case, maybe with its rating's design torque set) with
         :meth:`summary` appended to its ``source``, :meth:`table` as its informational
         ``[development]`` table and, where the basic file's ``[operating]`` gives no
-        torques, the light and the design torque as its operating torques [N·m]."""
+        torques, the light and the design torque as its operating torques [N·m]; where a
+        contact-ratio remedy was applied (:attr:`remedy`), its informational
+        :data:`~contact.optimize.development_remedy.REMEDY_TABLE` table."""
         import json
         from types import MappingProxyType
 
-        extra = json.loads(json.dumps({**case.extra, "development": self.table()}))
+        tables: dict[str, Any] = {"development": self.table()}
+        if self.remedy is not None:
+            from contact.optimize.development_remedy import REMEDY_TABLE, applied_table
+
+            tables[REMEDY_TABLE] = applied_table(self.remedy)
+        extra = json.loads(json.dumps({**case.extra, **tables}))
         if self.torque_lowered:  # the rating's design torque is the bearing's capacity
             rating = dict(extra.get("rating") or {})
             rating["design_torque"] = float(self.torque[1])

@@ -1,0 +1,453 @@
+"""The checked contact-ratio remedy applied to the basic data: ``ltca synthesize
+--apply-remedy``, ``develop(basic, apply_remedy=True)`` (issue 71, session 19: "LTE p-p ≤
+60 µrad at every torque" on a design whose face contact ratio ε_vβ is at or below 1).
+
+Three basic designs of ``benchmarks/data/unseen_designs`` (the spiral bevel 15×28 at Σ 110°,
+ε_vβ 0.91; the hypoid 15×31 at a = 0.056 d_e2, ε_vβ 1.00; the face-hobbed spiral bevel
+20×24 at Σ 100°, ε_vβ 0.84) reach no LTE p-p ≤ 60 µrad at every torque with any lever of
+the development (docs/synthesis.md, "LTE at every torque on a face contact ratio below 1",
+"The path turned again for the design torque's LTE"): the basic data must change.
+``ltca synthesize``'s note offers the change, each one checked by a synthesis at the
+written prescriptions (:mod:`contact.optimize.remedy_check`); the user's basic data stay
+the default (a face width is often fixed by the housing). This module applies the best
+change that passed its check, on request:
+
+* :func:`ratio_changes` — the changes the note offers (the face contact ratio's where
+  ε_vβ < :data:`~contact.load_capacity.iso10300.face_contact.FACE_CONTACT_RATIO_MIN`, then
+  the profile contact ratio's where ε_vα <
+  :data:`~contact.load_capacity.iso10300.face_contact.PROFILE_CONTACT_RATIO_MIN`), from the
+  basic data alone;
+* :func:`checked_record` — each change checked (:func:`~contact.optimize.remedy_check.
+  check_change`), the :class:`~contact.optimize.remedy_check.RemedyRecord` the note prints
+  and the case records; :func:`chosen_check` the best that passed
+  (:func:`~contact.optimize.remedy_check.ranked_changes`' first);
+* :func:`remedied_basic` — the basic data with that change, the change said in their
+  ``source``, which the case's ``source`` cites first;
+* :func:`developed_with_remedy` — the development of the basic data as given (the one
+  whose written case the check needs), the check, and the development of the remedied
+  basic data, returned with :class:`AppliedRemedy` as its ``remedy``.
+
+Public names
+------------
+REMEDY_TABLE, AppliedRemedy, ratio_changes, contact_ratios_of, prescribed_basic,
+checked_record, chosen_check, remedied_basic, file_value, change_text, lte_parts, worst_lte,
+developed_with_remedy, applied_table
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import logging
+import math
+from collections.abc import Callable
+from typing import Any, NamedTuple
+
+__all__ = ["REMEDY_TABLE", "AppliedRemedy", "applied_table", "change_text", "checked_record",
+           "chosen_check", "contact_ratios_of", "developed_with_remedy", "file_value", "lte_parts",
+           "prescribed_basic", "ratio_changes", "remedied_basic", "worst_lte"]
+
+log = logging.getLogger(__name__)
+
+#: the written case's informational table that records the remedy applied to the basic
+#: data (:func:`applied_table`)
+REMEDY_TABLE = "applied_remedy"
+
+#: each remedy field: (its name in words, its unit as the basic file gives it, whether the
+#: design data hold it in radians)
+_FIELDS = {"b2": ("gear face width", "mm", False),
+           "beta_m": ("mean spiral angle", "deg", True),
+           "k_d": ("depth factor", "", False),
+           "alpha_dD": ("drive pressure angle", "deg", True)}
+
+
+class AppliedRemedy(NamedTuple):
+    """The remedy :func:`developed_with_remedy` applied, and the design as given.
+
+    Attributes
+    ----------
+    check : contact.optimize.remedy_check.ChangeCheck
+        The change applied and its check (unloaded TE p-p [µrad], ease-off [µm] at the
+        given design's written prescriptions).
+    record : contact.optimize.remedy_check.RemedyRecord
+        Every change checked (the note's sentence of the design as given).
+    basic : geometry.synthesis.basic_design.BasicDesign
+        The remedied basic data, as given to the development (the user's prescriptions).
+    before : float — [file unit: mm, deg, 1]
+        The field's value in the user's basic data.
+    ratios_before, ratios_after : (float, float) — [1]
+        (ε_vα, ε_vβ) of the design as given and remedied (:func:`contact_ratios_of`).
+    given_lte : str
+        The developed LTE p-p of the design as given (:func:`lte_parts`).
+    given_worst : float — [µrad]
+        Its largest LTE p-p, drive or coast, light or design torque.
+    """
+
+    check: Any
+    record: Any
+    basic: Any
+    before: float
+    ratios_before: tuple[float, float]
+    ratios_after: tuple[float, float]
+    given_lte: str
+    given_worst: float
+
+
+def ratio_changes(design) -> list:
+    """The basic-file changes ``ltca synthesize``'s contact-ratio note offers for a design:
+    the face contact ratio's (gear face width b2, mean spiral angle β_m:
+    :func:`~contact.load_capacity.iso10300.face_contact.overlap_changes`) where ε_vβ is
+    below its limit, then the profile contact ratio's (k_d, α_dD:
+    :func:`~contact.load_capacity.iso10300.face_contact.profile_changes`) where ε_vα is;
+    in the order the note prints them (:func:`~contact.load_capacity.iso10300.face_contact.
+    low_ratio_text`).
+
+    Parameters
+    ----------
+    design : geometry.iso23509.design_data.BevelGearDesign
+
+    Returns
+    -------
+    list of contact.load_capacity.iso10300.face_contact.RatioChange
+        Empty where both ratios meet their limits or the blank cannot be computed.
+    """
+    from contact.load_capacity.iso10300.face_contact import (
+        overlap_changes,
+        overlap_remedy,
+        profile_changes,
+        profile_remedy,
+    )
+    from geometry.core.errors import InputError
+
+    out: list = []
+    try:
+        face = overlap_remedy(design)
+    except (InputError, ValueError, ZeroDivisionError):
+        face = None
+    if face is not None and face.eps_vb < face.target:
+        out += overlap_changes(face, design)
+    try:
+        profile = profile_remedy(design)
+    except (InputError, ValueError, ZeroDivisionError, AttributeError):
+        profile = None
+    if profile is not None and profile.eps_va < profile.target:
+        out += profile_changes(profile)
+    return out
+
+
+def contact_ratios_of(design) -> tuple[float, float]:
+    """(ε_vα, ε_vβ) [1] of a basic design on ISO 10300-1's virtual cylindrical gears of its
+    ISO 23509 blank (:func:`~contact.load_capacity.iso10300.face_contact.profile_remedy`,
+    :func:`~contact.load_capacity.iso10300.face_contact.overlap_remedy`); NaN where the
+    blank cannot be computed.
+
+    Parameters
+    ----------
+    design : geometry.iso23509.design_data.BevelGearDesign
+    """
+    from contact.load_capacity.iso10300.face_contact import overlap_remedy, profile_remedy
+    from geometry.core.errors import InputError
+
+    try:
+        return (float(profile_remedy(design).eps_va), float(overlap_remedy(design).eps_vb))
+    except (InputError, ValueError, ZeroDivisionError, AttributeError):
+        return math.nan, math.nan
+
+
+def prescribed_basic(basic, case, development=None):
+    """The basic data at the written case's prescriptions: the development's ``basic``
+    (both flanks as written), the file's own without a development; its gear process the
+    written case's where the file leaves it to ``"auto"`` (the remedies' syntheses then
+    make the gear the written case has, not the first process that succeeds).
+
+    Parameters
+    ----------
+    basic : geometry.synthesis.basic_design.BasicDesign
+    case : geometry.case.Case
+        The written case (its gear's ``process``).
+    development : contact.optimize.development.DevelopmentResult, optional
+
+    Returns
+    -------
+    geometry.synthesis.basic_design.BasicDesign
+    """
+    prescribed = basic if development is None else development.basic
+    process = getattr(case.gear, "process", None)
+    if prescribed.options.gear_process == "auto" and process in ("Formate", "Generate"):
+        prescribed = dataclasses.replace(prescribed, options=dataclasses.replace(
+            prescribed.options, gear_process=process))
+    return prescribed
+
+
+def checked_record(prescribed, design, written: tuple[float, float] | None, limit: float):
+    """Each change of :func:`ratio_changes` checked by one synthesis at the written
+    prescriptions (:func:`~contact.optimize.remedy_check.check_change`).
+
+    Parameters
+    ----------
+    prescribed : geometry.synthesis.basic_design.BasicDesign
+        :func:`prescribed_basic`.
+    design : geometry.iso23509.design_data.BevelGearDesign
+        The user's design data (the changes' reference).
+    written : (float, float) or None
+        The written drive flank's unloaded TE p-p [µrad] and ease-off span [µm]
+        (:func:`~contact.optimize.remedy_check.unloaded_te_pp`); None: not measured.
+    limit : float — [µrad]
+        The verdict's LTE limit.
+
+    Returns
+    -------
+    contact.optimize.remedy_check.RemedyRecord or None
+        None where no contact ratio is below its limit (no change to check).
+    """
+    from contact.optimize.remedy_check import RemedyRecord, check_change
+
+    changes = ratio_changes(design)
+    if not changes:
+        return None
+    checks = tuple(check_change(prescribed, c) for c in changes)
+    return RemedyRecord(checks, *(written if written is not None else (math.nan,) * 2),
+                        float(limit))
+
+
+def chosen_check(record):
+    """The remedy to apply: the first that passed its check
+    (:func:`~contact.optimize.remedy_check.ranked_changes`: the lowest unloaded TE p-p,
+    a change that takes the other ratio below its limit last), or None where none did.
+
+    Parameters
+    ----------
+    record : contact.optimize.remedy_check.RemedyRecord or None
+    """
+    from contact.optimize.remedy_check import ranked_changes
+
+    if record is None:
+        return None
+    passed, _ = ranked_changes(record.checks, record.reference_ute, record.limit)
+    return passed[0] if passed else None
+
+
+def _design_fields(change) -> dict[str, float]:
+    """The change as design-data fields (angles [rad]); built from ``field`` and ``value``
+    where the change was read back from a case (its ``design`` empty)."""
+    if change.design:
+        return dict(change.design)
+    radians = _FIELDS.get(change.field, ("", "", False))[2]
+    return {change.field: math.radians(change.value) if radians else float(change.value)}
+
+
+def file_value(design, field: str) -> float:
+    """A design field as the basic file gives it.
+
+    Parameters
+    ----------
+    design : geometry.iso23509.design_data.BevelGearDesign
+    field : str
+        A ``[design]`` field (angles held in [rad]).
+
+    Returns
+    -------
+    float — [file unit: mm, deg, 1]
+    """
+    value = float(getattr(design, field))
+    return math.degrees(value) if _FIELDS.get(field, ("", "", False))[2] else value
+
+
+def change_text(field: str, before: float, after: float) -> str:
+    """A remedy applied in words: "gear face width b2 28 -> 36.5 mm".
+
+    Parameters
+    ----------
+    field : str
+        The ``[design]`` field (b2, beta_m, k_d, alpha_dD).
+    before, after : float — [file unit: mm, deg, 1]
+    """
+    name, unit, _ = _FIELDS.get(field, (field, "", False))
+    return f"{name} {field} {before:.4g} -> {after:.4g}" + (f" {unit}" if unit else "")
+
+
+def remedied_basic(basic, change):
+    """The basic data with a remedy applied, the change said at the end of its ``source``
+    (the first sentence of the written case's: "...; remedied by ltca synthesize
+    --apply-remedy: gear face width b2 28 -> 36.5 mm, ...").
+
+    Parameters
+    ----------
+    basic : geometry.synthesis.basic_design.BasicDesign
+    change : contact.load_capacity.iso10300.face_contact.RatioChange
+
+    Returns
+    -------
+    geometry.synthesis.basic_design.BasicDesign
+
+    Raises
+    ------
+    InputError
+        A field that is no remedy's (``change.field`` not b2, beta_m, k_d, alpha_dD).
+    """
+    from geometry.core.errors import InputError
+
+    if change.field not in _FIELDS:
+        raise InputError(f"apply_remedy: {change.field!r} is no contact-ratio remedy's "
+                         f"field; accepted: {', '.join(_FIELDS)}")
+    before = file_value(basic.design, change.field)
+    design = dataclasses.replace(basic.design, **_design_fields(change))
+    said = (f"remedied by ltca synthesize --apply-remedy: "
+            f"{change_text(change.field, before, file_value(design, change.field))}, the "
+            "contact-ratio remedy its note checked (contact.optimize.development_remedy; the "
+            "basic data otherwise as given)")
+    return dataclasses.replace(basic, design=design,
+                               source=f"{basic.source.strip().rstrip('.')}; {said}")
+
+
+def lte_parts(development) -> list[str]:
+    """A development's written LTE p-p in words: "drive 86/93 urad at 91.8/612.4 N m" and,
+    where its coast flank was checked, "coast 52/78 urad at 91.8/445.5 N m" (light/design).
+
+    Parameters
+    ----------
+    development : contact.optimize.development.DevelopmentResult
+    """
+    lte = development.best.metrics["lte_peak_to_peak"]
+    light, design = development.torque
+    parts = [f"drive {lte[0]:.0f}/{lte[1]:.0f} urad at {light:.4g}/{design:.4g} N m"]
+    if development.coast is not None:
+        c = development.coast["lte_peak_to_peak"]
+        cl, cd = development.coast_design_torques
+        parts.append(f"coast {c[0]:.0f}/{c[1]:.0f} urad at {cl:.4g}/{cd:.4g} N m")
+    return parts
+
+
+def worst_lte(development) -> float:
+    """The largest written LTE p-p [µrad] of a development: drive or (where checked)
+    coast, light or design torque.
+
+    Parameters
+    ----------
+    development : contact.optimize.development.DevelopmentResult
+    """
+    worst = float(max(development.best.metrics["lte_peak_to_peak"]))
+    if development.coast is not None:
+        worst = max(worst, float(max(development.coast["lte_peak_to_peak"])))
+    return worst
+
+
+def _refused_text(record) -> str:
+    """Why no change is applied: each one's refusal (:func:`~contact.optimize.remedy_check.
+    refusal`)."""
+    from contact.optimize.remedy_check import ranked_changes
+
+    _, refused = ranked_changes(record.checks, record.reference_ute, record.limit)
+    return "; ".join(f"{c.change.text}: {why}" for c, why in refused)
+
+
+def developed_with_remedy(run: Callable[[Any], Any], basic,
+                          say: Callable[[str], None] | None = None):
+    """The development of the remedied basic data: the design as given developed
+    (``run(basic)``), its contact-ratio remedies checked at its written prescriptions
+    (:func:`checked_record`, the note's check), the best that passed applied
+    (:func:`chosen_check`, :func:`remedied_basic`) and that design developed.
+
+    Parameters
+    ----------
+    run : callable BasicDesign → DevelopmentResult
+        The development (:func:`contact.optimize.development.develop` without
+        ``apply_remedy``).
+    basic : geometry.synthesis.basic_design.BasicDesign
+        The user's basic data.
+    say : callable, optional
+        Called with a line before each development.
+
+    Returns
+    -------
+    contact.optimize.development.DevelopmentResult
+        The remedied design's development, its ``remedy`` the :class:`AppliedRemedy`
+        (its ``basic`` the remedied basic data as given).
+
+    Raises
+    ------
+    InputError
+        Before any work: no contact ratio of ``basic`` below its limit (nothing to
+        remedy). After the first development: no change passed its check (each refusal
+        said); the design as given is then not returned in place of a remedied one.
+
+    Notes
+    -----
+    Two developments (about twice ``ltca synthesize``'s CPU) and one synthesis without
+    tip planes per change checked (0.5-1 s each). The change reaches its ratio's limit on
+    ISO 10300-1's virtual gears (ISO 23509 blank); its LTE is the remedied design's own
+    development, never estimated (docs/own_gear_set.md, "The overlap change is a trial").
+    """
+    from contact.optimize.remedy_check import unloaded_te_pp
+    from contact.study.verdicts import LTE_LIMIT
+    from geometry.core.errors import InputError, ModelUnavailableError
+
+    said = say or (lambda line: None)
+    before = contact_ratios_of(basic.design)
+    if not ratio_changes(basic.design):
+        raise InputError(
+            f"apply_remedy: no contact ratio of this design is below its limit (eps_va "
+            f"{before[0]:.2f}, eps_vb {before[1]:.2f}; limits 1 / 1.25, AGMA 2005-D03): "
+            "there is no contact-ratio remedy to apply; develop it without apply_remedy "
+            "(ltca synthesize without --apply-remedy)")
+    said("apply_remedy: the design as given developed first (its remedies are checked at "
+         "its written prescriptions)")
+    first = run(basic)
+    try:
+        written: tuple[float, float] | None = unloaded_te_pp(first.case)[:2]
+    except (InputError, ModelUnavailableError, ValueError) as exc:
+        log.info("the written case's unloaded TE not measured: %s", exc)
+        written = None
+    record = checked_record(prescribed_basic(basic, first.case, first), basic.design,
+                            written, LTE_LIMIT)
+    chosen = chosen_check(record)
+    if chosen is None:
+        raise InputError(
+            "apply_remedy: no contact-ratio remedy passed its check by a synthesis at the "
+            f"written prescriptions ({_refused_text(record)}); nothing written: the design "
+            "as given is developed and written without apply_remedy (ltca synthesize "
+            "without --apply-remedy), its note says why each change is refused")
+    remedied = remedied_basic(basic, chosen.change)
+    old = file_value(basic.design, chosen.change.field)
+    new = file_value(remedied.design, chosen.change.field)
+    said(f"apply_remedy: {change_text(chosen.change.field, old, new)} applied; the remedied "
+         "design developed")
+    second = run(remedied)
+    applied = AppliedRemedy(chosen, record, remedied, old, before,
+                            contact_ratios_of(remedied.design),
+                            ", ".join(lte_parts(first)), worst_lte(first))
+    return dataclasses.replace(second, remedy=applied)
+
+
+def applied_table(applied: AppliedRemedy) -> dict[str, Any]:
+    """The written case's informational :data:`REMEDY_TABLE` table (TOML-safe: a value not
+    measured is left out).
+
+    Parameters
+    ----------
+    applied : AppliedRemedy
+
+    Returns
+    -------
+    dict
+        ``note``, ``field``, ``before``, ``after`` [file unit], ``text`` (the note's
+        phrase), the contact ratios before and after, the design as given's LTE p-p
+        (``given_lte``, ``given_worst_lte_urad``) and ``checks``: every change checked
+        (:func:`~contact.optimize.remedy_check.remedy_record`).
+    """
+    from contact.optimize.remedy_check import remedy_record
+
+    change = applied.check.change
+    ratios = {"eps_va_before": applied.ratios_before[0], "eps_vb_before":
+              applied.ratios_before[1], "eps_va_after": applied.ratios_after[0],
+              "eps_vb_after": applied.ratios_after[1],
+              "given_worst_lte_urad": applied.given_worst}
+    return {"note": "informational (contact.optimize.development_remedy): the contact-ratio "
+                    "remedy ltca synthesize --apply-remedy applied to the user's basic data, "
+                    "checked by a synthesis at the written prescriptions of the design as "
+                    "given; this case is the remedied design's development",
+            "field": change.field, "before": round(float(applied.before), 6),
+            "after": round(file_value(applied.basic.design, change.field), 6),
+            "text": change.text,
+            **{k: round(float(v), 3) for k, v in ratios.items() if math.isfinite(v)},
+            "given_lte": applied.given_lte,
+            "checks": remedy_record(applied.record)}
