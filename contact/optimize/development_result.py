@@ -175,7 +175,6 @@ class DevelopmentResult:
         (:func:`contact.optimize.development_range_lte.range_record`: ``"torques"`` [N·m],
         ``"lte"`` [µrad], ``"peak"`` [µrad], ``"at"`` [N·m]); None where the check's steps
         did not judge it at these torques.
-
     remedy : contact.optimize.development_remedy.AppliedRemedy or None
         The contact-ratio remedy applied to the user's basic data before this development
         (``develop(..., apply_remedy=True)``, ``ltca synthesize --apply-remedy``; its
@@ -211,7 +210,6 @@ class DevelopmentResult:
     lte_reach: dict | None = None
     tolerant_torque: tuple[float, float] = (math.nan, math.nan)
     lte_range: dict | None = None
-
     remedy: Any = None
 
     @property
