@@ -147,6 +147,7 @@ from contact.optimize.development_coast_flank import (  # noqa: F401
     coast_flank_capacity,
     coast_rated_torque,
 )
+from contact.optimize.development_edge_peak import checked_edge_peak
 from contact.optimize.development_evaluate import (  # noqa: F401
     CHECK_LTCA,
     COARSE_LTCA,
@@ -472,6 +473,10 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     # meeting every target, whose edge share may be just within it)
     best = checked_tolerance(best, targets, setup, teeth, say, placed,
                              slope=evaluate.slopes.get(bearing_key(best.values)))
+    # the end of the drive development: an edge whose peak at the design torque is above
+    # the flank's static strength (ltca run's edge_pressure attention) given the relief
+    # that takes the load off it, kept where no met target is lost (development_edge_peak)
+    best = checked_edge_peak(best, targets, setup, teeth, say, placed)
     developed = with_flank_options(basic, flank, best.values)
     # the coast flank, after the drive flank is chosen (which it does not change): checked
     # at the default sampling as synthesised, developed where it misses a target

@@ -33,6 +33,7 @@ import numpy as np
 import xarray as xr
 
 from contact.ltca import LTCAOptions
+from contact.ltca.edges import EDGE_KINDS
 from contact.ltca.summary import flank_peak_pressure  # re-exported: the development's name
 from contact.optimize.development_result import (
     DevelopmentEvaluation,
@@ -155,7 +156,39 @@ def ltca_metrics(ltca, case: Case) -> dict[str, np.ndarray]:
     out["plastic_share"] = share.max(axis=1)
     out["lte_spread"] = lte_spread(ltca)
     out["tip_edge_share"] = np.asarray(edge_load_share(ltca, kinds=TIP_EDGE_KINDS), float)
+    out.update(edge_peak_metrics(ltca))
     return out
+
+
+#: the metrics :func:`edge_peak_metrics` adds, each per torque [MPa]: the largest edge
+#: peak ``ltca run``'s ``edge_pressure`` check judges, the static strength it judges it
+#: against, and the peak of each edge kind (:data:`contact.ltca.edges.EDGE_KINDS`)
+EDGE_PEAK_METRICS = ("edge_peak", "edge_static_strength",
+                     *(f"edge_peak_{k}" for k in EDGE_KINDS))
+
+
+def edge_peak_metrics(ltca) -> dict[str, np.ndarray]:
+    """The edge peaks of an ``/ltca`` dataset as ``ltca run``'s verdict judges them
+    (:func:`contact.study.verdicts.edge_peaks`), per torque: ``edge_peak`` [MPa] the
+    largest over the edge kinds counted (0: no edge carries
+    :data:`~contact.study.verdicts.EDGE_SHARE_MIN` of the torque below the edges'
+    contact-pressure limit), ``edge_static_strength`` [MPa] the weaker member's flank
+    static strength σ_Hlim·Z_NT the ``edge_pressure`` attention compares it with, and
+    ``edge_peak_<kind>`` [MPa] each kind's (:data:`EDGE_PEAK_METRICS`); none where the
+    dataset names no material. The edge-peak step of the development reads them
+    (:mod:`contact.optimize.development_edge_peak`)."""
+    from contact.study.verdicts import edge_peaks  # imports contact.ltca
+
+    found = edge_peaks(ltca)
+    if found is None:
+        return {}
+    n = int(ltca.sizes["torque"])
+    zero = np.zeros(n)
+    out = {f"edge_peak_{k}": np.asarray(found.peaks.get(k, zero), float) for k in EDGE_KINDS}
+    out["edge_peak"] = np.max([np.asarray(p, float) for p in found.peaks.values()] + [zero],
+                              axis=0)
+    out["edge_static_strength"] = np.full(n, float(found.static))
+    return {k: out[k] for k in EDGE_PEAK_METRICS}
 
 
 def lte_spread(ltca) -> np.ndarray:

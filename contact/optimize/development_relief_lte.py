@@ -351,6 +351,15 @@ class Relief:
     noted_at_gate : bool
         The design as checked goes into the least-LTE record once the gate holds (else
         with the variant's first design analysed).
+    better : callable (best, e) → bool or None
+        Whether a design is better (:func:`~contact.optimize.development_keep.kept_why`'s
+        ``better``); None: it ranks better (the check's rank,
+        :func:`~contact.optimize.development_keep.ranks_better`).
+    ends : callable (e) → bool or None
+        Whether the design kept so far ends the variant; None: it meets every target.
+    lost : callable (best, e) → list of str or None
+        The targets ``best`` met that ``e`` misses (``kept_why``'s ``lost``); None:
+        :func:`~contact.optimize.development_keep.lost_targets`.
     """
 
     stage: str
@@ -360,6 +369,9 @@ class Relief:
                     Generator[Try, Sent, None]]
     lost_first: bool = False
     noted_at_gate: bool = False
+    better: Callable[[DevelopmentEvaluation, DevelopmentEvaluation], bool] | None = None
+    ends: Callable[[DevelopmentEvaluation], bool] | None = None
+    lost: Callable[[DevelopmentEvaluation, DevelopmentEvaluation], list[str]] | None = None
 
 
 def _later_start(best: DevelopmentEvaluation, targets: DevelopmentTargets
@@ -473,8 +485,9 @@ def checked_relief_variants(best: DevelopmentEvaluation, targets: DevelopmentTar
     """A drive design whose LTE a relief sets given each variant of ``reliefs`` whose gate
     holds, in turn (module docstring): each of its designs placed and checked at ``ltca
     run``'s sampling, kept where it ranks better, misses no target the design met and is
-    tolerant at ΔE/ΔP ± 0.05 mm; a variant ends at the first design kept that meets every
-    target. At most one, two and four designs by the three variants.
+    tolerant at ΔE/ΔP ± 0.05 mm (a row's own ``better``, ``lost`` where it gives them); a
+    variant ends at the first design kept that meets every target (or its ``ends``). At
+    most one, two and four designs by the three variants.
 
     Parameters
     ----------
@@ -525,8 +538,10 @@ def checked_relief_variants(best: DevelopmentEvaluation, targets: DevelopmentTar
                              say, placed)
             why = None
             if e is not None:
+                rule = {} if relief.better is None else {"better": relief.better}
                 why = kept_why(best, e, targets, setup, teeth, say, t.change,
-                               lost=lost_targets, lost_first=relief.lost_first)
+                               lost=relief.lost or lost_targets,
+                               lost_first=relief.lost_first, **rule)
                 if t.lever:
                     if not noted:
                         lte_reached(setup, start, f"design {start.index + 1} as checked")
@@ -534,7 +549,7 @@ def checked_relief_variants(best: DevelopmentEvaluation, targets: DevelopmentTar
                     lte_reached(setup, e, f"design {start.index + 1} {t.noted}", why,
                                 t.lever)
                 best = best if why else e
-                if best.full[2]:
+                if best.full[2] if relief.ends is None else relief.ends(best):
                     break
             try:
                 t = tries.send((best, why))

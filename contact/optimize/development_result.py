@@ -685,10 +685,16 @@ COAST_STATUS = {
 
 def metrics_text(m: Mapping[str, np.ndarray]) -> str:
     """A design's metrics in one phrase (light-load pattern and its footprint centre,
-    design-torque edge share, worst plastic share, LTE at both torques)."""
+    design-torque edge share — with its edge peak where above the flank's static strength,
+    ``edge_peak`` and ``edge_static_strength`` —, worst plastic share, LTE at both
+    torques)."""
+    peak = ""
+    if "edge_peak" in m and "edge_static_strength" in m:
+        p, static = float(m["edge_peak"][1]), float(m["edge_static_strength"][1])
+        peak = f" (peak {p:.0f} MPa above {static:.0f})" if p > static else ""
     return (f"pattern {m['pattern_toe_u'][0]:.2f}-{m['pattern_heel_u'][0]:.2f} x "
             f"{m['pattern_root_v'][0]:.2f}-{m['pattern_tip_v'][0]:.2f} centre "
             f"({m['pattern_centre_u'][0]:.2f}, {m['pattern_centre_v'][0]:.2f}), edge "
-            f"{100 * m['edge_load_share'][1]:.1f} %, plastic "
+            f"{100 * m['edge_load_share'][1]:.1f} %{peak}, plastic "
             f"{100 * np.max(m['plastic_share']):.1f} %, LTE "
             f"{m['lte_peak_to_peak'][0]:.0f}/{m['lte_peak_to_peak'][1]:.0f} urad")

@@ -152,7 +152,7 @@ import json
 import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 import xarray as xr
@@ -172,9 +172,9 @@ if TYPE_CHECKING:
 
 __all__ = ["CHECKS", "CHECK_ORDER", "DUTY_MIN_SAFETY", "EDGE_SHARE_MIN", "GRADE",
            "LTE_FAIL_FACTOR", "LTE_LIMIT", "MICROPITTING_MIN", "SCUFFING_MIN", "SEVERITIES",
-           "VH_SAME_POSITION", "VH_TARGET_TOLERANCE", "Finding", "Verdict",
-           "flank_static_strength", "quiet_transfer", "shown_above", "shown_below", "verdict",
-           "weaker_contact_curve"]
+           "VH_SAME_POSITION", "VH_TARGET_TOLERANCE", "EdgePeaks", "Finding", "Verdict",
+           "edge_peaks", "flank_static_strength", "quiet_transfer", "shown_above",
+           "shown_below", "verdict", "weaker_contact_curve"]
 
 #: the severities, mildest first (a verdict is the worst of its findings)
 SEVERITIES = ("pass", "attention", "fail")
@@ -564,6 +564,75 @@ def _plastic(lt: xr.Dataset) -> list[Finding]:
                     "running")]
 
 
+class EdgePeaks(NamedTuple):
+    """What :func:`edge_peaks` finds: ``peaks`` per edge kind (:data:`_EDGE_WORDS`'s keys;
+    ``""`` where the dataset has no segments) the peak pressure [MPa] per torque, shape
+    (NT,), the ``edge_pressure`` check judges (0 where the kind carries less than
+    :data:`EDGE_SHARE_MIN` of the torque or is at the edges' contact-pressure limit);
+    ``static`` the flank's static strength σ_Hlim·Z_NT,static [MPa] of the weaker member
+    it judges them against; ``cap`` the edges' limit [MPa] (NaN: none)."""
+
+    peaks: dict[str, np.ndarray]
+    static: float
+    cap: float
+
+
+def edge_peaks(lt: xr.Dataset) -> EdgePeaks | None:
+    """The edges' peak pressures the ``edge_pressure`` check of ``ltca run``'s verdict
+    judges, per edge kind and torque, and the static strength it judges them against —
+    the check's and the development's edge-peak step's one reading
+    (:mod:`contact.optimize.development_edge_peak`).
+
+    Parameters
+    ----------
+    lt : xarray.Dataset
+        ``/ltca`` with ``pressure_max_edge`` (torque) [MPa], the materials' attributes
+        (:func:`weaker_contact_curve`) and, where it has segments, ``pressure_max``
+        (torque, roll, pair, segment) [MPa], ``force``, ``moment_arm`` and
+        ``segment_kind``; ``edge_pressure_limit_MPa`` (attribute, NaN: off).
+
+    Returns
+    -------
+    EdgePeaks or None
+        Per edge kind the peak of ``pressure_max`` over its segments at each torque
+        (NT,) [MPa] where the kind carries at least :data:`EDGE_SHARE_MIN` of the torque
+        (:func:`~contact.ltca.summary.edge_load_share`) and is below the edges'
+        contact-pressure limit, else 0; a dataset without the segments' kinds (a
+        summary): its ``pressure_max_edge`` alone, under the kind ``""``. None where the
+        dataset has no ``pressure_max_edge`` or names no material.
+
+    Raises
+    ------
+    InputError
+        From :func:`flank_static_strength`: a material it does not know.
+
+    Notes
+    -----
+    Source: the static strength σ_Hlim·Z_NT,stat·Z_W·Z_X of ISO 6336-2
+    (:func:`flank_static_strength`, the ``flank_pressure`` check's and ``ltca
+    duty-cycle``'s one rule; ISO 6336-5 grade :data:`GRADE`); the edges' limit of
+    :mod:`contact.ltca.plastic`.
+    """
+    found = flank_static_strength(lt) if "pressure_max_edge" in lt else None
+    if found is None:
+        return None
+    static = found.strength
+    cap = float(lt.attrs.get("edge_pressure_limit_MPa", np.nan))
+    shares = _edge_shares(lt)
+    if shares and {"pressure_max", "segment_kind"} <= set(lt.variables):
+        kind = np.asarray(lt["segment_kind"].values).astype(str)
+        pressure = np.nan_to_num(lt["pressure_max"].transpose("torque", ...).values)
+        peaks = {k: pressure[..., kind == k].reshape(pressure.shape[0], -1).max(axis=1)
+                 for k in shares}
+    else:  # no segments: the dataset's edge peak alone, unnamed
+        shares = {"": np.ones(lt.sizes["torque"])}
+        peaks = {"": np.nan_to_num(np.asarray(lt["pressure_max_edge"].values, float))}
+    below = (peaks[k] < cap * (1.0 - 1e-9) if np.isfinite(cap) else True for k in peaks)
+    counted = {k: np.where((np.nan_to_num(shares[k]) >= EDGE_SHARE_MIN) & b, peaks[k], 0.0)
+               for k, b in zip(peaks, below, strict=True)}
+    return EdgePeaks(counted, float(static), cap)
+
+
 def _edge_pressure(lt: xr.Dataset) -> list[Finding]:
     """The edges whose peak pressure exceeds the static strength of the weaker member's
     flank, σ_Hlim·Z_NT at the S–N curve's static end — the ``flank_pressure`` check's
@@ -587,26 +656,15 @@ def _edge_pressure(lt: xr.Dataset) -> list[Finding]:
     spiral bevel 20x24 at Σ 100°'s coast bearing at 169.4 N·m (issue 71, round 17) peaked
     2488 MPa on its pinion edge above 2400 MPa and its coast verdict said only the edge's
     share."""
-    found = flank_static_strength(lt) if "pressure_max_edge" in lt else None
-    if found is None:
+    found = edge_peaks(lt)
+    strength = flank_static_strength(lt) if found is not None else None
+    if found is None or strength is None:
         return []
-    static = found.strength
-    cap = float(lt.attrs.get("edge_pressure_limit_MPa", np.nan))
-    below_cap = (lambda p: p < cap * (1.0 - 1e-9)) if np.isfinite(cap) else (lambda p: True)
-    shares = _edge_shares(lt)
-    if shares and {"pressure_max", "segment_kind"} <= set(lt.variables):
-        kind = np.asarray(lt["segment_kind"].values).astype(str)
-        pressure = np.nan_to_num(lt["pressure_max"].transpose("torque", ...).values)
-        peaks = {k: pressure[..., kind == k].reshape(pressure.shape[0], -1).max(axis=1)
-                 for k in shares}
-    else:  # no segments: the dataset's edge peak alone, unnamed
-        shares = {"": np.ones(lt.sizes["torque"])}
-        peaks = {"": np.nan_to_num(np.asarray(lt["pressure_max_edge"].values, float))}
+    static, cap = found.static, found.cap
     where = []
     for i, t in enumerate(lt["torque"].values):
-        high = sorted(((k, float(peaks[k][i])) for k in peaks
-                       if shares[k][i] >= EDGE_SHARE_MIN and peaks[k][i] > static
-                       and below_cap(peaks[k][i])), key=lambda e: -e[1])
+        high = sorted(((k, float(p[i])) for k, p in found.peaks.items() if p[i] > static),
+                      key=lambda e: -e[1])
         if high:
             each = ", ".join(f"{p:.0f} MPa" + (f" on the {_EDGE_WORDS[k]}" if k else "")
                              for k, p in high)
@@ -616,7 +674,7 @@ def _edge_pressure(lt: xr.Dataset) -> list[Finding]:
     limit = f"; the edges' limit {cap:.0f} MPa" if np.isfinite(cap) else ""
     return [Finding("attention", "edge_pressure",
                     f"edge peak pressure above the flank's static strength {static:.0f} MPa "
-                    f"({found.factors}, {found.material}, grade {GRADE}{limit}): "
+                    f"({strength.factors}, {strength.material}, grade {GRADE}{limit}): "
                     f"{'; '.join(where)}; the S–N curve is of flank contact (no damage "
                     "counted), but the flank under the edge carries more than a flank "
                     "contact survives: a relief or an edge break takes the load off the "

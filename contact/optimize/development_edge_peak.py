@@ -1,0 +1,453 @@
+"""The development's edge-peak step (issue 71, "a gear you would sign off"): a drive design
+whose edge carries the design torque at a peak pressure above the flank's static strength
+given the relief that takes the load off that edge.
+
+``ltca run``'s verdict says an ``edge_pressure`` attention where an edge kind carrying at
+least :data:`~contact.study.verdicts.EDGE_SHARE_MIN` of the torque peaks above the weaker
+member's static strength σ_Hlim·Z_NT,static below the edges' contact-pressure limit
+(:func:`contact.study.verdicts.edge_peaks`). The check's steps clear plastic edges and
+edge contact at the light torque, and the edge share within its target at the design
+torque, but none read that peak: five of eight developed designs re-measured on
+2026-11-27 carried it at the design torque (2476–4385 MPa against 2400 MPa;
+docs/own_gear_set.md, "Eight designs on the tree of the eighteenth session").
+
+The step reads the development's ``edge_peak_<kind>`` metrics at the design torque
+(:func:`~contact.optimize.development_evaluate.edge_peak_metrics`, the verdict's reading)
+and, for each kind above the static strength, worst first, tries its lever
+(:data:`LEVERS`): the pinion's tip relief for the pinion's edge (its tip on the gear
+flank), the pinion's root relief for the gear's tip edge (on the pinion's root, which
+a tip relief does not touch), a shorter contact ellipse (more lengthwise crowning) for
+the gear's heel and toe — each relief first deeper (:func:`deeper`), then started earlier
+(:func:`earlier`), the ellipse shortened by :data:`ELLIPSE_FRACTIONS`. Each design goes
+through the check's one relief loop
+(:func:`~contact.optimize.development_relief_lte.checked_relief_variants`, the table row
+:data:`EDGE_PEAK`): placed and checked at ``ltca run``'s sampling, kept by the check's
+keep rule (:func:`~contact.optimize.development_keep.kept_why`: no target the design met
+lost — asked first, the local pitting bound at the design torque among them
+(:func:`pitting_lost`) —, tolerant at ΔE/ΔP ± 0.05 mm) where its edges' excess over the
+static strength (:func:`edge_excess`) is lower; the step ends at the first design kept
+with no edge above the static strength.
+
+Measured (``ltca synthesize`` then ``ltca run``, 2026-11-27; docs/synthesis.md, "The edge
+peak at the design torque"): the spiral bevel 15x45 Method 0 (gear tip 2731 MPa at 282.1
+N m) clears it by the root relief 40 → 60 µm; the face-hobbed truck hypoid 8x41 Method 3
+(gear heel 4385, tip 3802, pinion edge 3551 MPa at 2629 N m) all three by the ellipse 0.5 →
+0.425, the root relief → 58.6 µm and the tip relief → 37 µm (LTE 11 / 8 → 28 / 25 µrad);
+the truck hypoid 9x37 its gear tip (4059 MPa), its pinion edge left at 2419 MPa; on the
+10x37 at Σ 95° each relief loses the LTE target and on the 10x43 the deeper tip relief its
+local pitting bound (:func:`pitting_lost`): both written as before.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import logging
+import math
+from collections.abc import Callable, Generator, Mapping
+from typing import Any
+
+import numpy as np
+
+from contact.ltca.edges import EDGE_KINDS
+from contact.optimize.development_evaluate import KeptTeeth
+from contact.optimize.development_keep import lost_targets
+from contact.optimize.development_relief_lte import Relief, Sent, Try, checked_relief_variants
+from contact.optimize.development_result import DevelopmentEvaluation
+from contact.optimize.development_targets import DevelopmentTargets
+from geometry.case import Case
+from geometry.core.errors import raise_if_interrupted
+
+log = logging.getLogger("contact.optimize.development")
+
+__all__ = ["DEEPER_FACTOR", "DEEPER_RANGE", "EARLIER_STEP", "EDGE_PEAK", "EDGE_WORDS",
+           "ELLIPSE_FRACTIONS", "LEVERS", "checked_edge_peak", "deeper", "earlier",
+           "edge_excess", "edge_peak_runs_on", "edges_above", "lever_designs",
+           "pitting_lost"]
+
+#: the prescriptions that take the load off each edge kind (:data:`contact.ltca.edges.
+#: EDGE_KINDS`), tried in turn: the pinion's edge (its tip line on the gear flank) by the
+#: pinion's tip relief (the blade's flankrem), deeper then longer; the gear's tip edge,
+#: which bears on the pinion's root, by the root relief (the toprem) and its start
+#: (``relief_start``); the gear's heel and toe by a shorter contact ellipse — the
+#: lengthwise crowning the synthesis gives the bearing (Litvin & Fuentes 2004, §9.4;
+#: Stadtfeld, *Handbook of Bevel and Hypoid Gears*, 1993, ch. 3: the relief and the
+#: crowning sized to the design load's deflection keep the edges out of the loaded
+#: pattern)
+LEVERS: Mapping[str, tuple[str, ...]] = {
+    "pinion_edge": ("tip_relief", "tip_relief_start"),
+    "gear_tip": ("root_relief", "relief_start"),
+    "gear_heel": ("ellipse_length",),
+    "gear_toe": ("ellipse_length",),
+}
+
+#: the edge kinds in words (the lines said)
+EDGE_WORDS = {"gear_heel": "gear heel", "gear_toe": "gear toe", "gear_tip": "gear tip",
+              "pinion_edge": "pinion edge"}
+
+#: [1] a relief :func:`deeper` tries: this multiple of the design's …
+DEEPER_FACTOR = 1.5
+#: [1] … and at least this fraction of its range above the lower bound (a relief of 0 µm
+#: made one); clipped to the range's upper bound
+DEEPER_RANGE = 0.25
+#: [1] how much earlier (of the way from M to the flank's end) :func:`earlier` starts a
+#: relief: :data:`~contact.optimize.development_relief_lte.TIP_LTE_START_STEP`'s step
+EARLIER_STEP = 0.1
+#: the contact ellipse's lengths tried for a heel or toe edge, fractions of the design's
+#: (clipped to its range)
+ELLIPSE_FRACTIONS = (0.85, 0.7)
+
+#: the relief amounts (µm) among the levers; the other levers are starts (fractions of the
+#: way from M) or the ellipse's length
+_AMOUNTS = ("tip_relief", "root_relief")
+
+
+def edges_above(e: DevelopmentEvaluation) -> dict[str, float]:
+    """The edge kinds whose peak pressure at the design torque (the metrics' last) exceeds
+    the flank's static strength, each with its peak [MPa], worst first.
+
+    Parameters
+    ----------
+    e : DevelopmentEvaluation
+        A design with ``metrics`` (``edge_peak_<kind>`` [MPa] and ``edge_static_strength``
+        [MPa] per torque, light first:
+        :func:`~contact.optimize.development_evaluate.edge_peak_metrics`).
+
+    Returns
+    -------
+    dict str → float — [MPa]
+        Empty where the metrics carry no edge peaks (no material named, a failed
+        analysis) or none is above the static strength.
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: ``ltca run``'s ``edge_pressure`` attention
+    (:func:`contact.study.verdicts.edge_peaks`: ISO 6336-2's Z_NT at the S–N curve's
+    static end, ISO 6336-5's σ_Hlim).
+    """
+    m = e.metrics or {}
+    if "edge_static_strength" not in m:
+        return {}
+    static = float(np.asarray(m["edge_static_strength"], float)[-1])
+    if not math.isfinite(static):
+        return {}
+    peaks = {k: float(np.asarray(m[f"edge_peak_{k}"], float)[-1]) for k in EDGE_KINDS
+             if f"edge_peak_{k}" in m}
+    above = {k: p for k, p in peaks.items() if math.isfinite(p) and p > static}
+    return dict(sorted(above.items(), key=lambda kv: -kv[1]))
+
+
+def edge_excess(e: DevelopmentEvaluation) -> float:
+    """The edges' excess over the flank's static strength at the design torque [MPa]: the
+    sum over the edge kinds of their peak above it (:func:`edges_above`), 0 where none is
+    above; the quantity :data:`EDGE_PEAK` lowers (a design that lowers one edge and lifts
+    another by as much is no better).
+
+    Parameters
+    ----------
+    e : DevelopmentEvaluation
+        A design with the edge-peak metrics.
+
+    Returns
+    -------
+    float — [MPa]
+        inf where ``e`` has no metrics (a failed analysis).
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: ``ltca run``'s ``edge_pressure`` attention (:func:`edges_above`).
+    """
+    if e.metrics is None or "edge_static_strength" not in e.metrics:
+        return math.inf
+    static = float(np.asarray(e.metrics["edge_static_strength"], float)[-1])
+    return float(sum(p - static for p in edges_above(e).values()))
+
+
+def deeper(values: Mapping[str, float], name: str, targets: DevelopmentTargets
+           ) -> float | None:
+    """A deeper relief ``name`` [µm]: :data:`DEEPER_FACTOR` × the design's, at least
+    :data:`DEEPER_RANGE` of its range above the lower bound, clipped to the upper bound.
+
+    Parameters
+    ----------
+    values : mapping
+        The design's prescriptions [file units].
+    name : str
+        ``"tip_relief"`` or ``"root_relief"``.
+    targets : DevelopmentTargets
+        Its ``variables[name]`` (lower, upper) [µm].
+
+    Returns
+    -------
+    float or None — [µm]
+        None where the relief is not developed or at its upper bound already.
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: the development's variables (docs/synthesis.md, "Development bearing"); the
+    relief sized to the design load's deflection (Stadtfeld 1993, ch. 3).
+    """
+    if name not in targets.variables or name not in values:
+        return None
+    lo, hi = (float(x) for x in targets.variables[name])
+    now = float(values[name])
+    x = round(float(np.clip(max(DEEPER_FACTOR * now, lo + DEEPER_RANGE * (hi - lo)),
+                            lo, hi)), 2)
+    return x if x > now + 1e-6 else None
+
+
+def earlier(values: Mapping[str, float], name: str, targets: DevelopmentTargets
+            ) -> float | None:
+    """A relief start ``name`` [1] :data:`EARLIER_STEP` nearer M (a longer relief),
+    clipped to its range's lower bound.
+
+    Parameters
+    ----------
+    values : mapping
+        The design's prescriptions [file units].
+    name : str
+        ``"tip_relief_start"`` or ``"relief_start"``.
+    targets : DevelopmentTargets
+        Its ``variables[name]`` (lower, upper) [1].
+
+    Returns
+    -------
+    float or None — [1]
+        None where the start is not developed or at its lower bound already.
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: the development's variables (docs/synthesis.md, "Development bearing").
+    """
+    if name not in targets.variables or name not in values:
+        return None
+    lo = float(targets.variables[name][0])
+    now = float(values[name])
+    x = round(float(max(now - EARLIER_STEP, lo)), 4)
+    return x if x < now - 1e-6 else None
+
+
+def lever_designs(kind: str, values: Mapping[str, float], targets: DevelopmentTargets
+                  ) -> list[tuple[str, float]]:
+    """The designs of an edge kind's lever (:data:`LEVERS`) from a design, in turn: a
+    relief :func:`deeper`, its start :func:`earlier`, the ellipse shortened by
+    :data:`ELLIPSE_FRACTIONS` (clipped to its range).
+
+    Parameters
+    ----------
+    kind : str
+        An edge kind of :data:`LEVERS`.
+    values : mapping
+        The design's prescriptions [file units].
+    targets : DevelopmentTargets
+        The levers' bounds (``variables``).
+
+    Returns
+    -------
+    list of (str, float)
+        (prescription, value [file units]); only the levers the development varies and
+        the design has, and a value other than the design's.
+
+    Raises
+    ------
+    KeyError
+        ``kind`` not in :data:`LEVERS`.
+
+    Notes
+    -----
+    Source: the levers of :data:`LEVERS` (Litvin & Fuentes 2004, §9.4).
+    """
+    out = []
+    for name in LEVERS[kind]:
+        if name == "ellipse_length":
+            if name not in targets.variables or name not in values:
+                continue
+            lo, hi = (float(x) for x in targets.variables[name])
+            now = float(values[name])
+            out += [(name, round(float(np.clip(f * now, lo, hi)), 4))
+                    for f in ELLIPSE_FRACTIONS if np.clip(f * now, lo, hi) < now - 1e-6]
+        else:
+            x = (deeper if name in _AMOUNTS else earlier)(values, name, targets)
+            if x is not None:
+                out.append((name, x))
+    return out
+
+
+def edge_peak_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                      ratios: Callable[[], tuple[float, float]] | None = None) -> bool:
+    """:data:`EDGE_PEAK`'s gate: ``best`` is checked at ``ltca run``'s sampling, an edge
+    kind's peak at its design torque exceeds the static strength (:func:`edges_above`)
+    and the development varies a lever of such a kind (:data:`LEVERS`).
+
+    Parameters
+    ----------
+    best : DevelopmentEvaluation
+        The design the drive development kept.
+    targets : DevelopmentTargets
+        The development's targets (``variables``).
+    ratios : callable, optional
+        Unused (the relief table's gate signature).
+
+    Returns
+    -------
+    bool
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: ``ltca run``'s ``edge_pressure`` attention (module docstring).
+    """
+    if best.full is None or not best.checked or best.metrics is None:
+        return False
+    return any(lever_designs(k, best.values, targets) for k in edges_above(best))
+
+
+def _edge_designs(start: DevelopmentEvaluation, targets: DevelopmentTargets
+                  ) -> Generator[Try, Sent, None]:
+    # Why: an edge carries load where the flank's ease-off at the edge is less than the
+    # approach the design torque gives there; the relief (or the crowning) at that edge
+    # deeper or longer than the deflection keeps the edge out of the loaded pattern
+    # (Litvin & Fuentes 2004, §9.4; Stadtfeld 1993, ch. 3). Each kind above the static
+    # strength, worst first, from the design kept so far.
+    best, done = start, set()
+    while True:
+        above = {k: p for k, p in edges_above(best).items() if k not in done}
+        if not above:
+            return
+        kind, peak = next(iter(above.items()))
+        done.add(kind)
+        static = float(np.asarray(best.metrics["edge_static_strength"], float)[-1])
+        for name, x in lever_designs(kind, best.values, targets):
+            if kind not in edges_above(best):  # cleared by the design kept
+                break
+            now = float(best.values[name])
+            if abs(x - now) < 1e-6:
+                continue
+            unit = " um" if name in _AMOUNTS else ""
+            change = f"{name} {x:.4g}{unit}"
+            best, _ = yield Try(
+                dict(best.values) | {name: x},
+                f"with {change} (the {EDGE_WORDS[kind]}'s peak {peak:.0f} MPa at the design "
+                f"torque above the static strength {static:.0f} MPa)",
+                f"the {change} for the {EDGE_WORDS[kind]}")
+
+
+#: the edge-peak variant: the relief (or the crowning) of each edge above the static
+#: strength at the design torque, kept where the edges' excess falls; ends where no edge
+#: is above
+EDGE_PEAK = Relief("edge peak", edge_peak_runs_on, _edge_designs, lost_first=True,
+                   better=lambda best, e: edge_excess(e) < edge_excess(best),
+                   ends=lambda e: not edges_above(e))
+
+
+def pitting_lost(limit: float) -> Callable[[DevelopmentEvaluation, DevelopmentEvaluation],
+                                          list[str]]:
+    """:data:`EDGE_PEAK`'s lost targets: those of
+    :func:`~contact.optimize.development_keep.lost_targets` and ``"local pitting"`` where
+    the variant's flank peak at the design torque rises above both the design's and
+    ``limit`` (the bearing's local pitting bound there: the design torque would be cut
+    to a capacity the design held).
+
+    Parameters
+    ----------
+    limit : float — [MPa]
+        The flank peak at which S_H,loc reaches S_Hmin at the design torque
+        (:func:`~contact.optimize.development_pitting.pitting_pressure_limit`); inf: none.
+
+    Returns
+    -------
+    callable (best, e) → list of str
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: issue 71 item 2 (one design torque that holds); measured on the 10x43: the
+    tip relief 15 → 22.5 µm cleared its pinion edge (2770 MPa at 357 N m) and the written
+    case's design torque fell to 325.5 N m (S_H,loc 0.98 at 357; docs/synthesis.md, "The
+    edge peak at the design torque").
+    """
+    def lost(best: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:
+        gone = lost_targets(best, e)
+        p_new = float(e.metrics["pressure_max_flank"][-1])
+        p_old = float(best.metrics["pressure_max_flank"][-1])
+        if not p_new <= max(p_old, limit):
+            gone.append("local pitting")
+        return gone
+
+    return lost
+
+
+def _pitting_limit(best: DevelopmentEvaluation, setup: Mapping[str, Any]) -> float:
+    """[MPa] :func:`pitting_pressure_limit` of the design's case at the design torque;
+    inf where it cannot be had (no case, no rating: logged)."""
+    from contact.optimize.development_pitting import pitting_pressure_limit
+
+    try:
+        return float(pitting_pressure_limit(best.case, float(setup["torques"][1])))
+    except Exception as exc:  # no rating or no case (a stand-in): no bound
+        raise_if_interrupted(exc)
+        log.info("development edge peak: no local pitting bound (%s)", exc)
+        return math.inf
+
+
+def checked_edge_peak(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                      setup: Mapping[str, Any], teeth: KeptTeeth | None,
+                      say: Callable[[str], None],
+                      placed: Callable[[Mapping[str, float]], Case]) -> DevelopmentEvaluation:
+    """The drive design ``best`` with its edges' peak at the design torque within the
+    flank's static strength where a relief does it: :data:`EDGE_PEAK` through the check's
+    relief loop (module docstring). At most two designs per edge kind above the static
+    strength (four kinds).
+
+    Parameters
+    ----------
+    best : DevelopmentEvaluation
+        The drive design the development kept (checked at ``ltca run``'s sampling; its
+        metrics carry the edge peaks).
+    targets, setup, teeth, say, placed
+        As every check step's (:func:`~contact.optimize.development_check.check_steps`;
+        ``targets.variables``: the levers' bounds).
+
+    Returns
+    -------
+    DevelopmentEvaluation
+        The design kept last (stage ``"edge peak"``); ``best`` itself where no edge is
+        above the static strength, no lever is developed or no design was kept.
+
+    Raises
+    ------
+    Nothing: a design whose synthesis or analysis fails is not kept (logged).
+
+    Notes
+    -----
+    Source: issue 71 ("a gear you would sign off"); ``ltca run``'s ``edge_pressure``
+    attention (ISO 6336-2 Z_NT at the static end × ISO 6336-5 σ_Hlim); the levers:
+    Litvin & Fuentes, *Gear Geometry and Applied Theory*, 2nd ed., 2004, §9.4; Stadtfeld,
+    *Handbook of Bevel and Hypoid Gears*, 1993, ch. 3.
+    """
+    if not edge_peak_runs_on(best, targets):
+        return best
+    relief = dataclasses.replace(EDGE_PEAK, lost=pitting_lost(_pitting_limit(best, setup)))
+    return checked_relief_variants(best, targets, setup, teeth, say, placed,
+                                   reliefs=(relief,), eps=(math.nan, math.nan))
