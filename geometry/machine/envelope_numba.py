@@ -20,10 +20,21 @@ kernel runs the same iteration point by point in a compiled loop:
 - the Cramer's-rule step, the step limits, the stall test and the final check of
   :func:`geometry.machine.meshing._newton`;
 
-and :func:`family`, :func:`evaluate` and :func:`meshing` give the family buffer, the
-residuals with their Jacobian, and the meshing function of a buffer at given points (the
-solve's roots, the Jacobians of its seeds and continuation) without NumPy's per-call
-overhead.
+and :func:`family` and :func:`evaluate` give the family buffer with its meshing function,
+and the residuals with their Jacobian, at given points (the solve's roots, the Jacobians
+of its seeds and continuation) without NumPy's per-call overhead.
+
+One compiled kernel, :func:`newton`: :func:`family` and :func:`evaluate` are Python
+functions that call it without iterations (``max_iter`` 0), where it evaluates the point's
+family buffer and equations at the starts and returns them. On a fresh numba cache, which
+``ltca synthesize`` compiles (issue 75), numba compiles every jitted function of the call
+graph on its own and again, optimised and linked, into each caller: the kernel was four
+entry points and fifteen helpers (24 compilations with the helpers' constant-argument
+specialisations, 7.7 s of CPU), it is one entry point and nine helpers, each of one
+signature (10 compilations, 4.5 s; docs/performance.md, "Fewer envelope kernels to
+compile"). The helpers take floats or arrays, never a constant index (numba compiles a
+function once per constant argument), and are not inlined at numba's IR
+(``inline="always"`` compiled in 26 s: each caller types the whole inlined body again).
 
 Every expression is the NumPy path's, in its order, but the two paths do not agree to the
 last bit: NumPy forms the chain's products with BLAS (whose kernels may fuse multiply-adds
@@ -158,24 +169,6 @@ def _cutter(sec, sigma, placed, place, s, theta, k, v):
 
 
 @_jit
-def _add_motion(r2_y, r2_z, em_coef, xb_coef, blank_offset, sliding_base, q, y, dc, d2c):
-    """The vertical motion E_m(q) and helical motion X_b(q) of the chain (``family_buffer``
-    with ``chain.motion``): added to c, c′ and c″ of r in place."""
-    if em_coef.shape[0]:
-        em, dem, d2em = _taylor(em_coef, q)
-    else:
-        em, dem, d2em = blank_offset, 0.0, 0.0
-    if xb_coef.shape[0]:
-        xb, dxb, d2xb = _taylor(xb_coef, q)
-    else:
-        xb, dxb, d2xb = sliding_base, 0.0, 0.0
-    for i in range(3):
-        y[i, 0] += r2_y[i] * -em + r2_z[i] * xb
-        dc[i, 0] += r2_y[i] * -dem + r2_z[i] * dxb
-        d2c[i] += r2_y[i] * -d2em + r2_z[i] * d2xb
-
-
-@_jit
 def _roll(roll_coef, ratio_of_roll, generate, q):
     """The work rotation φ(q) and its derivatives φ′, φ″ (φ″ only with modified roll,
     ``has_d2``): φ = R_a q, or R_a (q − C q² − …) from the Taylor coefficients."""
@@ -207,7 +200,19 @@ def _family(k_lin, k_point, r2_y, r2_z, motion, em_coef, xb_coef, roll_coef, sca
             dc[i, j] = pk[3 + i, j] * ca - pk[i, j] * sa
         d2c[i] = -(pk[i, 0] * ca + pk[3 + i, 0] * sa)
     if motion:
-        _add_motion(r2_y, r2_z, em_coef, xb_coef, blank_offset, sliding_base, q, y, dc, d2c)
+        # the vertical motion E_m(q) and helical motion X_b(q), added to c, c′ and c″
+        if em_coef.shape[0]:
+            em, dem, d2em = _taylor(em_coef, q)
+        else:
+            em, dem, d2em = blank_offset, 0.0, 0.0
+        if xb_coef.shape[0]:
+            xb, dxb, d2xb = _taylor(xb_coef, q)
+        else:
+            xb, dxb, d2xb = sliding_base, 0.0, 0.0
+        for i in range(3):
+            y[i, 0] += r2_y[i] * -em + r2_z[i] * xb
+            dc[i, 0] += r2_y[i] * -dem + r2_z[i] * dxb
+            d2c[i] += r2_y[i] * -d2em + r2_z[i] * d2xb
     if not generate and kappa == 0.0:
         for i in range(3):
             for j in range(7):
@@ -292,35 +297,6 @@ def _meshing(out, length_scale, grad):
         dnn = (n0 * d0 + n1 * d1 + n2 * d2) / nn
         grad[j] = (dg - g * dnn / nn) * scale
     return g * scale
-
-
-@_jit
-def _equations(out, z, p, generate, length_scale, f, jac, grad):
-    """``_evaluate`` at one point from its family buffer ``out`` (3, 11): the residuals
-    f (m,) (axial position, radius [mm], and in Generate the normalised meshing function)
-    and their Jacobian jac (m, m) in (s, θ[, q])."""
-    m = f.size
-    rho = math.hypot(out[0, 0], out[1, 0])
-    rho_safe = rho if rho > 0 else 1.0
-    f[0] = out[2, 0] - z
-    f[1] = rho - p
-    for j in range(m):
-        col = 1 if j == 0 else 2 if j == 1 else 7
-        jac[0, j] = out[2, col]
-        jac[1, j] = (out[0, 0] * out[0, col] + out[1, 0] * out[1, col]) / rho_safe
-    if generate:
-        f[2] = _meshing(out, length_scale, grad)
-        for j in range(3):
-            jac[2, j] = grad[j]
-
-
-@_jit
-def _point_work():
-    """Work arrays of one point's family buffer and equations: v (3, 7) of
-    :func:`_cutter`; pk (9, 7), dc (3, 3), d2c (3,), y (3, 11) and the buffer out (3, 11)
-    of :func:`_family`; grad (3,) of :func:`_meshing`."""
-    return (np.zeros((3, 7)), np.empty((9, 7)), np.empty((3, 3)), np.empty(3),
-            np.empty((3, 11)), np.empty((3, 11)), np.empty(3))
 
 
 @_jit
@@ -414,7 +390,8 @@ def newton(x0, section, z, p, sec, sigma, placed, place, k_lin, k_point, r2_y, r
         Position tolerance [mm], meshing tolerance [1], stall size [mm].
     max_iter, stall_iter : int
         Iteration limit; the iteration after which far points are abandoned
-        (``max_iter`` 0: the equations at the starts, :func:`evaluate`).
+        (``max_iter`` 0: the family buffer and the equations at the starts,
+        :func:`family` and :func:`evaluate`).
 
     Returns
     -------
@@ -428,15 +405,24 @@ def newton(x0, section, z, p, sec, sigma, placed, place, k_lin, k_point, r2_y, r
         the normalised meshing function [1].
     jac_last : (n, m, m) float
         Their Jacobian in (s, θ[, q]).
+    buf_last : (3, 11, n) float
+        The family buffer there (:func:`geometry.machine.family.family_buffer`).
     """
     n, m = x0.shape
     x = x0.copy()
-    done = np.zeros(n, np.bool_)
+    done = np.empty(n, np.bool_)  # (each written below)
     f_last = np.empty((n, m))
     jac_last = np.empty((n, m, m))
+    buf_last = np.empty((3, 11, n))
     length_scale = scalars[5]
     tol_pos, tol_mesh, stall_size = controls[0], controls[1], controls[2]
-    v, pk, dc, d2c, y, out, grad = _point_work()
+    v = np.empty((3, 7))  # (every entry written by _cutter)
+    pk = np.empty((9, 7))
+    dc = np.empty((3, 3))
+    d2c = np.empty(3)
+    y = np.empty((3, 11))
+    out = np.empty((3, 11))
+    grad = np.empty(3)
     f = np.empty(m)
     jac = np.empty((m, m))
     dx = np.empty(m)
@@ -449,11 +435,25 @@ def newton(x0, section, z, p, sec, sigma, placed, place, k_lin, k_point, r2_y, r
         converged = False
         for it in range(max_iter + 1):
             q = xi[2] if generate else 0.0
-            # the point's family buffer (seed Eq. 2.7a), then its equations
+            # the point's family buffer (seed Eq. 2.7a)
             _cutter(sec, sigma, placed, place, xi[0], xi[1], k, v)
             _family(k_lin, k_point, r2_y, r2_z, motion, em_coef, xb_coef, roll_coef, scalars,
                     generate, v, q, xi[1], pk, dc, d2c, y, out)
-            _equations(out, z[i], p[i], generate, length_scale, f, jac, grad)
+            # its equations (meshing's _evaluate): the residuals f (m,) (axial position,
+            # radius [mm], and in Generate the normalised meshing function) and their
+            # Jacobian jac (m, m) in (s, θ[, q])
+            rho = math.hypot(out[0, 0], out[1, 0])
+            rho_safe = rho if rho > 0 else 1.0
+            f[0] = out[2, 0] - z[i]
+            f[1] = rho - p[i]
+            for j in range(m):
+                col = 1 if j == 0 else 2 if j == 1 else 7
+                jac[0, j] = out[2, col]
+                jac[1, j] = (out[0, 0] * out[0, col] + out[1, 0] * out[1, col]) / rho_safe
+            if generate:
+                f[2] = _meshing(out, length_scale, grad)
+                for j in range(3):
+                    jac[2, j] = grad[j]
             converged = abs(f[0]) < tol_pos and abs(f[1]) < tol_pos
             if generate:
                 converged = converged and abs(f[2]) < tol_mesh
@@ -482,38 +482,31 @@ def newton(x0, section, z, p, sec, sigma, placed, place, k_lin, k_point, r2_y, r
             f_last[i, j] = f[j]
             for b in range(m):
                 jac_last[i, j, b] = jac[j, b]
-        done[i] = converged and not dead
-    return x, done, f_last, jac_last
-
-
-@_jit
-def family(s, theta, q, section, sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z,
-           motion, em_coef, xb_coef, roll_coef, scalars, generate, with_meshing):
-    """The family buffer (3, 11, n) of :func:`geometry.machine.family.family_buffer` (seed
-    Eq. 2.7a and its derivatives) at the points (s [mm], θ [rad], q [rad], section) (n,)
-    (q ignored in Formate), and where ``with_meshing`` the normalised meshing function f
-    (n,) [1] (seed Eq. 2.8) with its gradient (3, n) [1/mm, 1/rad, 1/rad] of the buffer
-    (:func:`geometry.machine.family.meshing_buffer` point by point; else empty (0,) and
-    (3, 0)); the constant arguments as :func:`newton`'s."""
-    n = s.size
-    out = np.empty((3, 11, n))
-    n_mesh = n if with_meshing else 0
-    f = np.empty(n_mesh)
-    grad = np.empty((3, n_mesh))
-    v, pk, dc, d2c, y, one, g = _point_work()
-    for i in range(n):
-        qi = q[i] if generate else 0.0
-        _cutter(sec, sigma, placed, place, s[i], theta[i], section[i], v)
-        _family(k_lin, k_point, r2_y, r2_z, motion, em_coef, xb_coef, roll_coef, scalars,
-                generate, v, qi, theta[i], pk, dc, d2c, y, one)
         for a in range(3):
             for b in range(11):
-                out[a, b, i] = one[a, b]
-        if with_meshing:
-            f[i] = _meshing(one, scalars[5], g)
-            for a in range(3):
-                grad[a, i] = g[a]
-    return out, f, grad
+                buf_last[a, b, i] = out[a, b]
+        done[i] = converged and not dead
+    return x, done, f_last, jac_last, buf_last
+
+
+def family(s, theta, q, section, sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z,
+           motion, em_coef, xb_coef, roll_coef, scalars, generate):
+    """The family buffer (3, 11, n) of :func:`geometry.machine.family.family_buffer` (seed
+    Eq. 2.7a and its derivatives) at the points (s [mm], θ [rad], q [rad], section) (n,)
+    (q ignored in Formate), and in Generate the normalised meshing function f (n,) [1]
+    (seed Eq. 2.8) with its gradient (3, n) [1/mm, 1/rad, 1/rad] of the buffer
+    (:func:`geometry.machine.family.meshing_buffer` point by point; in Formate empty (0,)
+    and (3, 0)); the constant arguments as :func:`newton`'s. :func:`newton` with no
+    iteration (``max_iter`` 0), which evaluates the buffer and the equations at the
+    starts: one compiled kernel to compile on a fresh cache, not three (issue 75)."""
+    n = s.size
+    x = np.stack((s, theta, q) if generate else (s, theta), axis=-1)
+    f, jac, buf = _at_starts(x, section, np.zeros(n), np.zeros(n), sec, sigma, placed,
+                             place, k_lin, k_point, r2_y, r2_z, motion, em_coef, xb_coef,
+                             roll_coef, scalars, generate)
+    if not generate:
+        return buf, np.empty(0), np.empty((3, 0))
+    return buf, f[:, 2], jac[:, 2].T
 
 
 def evaluate(x, section, z, p, sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z,
@@ -521,11 +514,14 @@ def evaluate(x, section, z, p, sec, sigma, placed, place, k_lin, k_point, r2_y, 
     """Residuals F (n, m) and Jacobian J (n, m, m) of the point equations (seed Eq. 2.7a:
     axial position and radius [mm]; in Generate Eq. 2.8, the normalised meshing function)
     at the points x (n, m) on their sections, targets (z, p) (n,) [mm]: meshing's
-    ``_evaluate`` (the constant arguments as :func:`newton`'s). :func:`newton` with no
-    iteration (``max_iter`` 0), which evaluates the equations at the starts: one compiled
-    kernel fewer to compile on a fresh cache (issue 75)."""
+    ``_evaluate`` (the constant arguments as :func:`newton`'s); :func:`newton` with no
+    iteration (:func:`family`)."""
+    return _at_starts(x, section, z, p, sec, sigma, placed, place, k_lin, k_point, r2_y,
+                      r2_z, motion, em_coef, xb_coef, roll_coef, scalars, generate)[:2]
+
+
+def _at_starts(x, section, z, p, *constants):
+    """:func:`newton`'s residuals, Jacobian and family buffer at the starts x (no
+    iteration; the step limits and tolerances unused)."""
     m = x.shape[1]
-    _, _, f, jac = newton(x, section, z, p, sec, sigma, placed, place, k_lin, k_point, r2_y,
-                          r2_z, motion, em_coef, xb_coef, roll_coef, scalars, generate,
-                          np.ones(m), np.zeros(3), 0, 0)
-    return f, jac
+    return newton(x, section, z, p, *constants, np.ones(m), np.zeros(3), 0, 0)[2:]

@@ -202,20 +202,20 @@ def _family(ctx: _Context, s, theta, q, section) -> np.ndarray:
         module, args = ctx.kernel
         return module.family(_cw(s), _cw(theta),
                              _cw(q), _cw(section, np.intp),
-                             *args[:_FAMILY_ARGS], False)[0]
+                             *args[:_FAMILY_ARGS])[0]
     v = cutter_buffer(ctx.blade, ctx.sections, s, theta, section)
     return family_buffer(ctx.chain, ctx.settings, v, q, theta)
 
 
 def _family_meshing(ctx: _Context, s, theta, q, section):
-    """Family buffer (3, 11, n) at flat points (:func:`_family`) and its
+    """Family buffer (3, 11, n) at flat points (:func:`_family`) and, in Generate, its
     :func:`geometry.machine.family.meshing_buffer`, f (n,) and its gradient (3, n) (on the
     compiled kernel where the context holds it: one kernel for both, issue 75)."""
     if ctx.kernel is not None:
         module, args = ctx.kernel
         return module.family(_cw(s), _cw(theta),
                              _cw(q), _cw(section, np.intp),
-                             *args[:_FAMILY_ARGS], True)
+                             *args[:_FAMILY_ARGS])
     buf = _family(ctx, s, theta, q, section)
     return (buf, *meshing_buffer(buf, ctx.length_scale))
 
