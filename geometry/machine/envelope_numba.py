@@ -33,7 +33,8 @@ entry points and fifteen helpers (24 compilations with the helpers' constant-arg
 specialisations, 7.7 s of CPU), it is one entry point and nine helpers, each of one
 signature (10 compilations, 4.5 s; docs/performance.md, "Fewer envelope kernels to
 compile"). The helpers take floats or arrays, never a constant index (numba compiles a
-function once per constant argument), and are not inlined at numba's IR
+function once per constant argument), are compiled without the wrappers that would make
+them callable from Python (``_helper``), and are not inlined at numba's IR
 (``inline="always"`` compiled in 26 s: each caller types the whole inlined body again).
 
 Every expression is the NumPy path's, in its order, but the two paths do not agree to the
@@ -60,11 +61,14 @@ import numpy as np
 __all__ = ["evaluate", "family", "newton"]
 
 _jit = numba.njit(cache=True, nogil=True)
+#: the helpers, called from compiled code only: numba builds (optimises and compiles to
+#: machine code) no CPython or C wrapper for them, which unboxed each argument
+_helper = numba.njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 
 _EPS = float(np.finfo(float).eps)  # np.sinc's stand-in for 0 (geometry.machine.cutter)
 
 
-@_jit
+@_helper
 def _sign(x):
     """np.sign of a float: −1, 0, +1, or NaN."""
     if x > 0.0:
@@ -74,7 +78,7 @@ def _sign(x):
     return x  # 0.0 or NaN
 
 
-@_jit
+@_helper
 def _taylor(coef, q):
     """f, f′, f″ at q of a Taylor motion's coefficients (meshing's ``_taylor_values``)."""
     f = coef[0, 0]
@@ -89,14 +93,14 @@ def _taylor(coef, q):
     return f, d1, d2
 
 
-@_jit
+@_helper
 def _turn(w0, w1, w2, c, sn):
     """R_z(θ) w (c, sn: cos θ, sin θ); floats only, so that numba compiles it once (a
     column index passed as a constant would be compiled once per constant)."""
     return c * w0 - sn * w1, sn * w0 + c * w1, w2
 
 
-@_jit
+@_helper
 def _cutter(sec, sigma, placed, place, s, theta, k, v):
     """The cutter vectors (3, 7) of ``cutter_buffer`` at one point, into ``v``."""
     # blade_profile / _curve_point: the constant-curvature section k at arc length s
@@ -168,7 +172,7 @@ def _cutter(sec, sigma, placed, place, s, theta, k, v):
     v[2, 5] = 0.0
 
 
-@_jit
+@_helper
 def _roll(roll_coef, ratio_of_roll, generate, q):
     """The work rotation φ(q) and its derivatives φ′, φ″ (φ″ only with modified roll,
     ``has_d2``): φ = R_a q, or R_a (q − C q² − …) from the Taylor coefficients."""
@@ -180,7 +184,7 @@ def _roll(roll_coef, ratio_of_roll, generate, q):
     return ratio_of_roll * q, ratio_of_roll, 0.0, False
 
 
-@_jit
+@_helper
 def _family(k_lin, k_point, r2_y, r2_z, motion, em_coef, xb_coef, roll_coef, scalars,
             generate, v, q, theta, pk, dc, d2c, y, out):
     """The family buffer (3, 11) of ``family_buffer`` at one point, into ``out``."""
@@ -265,14 +269,14 @@ def _family(k_lin, k_point, r2_y, r2_z, motion, em_coef, xb_coef, roll_coef, sca
         out[2, 6] = n2 * scale
 
 
-@_jit
+@_helper
 def _cross(a0, a1, a2, b0, b1, b2):
     """a × b (``_cross0``'s components); floats only, so that numba compiles it once (a
     column index passed as a constant would be compiled once per constant)."""
     return a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0
 
 
-@_jit
+@_helper
 def _meshing(out, length_scale, grad):
     """f and its gradient (into ``grad`` (3,)) of ``meshing_buffer`` at one point."""
     rs0, rs1, rs2 = out[0, 1], out[1, 1], out[2, 1]  # r_s
@@ -299,7 +303,7 @@ def _meshing(out, length_scale, grad):
     return g * scale
 
 
-@_jit
+@_helper
 def _step(jac, f, m, limit, dx):
     """The Newton step J dx = −f into ``dx`` (``_safe_solve``) and the factor (≤ 1) that
     holds it within ``limit``; NaN where J is (near-)singular or the step is not finite."""
