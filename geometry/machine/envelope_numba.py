@@ -30,8 +30,8 @@ family buffer and equations at the starts and returns them. On a fresh numba cac
 ``ltca synthesize`` compiles (issue 75), numba compiles every jitted function of the call
 graph on its own and again, optimised and linked, into each caller: the kernel was four
 entry points and fifteen helpers (24 compilations with the helpers' constant-argument
-specialisations, 7.7 s of CPU), it is one entry point and nine helpers, each of one
-signature (10 compilations, 4.5 s; docs/performance.md, "Fewer envelope kernels to
+specialisations, 6.3–6.6 s of CPU), it is one entry point and nine helpers, each of one
+signature (10 compilations, 3.2 s; docs/performance.md, "Fewer envelope kernels to
 compile"). The helpers take floats or arrays, never a constant index (numba compiles a
 function once per constant argument), are compiled without the wrappers that would make
 them callable from Python (``_helper``), and are not inlined at numba's IR
