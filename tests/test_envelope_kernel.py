@@ -164,10 +164,12 @@ def test_family_buffer_on_the_kernel(case_key, member, flank, motions):
     assert (np.abs(fb - fa) / f_scale).max() < 1e-12
     assert (np.abs(jb - ja) / j_scale).max() < 1e-12
     if generate:
-        # the meshing function of one buffer: IEEE products, sums, square roots and
-        # divisions in the NumPy path's order, so the same numbers on any machine
+        # the meshing function of the buffer, computed with it in the kernel: IEEE
+        # products, sums, square roots and divisions in the NumPy path's order, so the
+        # same numbers on any machine; the buffer the same as the kernel's without it
         ctx = meshing._context(blade, settings, blank.outer_cone_distance, "numba")
-        got = meshing._meshing_of(ctx, b)
+        buf, *got = meshing._family_meshing(ctx, x0[:, 0], x0[:, 1], q, section)
+        np.testing.assert_array_equal(buf, b)
         want = meshing_buffer(b, blank.outer_cone_distance)
         np.testing.assert_array_equal(got[0], want[0])
         np.testing.assert_array_equal(got[1], want[1])

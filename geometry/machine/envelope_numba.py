@@ -20,10 +20,22 @@ kernel runs the same iteration point by point in a compiled loop:
 - the Cramer's-rule step, the step limits, the stall test and the final check of
   :func:`geometry.machine.meshing._newton`;
 
-and :func:`family`, :func:`evaluate` and :func:`meshing` give the family buffer, the
-residuals with their Jacobian, and the meshing function of a buffer at given points (the
-solve's roots, the Jacobians of its seeds and continuation) without NumPy's per-call
-overhead.
+and :func:`family` and :func:`evaluate` give the family buffer with its meshing function,
+and the residuals with their Jacobian, at given points (the solve's roots, the Jacobians
+of its seeds and continuation) without NumPy's per-call overhead.
+
+One compiled kernel, :func:`newton`: :func:`family` and :func:`evaluate` are Python
+functions that call it without iterations (``max_iter`` 0), where it evaluates the point's
+family buffer and equations at the starts and returns them. On a fresh numba cache, which
+``ltca synthesize`` compiles (issue 75), numba compiles every jitted function of the call
+graph on its own and again, optimised and linked, into each caller: the kernel was four
+entry points and fifteen helpers (24 compilations with the helpers' constant-argument
+specialisations, 6.3–6.6 s of CPU), it is one entry point and nine helpers, each of one
+signature (10 compilations, 3.2 s; docs/performance.md, "Fewer envelope kernels to
+compile"). The helpers take floats or arrays, never a constant index (numba compiles a
+function once per constant argument), are compiled without the wrappers that would make
+them callable from Python (``_helper``), and are not inlined at numba's IR
+(``inline="always"`` compiled in 26 s: each caller types the whole inlined body again).
 
 Every expression is the NumPy path's, in its order, but the two paths do not agree to the
 last bit: NumPy forms the chain's products with BLAS (whose kernels may fuse multiply-adds
@@ -46,14 +58,17 @@ import math
 import numba
 import numpy as np
 
-__all__ = ["evaluate", "family", "meshing", "newton"]
+__all__ = ["evaluate", "family", "newton"]
 
 _jit = numba.njit(cache=True, nogil=True)
+#: the helpers, called from compiled code only: numba builds (optimises and compiles to
+#: machine code) no CPython or C wrapper for them, which unboxed each argument
+_helper = numba.njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 
 _EPS = float(np.finfo(float).eps)  # np.sinc's stand-in for 0 (geometry.machine.cutter)
 
 
-@_jit
+@_helper
 def _sign(x):
     """np.sign of a float: −1, 0, +1, or NaN."""
     if x > 0.0:
@@ -63,7 +78,7 @@ def _sign(x):
     return x  # 0.0 or NaN
 
 
-@_jit
+@_helper
 def _taylor(coef, q):
     """f, f′, f″ at q of a Taylor motion's coefficients (meshing's ``_taylor_values``)."""
     f = coef[0, 0]
@@ -78,15 +93,14 @@ def _taylor(coef, q):
     return f, d1, d2
 
 
-@_jit
-def _turn_into(v, kk, w0, w1, w2, c, sn):
-    """v[:, kk] = R_z(θ) w (c, sn: cos θ, sin θ)."""
-    v[0, kk] = c * w0 - sn * w1
-    v[1, kk] = sn * w0 + c * w1
-    v[2, kk] = w2
+@_helper
+def _turn(w0, w1, w2, c, sn):
+    """R_z(θ) w (c, sn: cos θ, sin θ); floats only, so that numba compiles it once (a
+    column index passed as a constant would be compiled once per constant)."""
+    return c * w0 - sn * w1, sn * w0 + c * w1, w2
 
 
-@_jit
+@_helper
 def _cutter(sec, sigma, placed, place, s, theta, k, v):
     """The cutter vectors (3, 7) of ``cutter_buffer`` at one point, into ``v``."""
     # blade_profile / _curve_point: the constant-curvature section k at arc length s
@@ -133,10 +147,11 @@ def _cutter(sec, sigma, placed, place, s, theta, k, v):
         s0 = drho * place[3] - dh * place[6]
         s1 = drho * place[4] - dh * place[7]
         s2 = drho * place[5] - dh * place[8]
-        _turn_into(v, 0, e0, e1, e2, c, sn)
-        _turn_into(v, 1, s0, s1, s2, c, sn)
-        _turn_into(v, 3, d2rho * place[3] - d2h * place[6], d2rho * place[4] - d2h * place[7],
-                   d2rho * place[5] - d2h * place[8], c, sn)
+        v[0, 0], v[1, 0], v[2, 0] = _turn(e0, e1, e2, c, sn)
+        v[0, 1], v[1, 1], v[2, 1] = _turn(s0, s1, s2, c, sn)
+        v[0, 3], v[1, 3], v[2, 3] = _turn(d2rho * place[3] - d2h * place[6],
+                                          d2rho * place[4] - d2h * place[7],
+                                          d2rho * place[5] - d2h * place[8], c, sn)
         # revolution_normal: −σ e′ × (e_z × e), normalised
         b0 = -e1
         b1 = e0
@@ -145,7 +160,7 @@ def _cutter(sec, sigma, placed, place, s, theta, k, v):
         n1 = -sigma * (s2 * b0 - s0 * b2)
         n2 = -sigma * (s0 * b1 - s1 * b0)
         norm = math.sqrt(n0 * n0 + n1 * n1 + n2 * n2)
-        _turn_into(v, 6, n0 / norm, n1 / norm, n2 / norm, c, sn)
+        v[0, 6], v[1, 6], v[2, 6] = _turn(n0 / norm, n1 / norm, n2 / norm, c, sn)
         v[0, 2] = -v[1, 0]
         v[1, 2] = v[0, 0]
         v[0, 4] = -v[1, 1]
@@ -157,25 +172,7 @@ def _cutter(sec, sigma, placed, place, s, theta, k, v):
     v[2, 5] = 0.0
 
 
-@_jit
-def _add_motion(r2_y, r2_z, em_coef, xb_coef, blank_offset, sliding_base, q, y, dc, d2c):
-    """The vertical motion E_m(q) and helical motion X_b(q) of the chain (``family_buffer``
-    with ``chain.motion``): added to c, c′ and c″ of r in place."""
-    if em_coef.shape[0]:
-        em, dem, d2em = _taylor(em_coef, q)
-    else:
-        em, dem, d2em = blank_offset, 0.0, 0.0
-    if xb_coef.shape[0]:
-        xb, dxb, d2xb = _taylor(xb_coef, q)
-    else:
-        xb, dxb, d2xb = sliding_base, 0.0, 0.0
-    for i in range(3):
-        y[i, 0] += r2_y[i] * -em + r2_z[i] * xb
-        dc[i, 0] += r2_y[i] * -dem + r2_z[i] * dxb
-        d2c[i] += r2_y[i] * -d2em + r2_z[i] * d2xb
-
-
-@_jit
+@_helper
 def _roll(roll_coef, ratio_of_roll, generate, q):
     """The work rotation φ(q) and its derivatives φ′, φ″ (φ″ only with modified roll,
     ``has_d2``): φ = R_a q, or R_a (q − C q² − …) from the Taylor coefficients."""
@@ -187,7 +184,7 @@ def _roll(roll_coef, ratio_of_roll, generate, q):
     return ratio_of_roll * q, ratio_of_roll, 0.0, False
 
 
-@_jit
+@_helper
 def _family(k_lin, k_point, r2_y, r2_z, motion, em_coef, xb_coef, roll_coef, scalars,
             generate, v, q, theta, pk, dc, d2c, y, out):
     """The family buffer (3, 11) of ``family_buffer`` at one point, into ``out``."""
@@ -207,7 +204,19 @@ def _family(k_lin, k_point, r2_y, r2_z, motion, em_coef, xb_coef, roll_coef, sca
             dc[i, j] = pk[3 + i, j] * ca - pk[i, j] * sa
         d2c[i] = -(pk[i, 0] * ca + pk[3 + i, 0] * sa)
     if motion:
-        _add_motion(r2_y, r2_z, em_coef, xb_coef, blank_offset, sliding_base, q, y, dc, d2c)
+        # the vertical motion E_m(q) and helical motion X_b(q), added to c, c′ and c″
+        if em_coef.shape[0]:
+            em, dem, d2em = _taylor(em_coef, q)
+        else:
+            em, dem, d2em = blank_offset, 0.0, 0.0
+        if xb_coef.shape[0]:
+            xb, dxb, d2xb = _taylor(xb_coef, q)
+        else:
+            xb, dxb, d2xb = sliding_base, 0.0, 0.0
+        for i in range(3):
+            y[i, 0] += r2_y[i] * -em + r2_z[i] * xb
+            dc[i, 0] += r2_y[i] * -dem + r2_z[i] * dxb
+            d2c[i] += r2_y[i] * -d2em + r2_z[i] * d2xb
     if not generate and kappa == 0.0:
         for i in range(3):
             for j in range(7):
@@ -260,41 +269,19 @@ def _family(k_lin, k_point, r2_y, r2_z, motion, em_coef, xb_coef, roll_coef, sca
         out[2, 6] = n2 * scale
 
 
-@_jit
-def _family_work():
-    """Work arrays of :func:`_point_family`: v (3, 7), pk (9, 7), dc (3, 3), d2c (3,),
-    y (3, 11)."""
-    return (np.zeros((3, 7)), np.empty((9, 7)), np.empty((3, 3)), np.empty(3),
-            np.empty((3, 11)))
+@_helper
+def _cross(a0, a1, a2, b0, b1, b2):
+    """a × b (``_cross0``'s components); floats only, so that numba compiles it once (a
+    column index passed as a constant would be compiled once per constant)."""
+    return a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0
 
 
-@_jit
-def _point_family(sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z, motion, em_coef,
-                  xb_coef, roll_coef, scalars, generate, s, theta, q, k, w, out):
-    """The family buffer (3, 11) at one point (s, θ, q) on section k, into ``out``
-    (``w``: :func:`_family_work`)."""
-    v, pk, dc, d2c, y = w
-    _cutter(sec, sigma, placed, place, s, theta, k, v)
-    _family(k_lin, k_point, r2_y, r2_z, motion, em_coef, xb_coef, roll_coef, scalars,
-            generate, v, q, theta, pk, dc, d2c, y, out)
-
-
-@_jit
-def _cross_into(out, ia, ib, dst):
-    """dst[:] = out[:, ia] × out[:, ib] (``_cross0``'s components)."""
-    dst[0] = out[1, ia] * out[2, ib] - out[2, ia] * out[1, ib]
-    dst[1] = out[2, ia] * out[0, ib] - out[0, ia] * out[2, ib]
-    dst[2] = out[0, ia] * out[1, ib] - out[1, ia] * out[0, ib]
-
-
-@_jit
-def _meshing(out, length_scale, grad, work):
+@_helper
+def _meshing(out, length_scale, grad):
     """f and its gradient (into ``grad`` (3,)) of ``meshing_buffer`` at one point."""
-    nvec = work[0]
-    tmp = work[1]
-    tmp2 = work[2]
-    _cross_into(out, 1, 2, nvec)
-    n0, n1, n2 = nvec[0], nvec[1], nvec[2]
+    rs0, rs1, rs2 = out[0, 1], out[1, 1], out[2, 1]  # r_s
+    rt0, rt1, rt2 = out[0, 2], out[1, 2], out[2, 2]  # r_θ
+    n0, n1, n2 = _cross(rs0, rs1, rs2, rt0, rt1, rt2)
     nn = math.sqrt(n0 * n0 + n1 * n1 + n2 * n2)
     sign = _sign(n0 * out[0, 6] + n1 * out[1, 6] + n2 * out[2, 6])
     scale = sign / (nn * length_scale)
@@ -304,11 +291,11 @@ def _meshing(out, length_scale, grad, work):
         ia = 3 if j == 0 else 4 if j == 1 else 8
         ib = 4 if j == 0 else 5 if j == 1 else 9
         ic = 8 if j == 0 else 9 if j == 1 else 10
-        _cross_into(out, ia, 2, tmp)
-        _cross_into(out, 1, ib, tmp2)
-        d0 = tmp[0] + tmp2[0]
-        d1 = tmp[1] + tmp2[1]
-        d2 = tmp[2] + tmp2[2]
+        t0, t1, t2 = _cross(out[0, ia], out[1, ia], out[2, ia], rt0, rt1, rt2)
+        u0, u1, u2 = _cross(rs0, rs1, rs2, out[0, ib], out[1, ib], out[2, ib])
+        d0 = t0 + u0
+        d1 = t1 + u1
+        d2 = t2 + u2
         dg = ((d0 * out[0, 7] + d1 * out[1, 7] + d2 * out[2, 7])
               + (out[0, ic] * n0 + out[1, ic] * n1 + out[2, ic] * n2))
         dnn = (n0 * d0 + n1 * d1 + n2 * d2) / nn
@@ -316,49 +303,7 @@ def _meshing(out, length_scale, grad, work):
     return g * scale
 
 
-@_jit
-def _equations(out, z, p, generate, length_scale, f, jac, grad, work):
-    """``_evaluate`` at one point from its family buffer ``out`` (3, 11): the residuals
-    f (m,) (axial position, radius [mm], and in Generate the normalised meshing function)
-    and their Jacobian jac (m, m) in (s, θ[, q])."""
-    m = f.size
-    rho = math.hypot(out[0, 0], out[1, 0])
-    rho_safe = rho if rho > 0 else 1.0
-    f[0] = out[2, 0] - z
-    f[1] = rho - p
-    for j in range(m):
-        col = 1 if j == 0 else 2 if j == 1 else 7
-        jac[0, j] = out[2, col]
-        jac[1, j] = (out[0, 0] * out[0, col] + out[1, 0] * out[1, col]) / rho_safe
-    if generate:
-        f[2] = _meshing(out, length_scale, grad, work)
-        for j in range(3):
-            jac[2, j] = grad[j]
-
-
-@_jit
-def _equations_work(m):
-    """Work arrays of :func:`_point_equations` for m unknowns: the family's
-    (:func:`_family_work`), the buffer (3, 11), the meshing function's (3, 3) and (3,),
-    and f (m,), jac (m, m)."""
-    return (_family_work(), np.empty((3, 11)), np.empty((3, 3)), np.empty(3), np.empty(m),
-            np.empty((m, m)))
-
-
-@_jit
-def _point_equations(sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z, motion, em_coef,
-                     xb_coef, roll_coef, scalars, generate, s, theta, q, k, z, p, ew):
-    """The residuals f (m,) and Jacobian jac (m, m) at one point (s, θ, q) on section k
-    with targets (z, p) (:func:`_point_family`, then :func:`_equations`); views into the
-    work arrays ``ew`` (:func:`_equations_work`)."""
-    w, out, work, grad, f, jac = ew
-    _point_family(sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z, motion, em_coef,
-                  xb_coef, roll_coef, scalars, generate, s, theta, q, k, w, out)
-    _equations(out, z, p, generate, scalars[5], f, jac, grad, work)
-    return f, jac
-
-
-@_jit
+@_helper
 def _step(jac, f, m, limit, dx):
     """The Newton step J dx = −f into ``dx`` (``_safe_solve``) and the factor (≤ 1) that
     holds it within ``limit``; NaN where J is (near-)singular or the step is not finite."""
@@ -448,7 +393,9 @@ def newton(x0, section, z, p, sec, sigma, placed, place, k_lin, k_point, r2_y, r
     controls : (3,) float
         Position tolerance [mm], meshing tolerance [1], stall size [mm].
     max_iter, stall_iter : int
-        Iteration limit; the iteration after which far points are abandoned.
+        Iteration limit; the iteration after which far points are abandoned
+        (``max_iter`` 0: the family buffer and the equations at the starts,
+        :func:`family` and :func:`evaluate`).
 
     Returns
     -------
@@ -456,13 +403,32 @@ def newton(x0, section, z, p, sec, sigma, placed, place, k_lin, k_point, r2_y, r
         The iterates (roots where converged).
     done : (n,) bool
         Converged.
+    f_last : (n, m) float
+        The residuals at each point's last evaluated iterate (its root where converged,
+        its start where ``max_iter`` is 0): axial position, radius [mm] and, in Generate,
+        the normalised meshing function [1].
+    jac_last : (n, m, m) float
+        Their Jacobian in (s, θ[, q]).
+    buf_last : (3, 11, n) float
+        The family buffer there (:func:`geometry.machine.family.family_buffer`).
     """
     n, m = x0.shape
     x = x0.copy()
-    done = np.zeros(n, np.bool_)
+    done = np.empty(n, np.bool_)  # (each written below)
+    f_last = np.empty((n, m))
+    jac_last = np.empty((n, m, m))
+    buf_last = np.empty((3, 11, n))
     length_scale = scalars[5]
     tol_pos, tol_mesh, stall_size = controls[0], controls[1], controls[2]
-    ew = _equations_work(m)
+    v = np.empty((3, 7))  # (every entry written by _cutter)
+    pk = np.empty((9, 7))
+    dc = np.empty((3, 3))
+    d2c = np.empty(3)
+    y = np.empty((3, 11))
+    out = np.empty((3, 11))
+    grad = np.empty(3)
+    f = np.empty(m)
+    jac = np.empty((m, m))
     dx = np.empty(m)
     xi = np.empty(m)
     for i in range(n):
@@ -473,9 +439,25 @@ def newton(x0, section, z, p, sec, sigma, placed, place, k_lin, k_point, r2_y, r
         converged = False
         for it in range(max_iter + 1):
             q = xi[2] if generate else 0.0
-            f, jac = _point_equations(sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z,
-                                      motion, em_coef, xb_coef, roll_coef, scalars, generate,
-                                      xi[0], xi[1], q, k, z[i], p[i], ew)
+            # the point's family buffer (seed Eq. 2.7a)
+            _cutter(sec, sigma, placed, place, xi[0], xi[1], k, v)
+            _family(k_lin, k_point, r2_y, r2_z, motion, em_coef, xb_coef, roll_coef, scalars,
+                    generate, v, q, xi[1], pk, dc, d2c, y, out)
+            # its equations (meshing's _evaluate): the residuals f (m,) (axial position,
+            # radius [mm], and in Generate the normalised meshing function) and their
+            # Jacobian jac (m, m) in (s, θ[, q])
+            rho = math.hypot(out[0, 0], out[1, 0])
+            rho_safe = rho if rho > 0 else 1.0
+            f[0] = out[2, 0] - z[i]
+            f[1] = rho - p[i]
+            for j in range(m):
+                col = 1 if j == 0 else 2 if j == 1 else 7
+                jac[0, j] = out[2, col]
+                jac[1, j] = (out[0, 0] * out[0, col] + out[1, 0] * out[1, col]) / rho_safe
+            if generate:
+                f[2] = _meshing(out, length_scale, grad)
+                for j in range(3):
+                    jac[2, j] = grad[j]
             converged = abs(f[0]) < tol_pos and abs(f[1]) < tol_pos
             if generate:
                 converged = converged and abs(f[2]) < tol_mesh
@@ -501,70 +483,49 @@ def newton(x0, section, z, p, sec, sigma, placed, place, k_lin, k_point, r2_y, r
                 break
         for j in range(m):
             x[i, j] = xi[j]
+            f_last[i, j] = f[j]
+            for b in range(m):
+                jac_last[i, j, b] = jac[j, b]
+        for a in range(3):
+            for b in range(11):
+                buf_last[a, b, i] = out[a, b]
         done[i] = converged and not dead
-    return x, done
+    return x, done, f_last, jac_last, buf_last
 
 
-@_jit
 def family(s, theta, q, section, sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z,
            motion, em_coef, xb_coef, roll_coef, scalars, generate):
     """The family buffer (3, 11, n) of :func:`geometry.machine.family.family_buffer` (seed
     Eq. 2.7a and its derivatives) at the points (s [mm], θ [rad], q [rad], section) (n,)
-    (q ignored in Formate); the constant arguments as :func:`newton`'s."""
+    (q ignored in Formate), and in Generate the normalised meshing function f (n,) [1]
+    (seed Eq. 2.8) with its gradient (3, n) [1/mm, 1/rad, 1/rad] of the buffer
+    (:func:`geometry.machine.family.meshing_buffer` point by point; in Formate empty (0,)
+    and (3, 0)); the constant arguments as :func:`newton`'s. :func:`newton` with no
+    iteration (``max_iter`` 0), which evaluates the buffer and the equations at the
+    starts: one compiled kernel to compile on a fresh cache, not three (issue 75)."""
     n = s.size
-    out = np.empty((3, 11, n))
-    w = _family_work()
-    one = np.empty((3, 11))
-    for i in range(n):
-        qi = q[i] if generate else 0.0
-        _point_family(sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z, motion, em_coef,
-                      xb_coef, roll_coef, scalars, generate, s[i], theta[i], qi, section[i],
-                      w, one)
-        for a in range(3):
-            for b in range(11):
-                out[a, b, i] = one[a, b]
-    return out
+    x = np.stack((s, theta, q) if generate else (s, theta), axis=-1)
+    f, jac, buf = _at_starts(x, section, np.zeros(n), np.zeros(n), sec, sigma, placed,
+                             place, k_lin, k_point, r2_y, r2_z, motion, em_coef, xb_coef,
+                             roll_coef, scalars, generate)
+    if not generate:
+        return buf, np.empty(0), np.empty((3, 0))
+    return buf, f[:, 2], jac[:, 2].T
 
 
-@_jit
 def evaluate(x, section, z, p, sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z,
              motion, em_coef, xb_coef, roll_coef, scalars, generate):
     """Residuals F (n, m) and Jacobian J (n, m, m) of the point equations (seed Eq. 2.7a:
     axial position and radius [mm]; in Generate Eq. 2.8, the normalised meshing function)
     at the points x (n, m) on their sections, targets (z, p) (n,) [mm]: meshing's
-    ``_evaluate`` (the constant arguments as :func:`newton`'s)."""
-    n, m = x.shape
-    f_all = np.empty((n, m))
-    jac_all = np.empty((n, m, m))
-    ew = _equations_work(m)
-    for i in range(n):
-        q = x[i, 2] if generate else 0.0
-        f, jac = _point_equations(sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z,
-                                  motion, em_coef, xb_coef, roll_coef, scalars, generate,
-                                  x[i, 0], x[i, 1], q, section[i], z[i], p[i], ew)
-        for a in range(m):
-            f_all[i, a] = f[a]
-            for b in range(m):
-                jac_all[i, a, b] = jac[a, b]
-    return f_all, jac_all
+    ``_evaluate`` (the constant arguments as :func:`newton`'s); :func:`newton` with no
+    iteration (:func:`family`)."""
+    return _at_starts(x, section, z, p, sec, sigma, placed, place, k_lin, k_point, r2_y,
+                      r2_z, motion, em_coef, xb_coef, roll_coef, scalars, generate)[:2]
 
 
-@_jit
-def meshing(buf, length_scale):
-    """The normalised meshing function f (n,) [1] (seed Eq. 2.8) and its gradient (3, n)
-    [1/mm, 1/rad, 1/rad] of a family buffer (3, 11, n):
-    :func:`geometry.machine.family.meshing_buffer` point by point."""
-    n = buf.shape[2]
-    f = np.empty(n)
-    grad = np.empty((3, n))
-    out = np.empty((3, 11))
-    work = np.empty((3, 3))
-    g = np.empty(3)
-    for i in range(n):
-        for a in range(3):
-            for b in range(11):
-                out[a, b] = buf[a, b, i]
-        f[i] = _meshing(out, length_scale, g, work)
-        for a in range(3):
-            grad[a, i] = g[a]
-    return f, grad
+def _at_starts(x, section, z, p, *constants):
+    """:func:`newton`'s residuals, Jacobian and family buffer at the starts x (no
+    iteration; the step limits and tolerances unused)."""
+    m = x.shape[1]
+    return newton(x, section, z, p, *constants, np.ones(m), np.zeros(3), 0, 0)[2:]

@@ -202,17 +202,22 @@ def _family(ctx: _Context, s, theta, q, section) -> np.ndarray:
         module, args = ctx.kernel
         return module.family(_cw(s), _cw(theta),
                              _cw(q), _cw(section, np.intp),
-                             *args[:_FAMILY_ARGS])
+                             *args[:_FAMILY_ARGS])[0]
     v = cutter_buffer(ctx.blade, ctx.sections, s, theta, section)
     return family_buffer(ctx.chain, ctx.settings, v, q, theta)
 
 
-def _meshing_of(ctx: _Context, buf: np.ndarray):
-    """:func:`geometry.machine.family.meshing_buffer` of a family buffer (on the compiled
-    kernel where the context holds it)."""
+def _family_meshing(ctx: _Context, s, theta, q, section):
+    """Family buffer (3, 11, n) at flat points (:func:`_family`) and, in Generate, its
+    :func:`geometry.machine.family.meshing_buffer`, f (n,) and its gradient (3, n) (on the
+    compiled kernel where the context holds it: one kernel for both, issue 75)."""
     if ctx.kernel is not None:
-        return ctx.kernel[0].meshing(_cw(buf), ctx.length_scale)
-    return meshing_buffer(buf, ctx.length_scale)
+        module, args = ctx.kernel
+        return module.family(_cw(s), _cw(theta),
+                             _cw(q), _cw(section, np.intp),
+                             *args[:_FAMILY_ARGS])
+    buf = _family(ctx, s, theta, q, section)
+    return (buf, *meshing_buffer(buf, ctx.length_scale))
 
 
 _DERIVS = np.array([1, 2, 7])  # r_s, r_θ, r_q in a family buffer
@@ -299,7 +304,7 @@ def _newton(ctx: _Context, x0: np.ndarray, section: np.ndarray, z: np.ndarray, p
         module, args = ctx.kernel
         # (C-contiguous, writeable arrays: the kernel's one compiled signature)
         return module.newton(_cw(x0), _cw(section, np.intp),
-                             _cw(z), _cw(p), *args)
+                             _cw(z), _cw(p), *args)[:2]
     x = x0.copy()
     m = x.shape[1]
     done = np.zeros(len(x), bool)
@@ -1211,18 +1216,18 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
     _continue_from_neighbours(ctx, x, section, reason, zf, pf, shape)
 
     q = x[:, 2] if gen else np.zeros(n)
-    buf = _family(ctx, x[:, 0], x[:, 1], q, section)
-    fam = family_views(buf, (n,))
     if gen:
-        res, grad = _meshing_of(ctx, buf)
+        buf, res, grad = _family_meshing(ctx, x[:, 0], x[:, 1], q, section)
         # undercut: ∂f/∂q of the opposite sign to the seed point's (Litvin & Fuentes 2004,
         # §6.3: the envelope's singular line separates the regular and the cut-away parts)
         # (the seed point's family by the same buffer functions as generated_family)
-        _, grad_seed = _meshing_of(
-            ctx, _family(ctx, x_seed[0:1], x_seed[1:2], x_seed[2:3], np.array([sec_seed])))
+        _, _, grad_seed = _family_meshing(ctx, x_seed[0:1], x_seed[1:2], x_seed[2:3],
+                                          np.array([sec_seed]))
         reason[(reason == 0) & (np.sign(grad[2]) != np.sign(grad_seed[2, 0]))] = 4
     else:
+        buf = _family(ctx, x[:, 0], x[:, 1], q, section)
         res = np.zeros(n)
+    fam = family_views(buf, (n,))
     r = fam.r
     perr = np.maximum(np.abs(r[:, 2] - zf), np.abs(np.hypot(r[:, 0], r[:, 1]) - pf))
     valid = reason == 0
