@@ -839,3 +839,71 @@ def test_the_coast_length_step_keeps_no_bearing_with_a_higher_peak_at_the_light_
     assert dcheck.checked_length(start, bounded, setup, None, lines.append,
                                  lambda v: dict(v), flank="coast") is start
     assert any("at the light torque" in s for s in lines)
+
+
+def test_a_user_design_torque_above_the_coast_capacity_gets_a_coast_design_torque(
+        monkeypatch):
+    """A design torque given in the basic file (300 N·m, ``[synthesis] design_torque``) is
+    the drive's: the coast design torque is searched on it as where none is given
+    (:func:`coast_torque_searched`; not where the file gives its own ``[rating]
+    coast_design_torque``), and a coast flank that cannot carry it gets its own, written
+    to the case with the reason in numbers. Before, the coast flank was only analysed at
+    the user's torque: the industrial spiral bevel 24x36 m_et 13 given 8350 N·m was written
+    with no coast design torque and its `ltca run --flank coast` carried 2.0 % of the
+    torque on plastic edges (issue 71, 2026-11-27). The coast flank is a stand-in for
+    `ltca run --flank coast`'s analysis (:func:`_flank`): peak 2500 MPa at 300 N·m against
+    the static strength 2400 MPa (p ∝ T^⅓: 265 N·m), plastic segments above 250 N·m."""
+    from pathlib import Path
+    from types import SimpleNamespace
+
+    from contact.optimize import development_coast_flank as coast_flank
+    from contact.optimize.development_result import DevelopmentEvaluation, DevelopmentResult
+    from contact.optimize.development_targets import DevelopmentTargets, development_score
+    from geometry.case import load_case
+    from geometry.synthesis.basic_design import load_basic
+
+    designs = Path(__file__).parent / "data" / "designs"
+    case = load_case(designs / "pc_hypoid_10x43_unrelieved.toml")
+    basic = load_basic(designs / "pc_hypoid_10x43.toml")
+    user = dataclasses.replace(basic, options=dataclasses.replace(basic.options,
+                                                                  design_torque=300.0))
+    assert coast_flank.coast_torque_searched(user)
+    own = dataclasses.replace(user, rating=MappingProxyType(
+        dict(user.rating) | {"coast_design_torque": 280.0}))
+    assert not coast_flank.coast_torque_searched(own)  # the user's coast torque stands
+
+    analyse, seen = _flank(2500.0, plastic_above=250.0)
+    monkeypatch.setattr(coast_flank, "_coast_check",
+                        lambda case, basic, setup, torque, *a, **k: analyse(torque))
+    t = DevelopmentTargets()
+    said: list[str] = []
+    coast, cap = coast_flank.coast_flank_capacity(
+        case, user, SimpleNamespace(best=None), t, {"torques": [45.0, 300.0]}, 300.0,
+        False, coast_flank.coast_torque_searched(user), said.append)
+    assert seen[0] == 300.0 and cap.holds and cap.lowered and coast.best is None
+    assert said == [f"  coast design torque 300 -> {cap.torque:.4g} N m: {cap.reason}"]
+    assert 250.0 / CLOSENESS <= cap.torque <= 250.0  # the plastic bound, the lower one
+    assert not analyse(cap.torque).failures  # it holds there
+    text = coast_flank.coast_capacity_said(user, cap)
+    assert text.startswith("the drive's design torque 300 N m ([synthesis] design_torque) "
+                           "is not the coast flank's: ")
+    assert ("at 300 N m flank peak pressure 2500 MPa above the static strength 2400 MPa; "
+            "plastic segments carry 1 % of the torque") in text
+    assert coast_flank.coast_capacity_said(basic, cap) == cap.reason  # none given
+
+    # the development's result writes it as [rating] coast_design_torque
+    m = _metrics()
+    full = development_score(m, t, centre_v=0.6, pressure_limit=2400.0)
+    best = DevelopmentEvaluation(0, {"tip_relief": 20.0}, m, *full, "", 1.0, case, full,
+                                 checked=True)
+    result = DevelopmentResult(user, case, None, best, (best,), (45.0, 300.0), "given", {},
+                               t, 30.0, 0.6, m, 2.0, False, best, (), "met", None, 0.5,
+                               2400.0, coast_torques=(45.0, cap.torque),
+                               coast_capacity=cap.torque, coast_capacity_text=text)
+    given = dataclasses.replace(case, extra=MappingProxyType(
+        dict(case.extra) | {"rating": {"design_torque": 300.0}}))
+    out, written = result.with_coast_capacity(given)
+    assert written == cap.torque == out.extra["rating"]["coast_design_torque"]
+    assert out.extra["rating"]["design_torque"] == 300.0  # the drive's, as given
+    assert "the drive's design torque 300 N m" in out.extra["rating"]["source"]
+

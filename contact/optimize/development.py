@@ -144,8 +144,10 @@ from contact.optimize.development_coast_flank import (  # noqa: F401
     COAST_BEARING_DESIGNS,
     COAST_REDEVELOP,
     coast_at_its_torque,
+    coast_capacity_said,
     coast_flank_capacity,
     coast_rated_torque,
+    coast_torque_searched,
 )
 from contact.optimize.development_edge_peak import checked_edge_peak
 from contact.optimize.development_evaluate import (  # noqa: F401
@@ -529,9 +531,11 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     coast_cap = None
     if coast.best is not None:
         start = min(setup["torques"][1], coast_rated_torque(case, basic, setup["torques"][1]))
-        given_coast = basic.rating.get("coast_design_torque") is not None
+        # searched with a design torque given too: that torque is the drive's, and a
+        # coast flank that cannot carry it gets its own (coast_torque_searched)
+        searched = coast_torque_searched(basic)
         coast, coast_cap = coast_flank_capacity(case, basic, coast, targets, setup, start,
-                                                root_stress, not (given or given_coast), say)
+                                                root_stress, searched, say)
         again = coast_at_its_torque(pre_coast, best, targets, setup, teeth, memo, say, make,
                                     coast, coast_cap, coast_setup["torques"][1])
         if again is not None:  # the coast flank developed again at its own design torque
@@ -540,8 +544,8 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
             _both_flanks_built(case, root_stress, built, say)
             first = coast_cap
             coast, second = coast_flank_capacity(case, basic, coast, targets, setup,
-                                                 first.torque, root_stress,
-                                                 not (given or given_coast), say)
+                                                 first.torque, root_stress, searched,
+                                                 say)
             coast_cap = first if second is None else CoastCapacity(
                 second.torque, first.start, first.checks + second.checks,
                 (f"{first.reason}; the coast flank developed again at {first.torque:.4g} N m"
@@ -562,7 +566,7 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                 _both_flanks_built(case, root_stress, built, say)
                 coast, again_cap = coast_flank_capacity(case, basic, coast, targets, setup,
                                                         coast_cap.start, root_stress,
-                                                        not (given or given_coast), say)
+                                                        searched, say)
                 if (again_cap is not None and again_cap.holds
                         and again_cap.torque > coast_cap.torque):
                     say(f"development: coast design torque {coast_cap.torque:.4g} -> "
@@ -625,7 +629,7 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                                root_text, coast.torques,
                                coast_cap.torque if coast_cap is not None and coast_cap.lowered
                                else math.nan,
-                               coast_cap.reason if coast_cap is not None else "",
+                               coast_capacity_said(basic, coast_cap),
                                lte_reach=setup.get("lte_reach", {}).get(
                                    tuple(float(t) for t in setup["torques"])),
                                tolerant_torque=upto, lte_range=_judged(setup, best))

@@ -101,6 +101,41 @@ def coast_rated_torque(case: Case | None, basic: BasicDesign, design: float) -> 
     return float(value) if math.isfinite(value) and value < design else design
 
 
+def coast_torque_searched(basic: BasicDesign) -> bool:
+    """Whether the coast design torque is searched down to what the coast flank's
+    developed bearing carries (:func:`coast_flank_capacity` with ``lower``): everywhere
+    but where the basic file gives its own ``[rating] coast_design_torque``. A design
+    torque given (``[synthesis] design_torque`` or ``[rating] design_torque``) is the
+    drive's: the coast flank that cannot carry it gets its own lower design torque, as
+    where none is given (issue 71 item 2, "both flanks, one design torque that holds").
+
+    Why: with the user's design torque the coast flank was only analysed at it. Measured
+    on the industrial spiral bevel 24x36 m_et 13 given 8350 N m (benchmarks/data/
+    unseen_designs/industrial_spiral_bevel_24x36_m13_t8350.toml, 2026-11-27): written
+    with no coast design torque, its `ltca run --flank coast` carried 2.0 % of the torque
+    on plastic edges (verdict ATTENTION)."""
+    return basic.rating.get("coast_design_torque") is None
+
+
+def coast_capacity_said(basic: BasicDesign, cap: CoastCapacity | None) -> str:
+    """Why the coast design torque is what the coast capacity search ``cap``
+    (:func:`coast_flank_capacity`) found, in numbers: its reason, preceded — where the
+    basic file gives a design torque (the drive's) and the search lowered the coast design
+    torque — by "the drive's design torque Y N m ([synthesis] design_torque) is not the
+    coast flank's: " (the reason then gives what the torque the search started at does to
+    the coast flank: its peak against the static strength, its plastic share); empty where
+    ``cap`` is None."""
+    if cap is None:
+        return ""
+    given = ("[synthesis] design_torque", basic.options.design_torque)
+    if given[1] is None:
+        given = ("[rating] design_torque", basic.rating.get("design_torque"))
+    if given[1] is None or not cap.lowered:
+        return cap.reason
+    return (f"the drive's design torque {float(given[1]):.4g} N m ({given[0]}) is not the "
+            f"coast flank's: {cap.reason}")
+
+
 def _as_run(case: Case, basic: BasicDesign, setup: dict[str, Any], coast: float) -> Case:
     """``case`` as ``ltca synthesize`` writes it for the torques in ``setup``: its
     ``[operating]`` torques the light and the design torque (to 0.1 N·m, rounded down,
@@ -192,8 +227,9 @@ def coast_flank_capacity(case: Case, basic: BasicDesign, coast: _CoastOutcome,
                          ) -> tuple[_CoastOutcome, CoastCapacity | None]:
     """The written case's coast flank at its own design torque ``start`` (the smaller of
     the design torque and the coast side's rated torque), as ``ltca run --flank coast``
-    analyses it (:func:`_coast_check`), and — where ``lower`` (no design torque given in
-    the basic file) — the coast design torque lowered to what the developed bearing
+    analyses it (:func:`_coast_check`), and — where ``lower`` (no ``[rating]
+    coast_design_torque`` given in the basic file, :func:`coast_torque_searched`; a design
+    torque given is the drive's) — the coast design torque lowered to what the developed bearing
     carries (:func:`contact.optimize.development_coast.coast_capacity`: flank peak within
     the static strength, no plastic segment, S_F,FE >= S_Fmin). The coast outcome's
     metrics and torques become those of the last check at the torque kept."""
