@@ -10,6 +10,7 @@ from pathlib import Path
 from contact.commands.options import output_option, progress_option
 from contact.commands.output_paths import check_output_file
 from geometry.core.atomic_files import atomic_path
+from geometry.core.text import plain_number
 
 #: Place in ``ltca --help``.
 ORDER = 30
@@ -195,13 +196,15 @@ def low_overlap_lte(development, written_ute: tuple[float, float] | None = None)
     """
     lte = development.best.metrics["lte_peak_to_peak"]
     light, design = development.torque
-    parts = [f"drive {lte[0]:.0f}/{lte[1]:.0f} urad at {light:.4g}/{design:.4g} N m"]
+    parts = [f"drive {lte[0]:.0f}/{lte[1]:.0f} urad at "
+             f"{plain_number(light)}/{plain_number(design)} N m"]
     worst = drive = float(max(lte))
     coast = None
     if development.coast is not None:
         c = development.coast["lte_peak_to_peak"]
         cl, cd = development.coast_design_torques
-        parts.append(f"coast {c[0]:.0f}/{c[1]:.0f} urad at {cl:.4g}/{cd:.4g} N m")
+        parts.append(f"coast {c[0]:.0f}/{c[1]:.0f} urad at "
+                     f"{plain_number(cl)}/{plain_number(cd)} N m")
         coast = float(max(c))
         worst = max(worst, coast)
     from contact.study.verdicts import LTE_LIMIT
@@ -560,8 +563,8 @@ def _above_capacity_note(case, torque: float) -> str | None:
     # (below the torque, which is shown as given): a user's 265 N m typed for the 264.96
     # N m capacity read "265 N m is above ... capacity 265 N m" (issue 71, unseen designs)
     return (f"the design torque {torque:g} N m is above the pair's ISO 10300 long-life "
-            f"capacity {floor_capacity(capacity):.4g} N m (the torque at which S_H or S_F "
-            "reaches its minimum): `ltca run` rates it FAIL at long life; a design torque at "
+            f"capacity {plain_number(floor_capacity(capacity))} N m (the torque at which S_H or "
+            "S_F reaches its minimum): `ltca run` rates it FAIL at long life; a design torque at "
             "or below "
             "the capacity (the default, without [synthesis] design_torque), or the duty's "
             "load cycles as [rating] load_cycles, rates it for what it is")
@@ -721,10 +724,10 @@ def _run_synthesize(args: argparse.Namespace) -> int:
         print(f"  pinion {flank}: r_p {fs.tools.blade.point_radius:.3f} mm, R_a "
               f"{s.ratio_of_roll:.5f}, S_r {s.radial_setting:.3f} mm, E_m "
               f"{s.blank_offset:.3f} mm, curvature residual {fs.tools.shape_error:.1e} 1/mm")
-    print("  design torque: " + (f"{torque:.4g} N m, {torque_why}" if math.isfinite(torque)
-                                  else torque_why))
+    print("  design torque: " + (f"{plain_number(torque)} N m, {torque_why}"
+                                  if math.isfinite(torque) else torque_why))
     if math.isfinite(coast_torque):
-        print(f"  coast design torque: {coast_torque:.4g} N m, {coast_why}")
+        print(f"  coast design torque: {plain_number(coast_torque)} N m, {coast_why}")
     given = torque_why.startswith(("[synthesis] design_torque", "[rating] design_torque"))
     above = _above_capacity_note(case, torque) if given else None
     if above is not None:

@@ -18,6 +18,7 @@ import xarray as xr
 
 from geometry.core.atomic_files import atomic_path
 from geometry.core.errors import InputError
+from geometry.core.text import plain_number
 from geometry.plot import new_figure
 
 __all__ = ["bins_figure", "damage_map_figure", "root_damage_figure",
@@ -121,7 +122,7 @@ def root_damage_figure(ds: xr.Dataset):
         ax = axes[1, k]
         stress = ds["root_stress_peak"].values[:, k, :]
         for b in range(stress.shape[0]):
-            ax.plot(x, stress[b], lw=1, label=f"{ds['torque'].values[b]:g} N m")
+            ax.plot(x, stress[b], lw=1, label=f"{plain_number(ds['torque'].values[b])} N m")
         ax.set_xlabel("lengthwise fraction of the fillet station [1] (toe 0, heel 1)")
         ax.set_ylabel("peak tensile fillet stress [MPa]")
         ax.legend(fontsize=7, ncol=2, title="bin torque", title_fontsize=7)

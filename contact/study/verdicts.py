@@ -166,6 +166,7 @@ from contact.ltca.plausibility import (
 )
 from contact.ltca.summary import edge_load_share, flank_peak
 from geometry.core.errors import InputError
+from geometry.core.text import plain_number
 
 if TYPE_CHECKING:
     from contact.load_capacity.durability import StaticContactStrength
@@ -302,7 +303,7 @@ class Verdict:
 
 
 def _t(torque: float) -> str:
-    return f"{torque:g} N·m"
+    return f"{plain_number(torque)} N·m"
 
 
 def _worst_first(findings: list[Finding]) -> tuple[Finding, ...]:
@@ -1064,7 +1065,7 @@ def _spread_numbers(ds: xr.Dataset, cause: str, bins: np.ndarray) -> str:
     out = []
     for b in bins:
         pp, mean = float(ds["lte_peak_to_peak"][b]), float(ds["lte_mean"][b])
-        text = (f"bin {b} at {float(ds['torque'][b]):.4g} N m: LTE p-p {pp:.0f} urad, "
+        text = (f"bin {b} at {plain_number(float(ds['torque'][b]))} N m: LTE p-p {pp:.0f} urad, "
                 f"{shown_above(pp / mean, LTE_SPREAD_LIMIT, 2)} times its mean "
                 f"{mean:.0f} urad")  # 0.504 flagged, not "0.50" (issue 71, unseen (8))
         if edge is not None:
