@@ -702,7 +702,7 @@ def root_stress_rows(ltca) -> list[tuple[str, ...]]:
     rs = ltca["root_stress"]
     rows = []
     for i, t in enumerate(ltca["torque"].values):
-        cells = [f"{t:g}"]
+        cells = [plain_number(t)]
         for member in ("pinion", "gear"):
             face = rs.isel(torque=i).sel(member=member).max(("roll", "tooth"))
             if not bool(face.notnull().any()):  # not computed: the notes say why

@@ -264,10 +264,10 @@ def _ranges_table(ds) -> str:
             x = ds[n].sel(torque=t).values.astype(float)
             x, units = _shown(n, x[np.isfinite(x)], ds[n].attrs.get("units", ""))
             if x.size:
-                rows.append((f"{t:g}", n, units, f"{x.min():.4g}",
+                rows.append((plain_number(t), n, units, f"{x.min():.4g}",
                              f"{np.median(x):.4g}", f"{x.max():.4g}"))
         for m, x in _root_stress_values(ds, t):
-            rows.append((f"{t:g}", f"root_stress_max {m}", "MPa", f"{x.min():.4g}",
+            rows.append((plain_number(t), f"root_stress_max {m}", "MPa", f"{x.min():.4g}",
                          f"{np.median(x):.4g}", f"{x.max():.4g}"))
     return tabulate(rows, headers=("T_p [N m]", "summary", "units", "min", "median", "max"),
                     tablefmt="github")
@@ -406,11 +406,11 @@ def tolerance_command(args: argparse.Namespace) -> int:
             x, units = _shown(n, draw_values(ds, n, t), ds[n].attrs.get("units", ""))
             if x.size:
                 p5, p50, p95 = np.percentile(x, (5, 50, 95))
-                rows.append((f"{t:g}", n, units, f"{p5:.4g}",
+                rows.append((plain_number(t), n, units, f"{p5:.4g}",
                              f"{p50:.4g}", f"{p95:.4g}", f"{x.mean():.4g}", f"{x.std():.3g}"))
         for m, x in _root_stress_values(ds, t):
             p5, p50, p95 = np.percentile(x, (5, 50, 95))
-            rows.append((f"{t:g}", f"root_stress_max {m}", "MPa", f"{p5:.4g}", f"{p50:.4g}",
+            rows.append((plain_number(t), f"root_stress_max {m}", "MPa", f"{p5:.4g}", f"{p50:.4g}",
                          f"{p95:.4g}", f"{x.mean():.4g}", f"{x.std():.3g}"))
     print(tabulate(rows, headers=("T_p [N m]", "summary", "units", "P5", "P50", "P95", "mean",
                                   "std"), tablefmt="github"))
@@ -420,7 +420,7 @@ def tolerance_command(args: argparse.Namespace) -> int:
         for t in ds["torque"].values:
             s = sens.sel(torque=t)
             for name in s["input"].values:
-                srows.append((f"{t:g}", name, f"{float(s['spearman'].sel(input=name)):+.2f}",
+                srows.append((plain_number(t), name, f"{float(s['spearman'].sel(input=name)):+.2f}",
                               f"{float(s['src'].sel(input=name)):+.2f}",
                               f"{float(s['r_squared']):.2f}"))
         print("what drives the spread of LTE p-p (rank correlation, standardised "

@@ -932,7 +932,7 @@ def _rating(rt: xr.Dataset, flank_static: frozenset = frozenset()) -> list[Findi
                 beyond = what == "pitting" and float(t) in flank_static
                 if long_life and t > design and n > 0 and not beyond:
                     # an overload above the design torque: a finite life, stated
-                    hours = (f", {n / (60.0 * speed):.3g} h at {speed:g} rpm"
+                    hours = (f", {plain_number(n / (60.0 * speed), 3)} h at {speed:g} rpm"
                              if np.isfinite(speed) and speed > 0 else "")
                     out.append(Finding(
                         "attention", "rating",
