@@ -1216,7 +1216,7 @@ def _duty(ds: xr.Dataset) -> tuple[list[Finding], list[str]]:
                 findings.append(Finding(
                     "fail", "damage",
                     f"{m}: {what} damage {float(ds[dmg][k]):.3g} over the cycle: life "
-                    f"{float(ds[life][k]):.4g} h, shorter than the cycle's {hours:g} h"))
+                    f"{plain_number(ds[life][k])} h, shorter than the cycle's {hours:g} h"))
         for name, symbol, dmg in (("contact_safety_factor", "S_H", "damage"),
                                   ("bending_safety_factor", "S_F", "root_damage_max")):
             if name in ds and float(ds[name][k]) < DUTY_MIN_SAFETY:
