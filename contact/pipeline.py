@@ -39,6 +39,7 @@ from geometry.core.blas import blas_threads
 from geometry.core.bounds import check_torques
 from geometry.core.caches import Same, memoised
 from geometry.core.errors import InputError
+from geometry.core.text import plain_number
 from geometry.pair.assembly import Misalignment
 
 __all__ = [
@@ -172,7 +173,7 @@ def result_summary(name: str, groups: dict[str, xr.Dataset]) -> str:
     val = {k: lt.variables[k].values for k in ("lte_mean", "lte_peak_to_peak",
                                                "pressure_max_flank", "pressure_max_edge")}
     for i, t in enumerate(lt.variables["torque"].values):
-        text = (f"T_p {t:g} N m: LTE mean {float(val['lte_mean'][i]):.1f} urad, "
+        text = (f"T_p {plain_number(t)} N m: LTE mean {float(val['lte_mean'][i]):.1f} urad, "
                 f"peak-to-peak {float(val['lte_peak_to_peak'][i]):.1f} urad; peak "
                 f"pressure flank {float(val['pressure_max_flank'][i]):.0f} MPa, edge "
                 f"{float(val['pressure_max_edge'][i]):.0f} MPa")
@@ -353,8 +354,8 @@ def flank_torques(case: Case, flank: str | None = None) -> tuple[tuple[float, ..
     above = [f"{t:g}" for t in torques if t > float(coast)]
     return limited, (f"the case's [operating] torque{'s' if len(above) > 1 else ''} "
                      f"{', '.join(above)} N m limited to its [rating] coast_design_torque "
-                     f"{float(coast):g} N m (the coast side's own design torque, below the "
-                     f"design torque {float(design):g} N m)")
+                     f"{plain_number(coast)} N m (the coast side's own design torque, below the "
+                     f"design torque {plain_number(design)} N m)")
 
 
 def _datatree(groups: dict[str, xr.Dataset]) -> xr.DataTree:

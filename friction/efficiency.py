@@ -71,6 +71,7 @@ from friction.rolling import rolling_traction
 from geometry.core.conventions import binary_flag, coords_along, data_var, dataset
 from geometry.core.errors import InputError
 from geometry.core.hertz import STEEL, contact_modulus
+from geometry.core.text import plain_number
 
 __all__ = ["LoadedSegments", "efficiency_analysis", "extrapolated_segments",
            "extrapolation_summary", "loaded_segments", "uncertified_as_nan"]
@@ -220,7 +221,7 @@ def uncertified_as_nan(friction: xr.Dataset, ltca: xr.Dataset) -> xr.Dataset:
         return friction
     torques = np.asarray(ltca.variables["torque"].values, float)
     some = ~found.all(axis=1)
-    where = ", ".join(f"T_p {t:g} N m ({int((~found[i]).sum())} of {found.shape[1]})"
+    where = ", ".join(f"T_p {plain_number(t)} N m ({int((~found[i]).sum())} of {found.shape[1]})"
                       for i, t in enumerate(torques) if some[i])
     why = (f"NaN where the loaded contact has no certified solution (roll positions of {where}; "
            "/ltca/found, /ltca/status): no efficiency, temperature or safety without contact "

@@ -379,7 +379,7 @@ def test_a_failed_coast_check_says_why(monkeypatch):
                                         None, {}, said.append, None)
     assert out.status == "not checked" and out.best is None
     assert said == ["development: coast flank convex: not checked (its analysis at "
-                    "2001/1.486e+04 N m failed: InputError: torque: 14860 N m is beyond "
+                    "2001/14860 N m failed: InputError: torque: 14860 N m is beyond "
                     "what the tooth model carries)"]
 
 

@@ -187,7 +187,7 @@ def test_the_default_run_judges_its_lte_between_its_torques(default_run_file):
     np.testing.assert_allclose(y[1:3], alone["/ltca"]["lte_peak_to_peak"].values, rtol=SAME)
     assert y[0] < 17.5 and y[3] < 17.5 and y[2] > 17.5
     (finding,) = [f for f in verdict(tree, lte_limit=17.5).findings if f.check == "lte"]
-    assert finding.reason.startswith("LTE peak-to-peak 18 µrad at 183.333 N·m (a torque between")
+    assert finding.reason.startswith("LTE peak-to-peak 18 µrad at 183.3 N·m (a torque between")
     assert "up to about" in finding.reason
 
 

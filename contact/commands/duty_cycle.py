@@ -162,6 +162,7 @@ def run(args: argparse.Namespace) -> int:
     from contact.study.run import StudyRun
     from geometry.core.errors import InputError
     from geometry.core.io import write_netcdf
+    from geometry.core.text import plain_number
 
     if args.workers is not None and args.workers < 1:
         raise InputError(f"--workers: must be >= 1, got {args.workers}")
@@ -185,7 +186,7 @@ def run(args: argparse.Namespace) -> int:
     print_wrapped(f"duty cycle of {case.name}: {duty.name}, {duty.n_bins} bins: T [N m] "
                   + ", ".join(f"{t:g}" for t in duty.torque) + "; n [rpm] "
                   + ", ".join(f"{n:g}" for n in duty.pinion_speed) + "; t [h] "
-                  + ", ".join(f"{h:.4g}" for h in duty.hours))
+                  + ", ".join(plain_number(h) for h in duty.hours))
     where = where_line(args.scheduler, args.workers, duty.n_bins)
     if where:
         print(where, flush=True)
@@ -198,7 +199,7 @@ def run(args: argparse.Namespace) -> int:
     if duty.illustrative:
         print("NOTE: the bundled spectrum and deflection table are ILLUSTRATIVE (made-up "
               "proportions), not a measured drive cycle")
-    rows = [(i, f"{r['torque']:g}", f"{r['speed']:g}", f"{r['hours']:.4g}",
+    rows = [(i, f"{r['torque']:g}", f"{r['speed']:g}", plain_number(r['hours']),
              f"{r['lte_mean']:.1f}", f"{r['lte_peak_to_peak']:.2f}",
              f"{r['pressure_max_flank']:.0f}", f"{100 * r['edge_load_share']:.1f}",
              _fmt(r['pressure_max_edge'], '.0f') if r['edge_load_share'] > 0 else "-",

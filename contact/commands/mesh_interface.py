@@ -60,6 +60,7 @@ def run(args: argparse.Namespace) -> int:
     from contact.ltca.mesh_interface import write_mesh_interface_csv
     from contact.pipeline import run_analysis
     from contact.plots.style import misalignment_text
+    from geometry.core.text import plain_number
 
     output = checked_outputs(args, "_mesh_interface.csv")
     case, mis = case_and_misalignment(args)
@@ -74,7 +75,7 @@ def run(args: argparse.Namespace) -> int:
     for i, t in enumerate(mesh["torque"].values):
         k1 = mesh["mesh_stiffness_amplitude"].values[i]
         e1 = mesh["te_excitation_amplitude"].values[i]
-        rows.append((f"{t:g}", f"{float(mesh['mesh_force'].isel(torque=i).mean()):.0f}",
+        rows.append((plain_number(t), f"{float(mesh['mesh_force'].isel(torque=i).mean()):.0f}",
                      f"{float(mesh['mesh_stiffness_mean'].values[i]):.1f}",
                      " / ".join(f"{v:.1f}" for v in k1[:3]),
                      f"{float(mesh['te_excitation_mean'].values[i]):.2f}",

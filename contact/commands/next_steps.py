@@ -28,6 +28,8 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping, Sequence
 
+from geometry.core.text import plain_number
+
 __all__ = ["bearing_lines", "duty_cycle_lines", "optimised_variables", "overlap_lines",
            "static_flank_strength"]
 
@@ -326,12 +328,12 @@ def duty_cycle_lines(ds, shown: str, flank: str | None,
             # a file whose member dimension has no labels stores its index (pinion 0, gear 1)
             member = (("pinion", "gear")[int(member)] if np.issubdtype(
                 np.asarray(member).dtype, np.integer) else str(member))
-            why = (f"bin {worst} ({torque[worst]:g} N m) does "
+            why = (f"bin {worst} ({plain_number(torque[worst])} N m) does "
                    f"{100 * per_bin[worst] / per_bin.sum():.0f} % of the {member}'s flank "
                    "damage at its first point to fail")
     if worst is None:
         worst = int(np.argmax(torque))
-        why = f"the peak-torque bin {worst} ({torque[worst]:g} N m)"
+        why = f"the peak-torque bin {worst} ({plain_number(torque[worst])} N m)"
     t = f"{torque[worst]:g}"
     return [*first,
             f"  next: {why}; its bearing at that torque as ltca run analyses it (the verdict "

@@ -69,6 +69,7 @@ def rating_lines(tree: xr.DataTree, why: str = "", case_arg: str | None = None,
     from tabulate import tabulate
 
     from contact.load_capacity.contract import safeties
+    from geometry.core.text import plain_number
 
     raw = tree["rating"].to_dataset()
     name = str(raw.attrs.get("rating_method", method or ""))
@@ -85,7 +86,7 @@ def rating_lines(tree: xr.DataTree, why: str = "", case_arg: str | None = None,
     rows = []
     for i, t in enumerate(ds["torque"].values):
         for j, member in enumerate(members):
-            row = [f"{t:g}", str(member)]
+            row = [plain_number(t), str(member)]
             if stresses:
                 c = float(ds["contact_stress"].transpose("torque", "member").values[i, j])
                 r = float(ds["root_stress"].transpose("torque", "member").values[i, j])

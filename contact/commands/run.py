@@ -37,6 +37,7 @@ from contact.commands.options import (
     torque_option,
 )
 from contact.commands.output_paths import check_output_dir
+from geometry.core.text import plain_number
 
 __all__ = ["TE_TABLE_HEADERS", "check_certified", "deviation_te_rows", "durability_lines",
            "misalignment_from_args", "plot", "print_verdict", "rating_lines", "register",
@@ -580,7 +581,7 @@ def lte_between_line(ltca) -> str | None:
     return ("LTE p-p between the torques, the contact alone (/ltca/lte_range_peak_to_peak; "
             "the verdict judges them up to the design torque): "
             + " / ".join(f"{v:.1f}" for v in y) + " urad at "
-            + " / ".join(f"{x:g}" for x in t) + " N m")
+            + " / ".join(f"{plain_number(x)}" for x in t) + " N m")
 
 
 def _light_design_lte(tree) -> list[float] | None:
@@ -719,7 +720,7 @@ def root_stress_rows(ltca) -> list[tuple[str, ...]]:
     rs = ltca["root_stress"]
     rows = []
     for i, t in enumerate(ltca["torque"].values):
-        cells = [f"{t:g}"]
+        cells = [plain_number(t)]
         for member in ("pinion", "gear"):
             face = rs.isel(torque=i).sel(member=member).max(("roll", "tooth"))
             if not bool(face.notnull().any()):  # not computed: the notes say why
@@ -776,7 +777,7 @@ def durability_lines(friction, standard=None) -> list[str]:
         s_b = float(friction["scuffing_safety"].values[i])
         s_l = float(friction["micropitting_safety"].values[i])
         lines.append(
-            f"T_p {t:g} N m: peak contact temperature "
+            f"T_p {plain_number(t)} N m: peak contact temperature "
             f"{float(friction['contact_temperature_max'].values[i]):.0f} degC (flash "
             f"{float(friction['flash_temperature_max'].values[i]):.0f} K), scuffing safety "
             f"S_B {_number(s_b)}, least lambda_GF (film at the bulk temperature theta_M, "

@@ -37,6 +37,7 @@ from contact.commands.options import (
 from contact.commands.output_paths import check_output_dir, check_output_file
 from contact.commands.run import print_verdict
 from geometry.core.errors import InputError
+from geometry.core.text import plain_number
 
 if TYPE_CHECKING:
     import numpy as np
@@ -263,10 +264,10 @@ def _ranges_table(ds) -> str:
             x = ds[n].sel(torque=t).values.astype(float)
             x, units = _shown(n, x[np.isfinite(x)], ds[n].attrs.get("units", ""))
             if x.size:
-                rows.append((f"{t:g}", n, units, f"{x.min():.4g}",
+                rows.append((plain_number(t), n, units, f"{x.min():.4g}",
                              f"{np.median(x):.4g}", f"{x.max():.4g}"))
         for m, x in _root_stress_values(ds, t):
-            rows.append((f"{t:g}", f"root_stress_max {m}", "MPa", f"{x.min():.4g}",
+            rows.append((plain_number(t), f"root_stress_max {m}", "MPa", f"{x.min():.4g}",
                          f"{np.median(x):.4g}", f"{x.max():.4g}"))
     return tabulate(rows, headers=("T_p [N m]", "summary", "units", "min", "median", "max"),
                     tablefmt="github")
@@ -354,7 +355,7 @@ def sweep_command(args: argparse.Namespace) -> int:
     n = math.prod(v.size for v in axes.values())
     print(f"sweep of {case.name}: {n} points (" + " x ".join(f"{k} {v.size}" for k, v in
                                                            axes.items())
-          + f") at T_p {', '.join(f'{t:g}' for t in torques)} N m", flush=True)
+          + f") at T_p {', '.join(f'{plain_number(t)}' for t in torques)} N m", flush=True)
     print("\n".join(lines), flush=True)
     ds = sweep(case, torque=torques, pinion_speed=args.speed, **axes, run=run)
     print(_ranges_table(ds))
@@ -383,7 +384,7 @@ def tolerance_command(args: argparse.Namespace) -> int:
     torques = _torques(args, case)
     print(f"tolerance analysis of {case.name}: {args.n} draws ({args.method}, seed "
           f"{args.seed}) of " + ", ".join(dists)
-          + f" at T_p {', '.join(f'{t:g}' for t in torques)} N m", flush=True)
+          + f" at T_p {', '.join(f'{plain_number(t)}' for t in torques)} N m", flush=True)
     # the draws sample() will make (same distributions, method and seed): their range
     draws = draw_points(dists, args.n, method=args.method, seed=args.seed)
     for opt, (name, factor) in _INPUT_OPTIONS.items():
@@ -405,11 +406,11 @@ def tolerance_command(args: argparse.Namespace) -> int:
             x, units = _shown(n, draw_values(ds, n, t), ds[n].attrs.get("units", ""))
             if x.size:
                 p5, p50, p95 = np.percentile(x, (5, 50, 95))
-                rows.append((f"{t:g}", n, units, f"{p5:.4g}",
+                rows.append((plain_number(t), n, units, f"{p5:.4g}",
                              f"{p50:.4g}", f"{p95:.4g}", f"{x.mean():.4g}", f"{x.std():.3g}"))
         for m, x in _root_stress_values(ds, t):
             p5, p50, p95 = np.percentile(x, (5, 50, 95))
-            rows.append((f"{t:g}", f"root_stress_max {m}", "MPa", f"{p5:.4g}", f"{p50:.4g}",
+            rows.append((plain_number(t), f"root_stress_max {m}", "MPa", f"{p5:.4g}", f"{p50:.4g}",
                          f"{p95:.4g}", f"{x.mean():.4g}", f"{x.std():.3g}"))
     print(tabulate(rows, headers=("T_p [N m]", "summary", "units", "P5", "P50", "P95", "mean",
                                   "std"), tablefmt="github"))
@@ -419,7 +420,7 @@ def tolerance_command(args: argparse.Namespace) -> int:
         for t in ds["torque"].values:
             s = sens.sel(torque=t)
             for name in s["input"].values:
-                srows.append((f"{t:g}", name, f"{float(s['spearman'].sel(input=name)):+.2f}",
+                srows.append((plain_number(t), name, f"{float(s['spearman'].sel(input=name)):+.2f}",
                               f"{float(s['src'].sel(input=name)):+.2f}",
                               f"{float(s['r_squared']):.2f}"))
         print("what drives the spread of LTE p-p (rank correlation, standardised "
@@ -453,7 +454,7 @@ def vh_check_command(args: argparse.Namespace) -> int:
                              else VH_DEFAULT_TORQUE)
     nv = len(kw.get("delta_E", VH_DEFAULT_GRID[0]))
     nh = len(kw.get("delta_P", VH_DEFAULT_GRID[1]))
-    print(f"V-H check of {case.name} at {torque:g} N m about its mounting dE "
+    print(f"V-H check of {case.name} at {plain_number(torque)} N m about its mounting dE "
           f"{case.misalignment.delta_E:g} mm, dP {case.misalignment.delta_P:g} mm: mapping "
           f"the pattern centre over {nv} x {nh} V-H points ({nv * nh} analyses), then 3 "
           "single analyses", flush=True)
@@ -473,7 +474,7 @@ def vh_check_command(args: argparse.Namespace) -> int:
              f"{float(r['target_v']):.3f}", f"{float(r['pattern_centre_v']):.3f}",
              f"{float(r['grid_tolerance_u']):.3f}")
             for p, r in ((p, ds.sel(position=p)) for p in ds["position"].values)]
-    print(f"V-H check of {case.name} at {ds.attrs['torque_N_m']:g} N m "
+    print(f"V-H check of {case.name} at {plain_number(ds.attrs['torque_N_m'])} N m "
           "(V = dE, H = dP; centre as fractions of face width u and whole depth v)")
     print(tabulate(rows, headers=("position", "V [mm]", "H [mm]", "target u", "centre u",
                                   "target v", "centre v", "grid tol. u"), tablefmt="github"))

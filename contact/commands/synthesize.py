@@ -15,6 +15,7 @@ from contact.commands.options import (
 )
 from contact.commands.output_paths import check_output_file
 from geometry.core.atomic_files import atomic_path
+from geometry.core.text import plain_number
 
 #: Place in ``ltca --help``.
 ORDER = 30
@@ -640,8 +641,8 @@ def _above_capacity_note(case, torque: float) -> str | None:
     # (below the torque, which is shown as given): a user's 265 N m typed for the 264.96
     # N m capacity read "265 N m is above ... capacity 265 N m" (issue 71, unseen designs)
     return (f"the design torque {torque:g} N m is above the pair's ISO 10300 long-life "
-            f"capacity {floor_capacity(capacity):.4g} N m (the torque at which S_H or S_F "
-            "reaches its minimum): `ltca run` rates it FAIL at long life; a design torque at "
+            f"capacity {plain_number(floor_capacity(capacity))} N m (the torque at which S_H or "
+            "S_F reaches its minimum): `ltca run` rates it FAIL at long life; a design torque at "
             "or below "
             "the capacity (the default, without [synthesis] design_torque), or the duty's "
             "load cycles as [rating] load_cycles, rates it for what it is")
@@ -873,10 +874,10 @@ def _run_synthesize(args: argparse.Namespace) -> int:
         print(f"  pinion {flank}: r_p {fs.tools.blade.point_radius:.3f} mm, R_a "
               f"{s.ratio_of_roll:.5f}, S_r {s.radial_setting:.3f} mm, E_m "
               f"{s.blank_offset:.3f} mm, curvature residual {fs.tools.shape_error:.1e} 1/mm")
-    print("  design torque: " + (f"{torque:.4g} N m, {torque_why}" if math.isfinite(torque)
-                                  else torque_why))
+    print("  design torque: " + (f"{plain_number(torque)} N m, {torque_why}"
+                                  if math.isfinite(torque) else torque_why))
     if math.isfinite(coast_torque):
-        print(f"  coast design torque: {coast_torque:.4g} N m, {coast_why}")
+        print(f"  coast design torque: {plain_number(coast_torque)} N m, {coast_why}")
     given = torque_why.startswith(("[synthesis] design_torque", "[rating] design_torque"))
     above = _above_capacity_note(case, torque) if given else None
     if above is not None:

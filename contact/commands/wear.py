@@ -19,6 +19,7 @@ from contact.commands.options import (
     solver_option,
     torque_option,
 )
+from geometry.core.text import plain_number
 
 #: pinion torque of ``ltca wear`` without ``--torque`` [N·m] (the seed's Table 4.2)
 WEAR_TORQUE = 200.0
@@ -89,7 +90,8 @@ def run(args: argparse.Namespace) -> int:
          f"{ds['lte_peak_to_peak'].values[i]:.2f}", f"{ds['pressure_max_flank'].values[i]:.0f}")
         for i, s in enumerate(ds["step"].values)
     ]
-    print(f"case {case.name}: wear at {torque:g} N m, k = {args.wear_coefficient:g} m^2/N, "
+    print(f"case {case.name}: wear at {plain_number(torque)} N m, "
+          f"k = {args.wear_coefficient:g} m^2/N, "
           f"{args.cycles:g} cycles in {args.steps} steps")
     print(tabulate(rows, headers=["step", "cycles", "pinion depth [um]", "gear depth [um]",
                                   "UTE p-p [urad]", "LTE p-p [urad]", "p_max [MPa]"],

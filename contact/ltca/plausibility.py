@@ -73,6 +73,7 @@ import numpy as np
 import xarray as xr
 
 from geometry.case import Case
+from geometry.core.text import plain_number
 from geometry.pair.assembly import Misalignment
 
 __all__ = ["CAUSES", "EDGE_SHARE_MIN", "LTE_LIMIT", "LTE_SPREAD_LIMIT",
@@ -114,9 +115,10 @@ MISALIGNMENT_LIMIT_FRACTION = 0.05
 CAUSES = ("plastic_contact", "flank_above_limit", "lte_spread", "misalignment_beyond_blank")
 
 
-def _slashed(values: np.ndarray, fmt: str = "{:g}") -> str:
-    """'12.3/4.5'-style text of values, one per flagged torque."""
-    return "/".join(fmt.format(v) for v in values)
+def _slashed(values: np.ndarray, fmt: str | None = None) -> str:
+    """'12.3/4.5'-style text of values, one per flagged torque (``fmt`` None: plain digits,
+    four significant figures, :func:`geometry.core.text.plain_number`)."""
+    return "/".join(plain_number(v) if fmt is None else fmt.format(v) for v in values)
 
 
 def _above(values: np.ndarray, limit: float, decimals: int) -> str:

@@ -38,6 +38,7 @@ from contact.ltca.weber import RollSelection, WeberSolution, even_share, weber_s
 from contact.qp import ContactProblem, ContactSolution
 from geometry.core.errors import InputError
 from geometry.core.hertz import contact_modulus
+from geometry.core.text import plain_number
 
 __all__ = ["RollProblem", "solve_rolls"]
 
@@ -225,7 +226,7 @@ def _solve_roll(an: _Analysis, cont: _Continuation, j: int, it: int) -> None:
                 raise
             except InputError as exc:  # a segment the rotation closes has no mate
                 raise InputError(
-                    f"torque: {T:g} N m is beyond what the tooth model of this case "
+                    f"torque: {plain_number(T)} N m is beyond what the tooth model of this case "
                     f"carries: at roll {j} its loaded rotation closes segments of far "
                     "tooth pairs that lie off their mating tooth (the teeth deflect beyond "
                     f"the model's pairs; {exc})") from exc
@@ -377,7 +378,7 @@ def _assemble_first_pool(an: _Analysis, j: int) -> _Analysis:
                 hi = mid
         if lo < 0:
             raise InputError(
-                f"torque: {torque:g} N m is beyond what the tooth model of this case "
+                f"torque: {plain_number(torque)} N m is beyond what the tooth model of this case "
                 f"carries: at roll {j} even the nearest segments of its tooth pairs lie off "
                 "their mating tooth") from exc
     limit = float(seps[lo])

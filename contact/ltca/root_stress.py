@@ -63,6 +63,7 @@ from contact.utca import EaseOff
 from geometry.core.caches import Same, memoised
 from geometry.core.conventions import data_var, dataset
 from geometry.core.errors import InputError, LTCAError
+from geometry.core.text import plain_number
 from geometry.pair.assembly import case_transforms
 
 __all__ = ["DESIGN_LIMIT", "FE_ACCURACY_ATTR", "FE_LEVEL_ATTR", "GRID_LIMIT",
@@ -523,8 +524,8 @@ def unplaced_reason(member: str, torque: float, unplaced: Unplaced) -> str:
             f"{100 * unplaced.share:.2g} % of the load over the mesh cycle) lie "
             f"{' and '.join(where)} in the FE model, which cannot place their load")
     if unplaced.share > UNPLACED_SHARE:
-        return f"{member} at {torque:g} N m: not computed (NaN): {what}."
-    return (f"{member} at {torque:g} N m: {what}; left out (at most "
+        return f"{member} at {plain_number(torque)} N m: not computed (NaN): {what}."
+    return (f"{member} at {plain_number(torque)} N m: {what}; left out (at most "
             f"{100 * UNPLACED_SHARE:g} % of the load may be).")
 
 
@@ -694,7 +695,7 @@ def slot_bottom_notes(case, ltca: xr.Dataset, flank: str = "drive",
         if not hit:
             continue
         edge = min(secs.edge_radius.values())
-        at = "; ".join(f"{', '.join(f'{t:g}' for t in ts)} N m at u {fu[k]:.2f}"
+        at = "; ".join(f"{', '.join(f'{plain_number(t)}' for t in ts)} N m at u {fu[k]:.2f}"
                        for k, ts in sorted(hit.items()))
         lines.append(
             f"root stress: the {member}'s peak ({at}) lies where the FE model rounds its slot "

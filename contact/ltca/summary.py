@@ -19,6 +19,7 @@ import numpy as np
 import xarray as xr
 
 from geometry.core.errors import InputError
+from geometry.core.text import plain_number
 
 __all__ = ["ANALYSIS_STATUS", "Certification", "FlankPeak", "certification",
            "edge_load_share", "flank_peak", "flank_peak_pressure"]
@@ -260,8 +261,8 @@ def certification(ltca: xr.Dataset) -> Certification:
     first = which[0]
     j = int(np.argmin(found[first]))
     why = str(status[first, j]).strip()
-    where = ", ".join(f"T_p {torques[i]:g} N m ({certified[i]} of {rolls} roll positions "
-                      "certified)" for i in which)
+    where = ", ".join(f"T_p {plain_number(torques[i])} N m ({certified[i]} of {rolls} roll "
+                      "positions certified)" for i in which)
     detail = f"; roll {j}: {why}" if why else ""
     if none:
         return Certification("failed", f"no certified contact solution at {where}{detail}",

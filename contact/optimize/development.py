@@ -211,6 +211,7 @@ from contact.optimize.development_targets import (
 from geometry.case import Case
 from geometry.core.blas import blas_threads
 from geometry.core.errors import InputError, raise_if_interrupted
+from geometry.core.text import plain_number
 from geometry.synthesis.basic_design import (
     BasicDesign,
     flank_option_values,
@@ -548,10 +549,11 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                                                  say)
             coast_cap = first if second is None else CoastCapacity(
                 second.torque, first.start, first.checks + second.checks,
-                (f"{first.reason}; the coast flank developed again at {first.torque:.4g} N m"
+                (f"{first.reason}; the coast flank developed again at "
+                 f"{plain_number(first.torque)} N m"
                  if first.reason else f"the coast flank developed again at its design "
-                 f"torque {first.torque:.4g} N m (developed at "
-                 f"{coast_setup['torques'][1]:.4g} N m before the design torque was cut)")
+                 f"torque {plain_number(first.torque)} N m (developed at "
+                 f"{plain_number(coast_setup['torques'][1])} N m before the design torque was cut)")
                 + (f", then {second.reason}" if second.lowered else ", where it holds"),
                 second.holds)
         else:
@@ -569,12 +571,12 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                                                         searched, say)
                 if (again_cap is not None and again_cap.holds
                         and again_cap.torque > coast_cap.torque):
-                    say(f"development: coast design torque {coast_cap.torque:.4g} -> "
-                        f"{again_cap.torque:.4g} N m with the lighter tip relief")
+                    say(f"development: coast design torque {plain_number(coast_cap.torque)} -> "
+                        f"{plain_number(again_cap.torque)} N m with the lighter tip relief")
                     coast_cap = CoastCapacity(
                         again_cap.torque, coast_cap.start, coast_cap.checks + again_cap.checks,
                         f"{again_cap.reason or 'it holds there'} (the coast tip relief "
-                        f"made lighter: {coast_cap.torque:.4g} N m before)", True)
+                        f"made lighter: {plain_number(coast_cap.torque)} N m before)", True)
                 else:
                     say("development: the lighter coast tip relief carries no more; the "
                         "coast design kept")
@@ -721,12 +723,12 @@ def _regained(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTarge
     tolerance = ""
     if not held.holds:
         if held.why or not held.torque > 1.01 * torque:
-            why = held.why or (f"the mounting tolerance it has at {torque:.4g} N m holds "
-                               f"up to {held.torque:.4g} N m only (not at "
-                               f"{held.fails:.4g}; at {new:.4g} N m "
+            why = held.why or (f"the mounting tolerance it has at {plain_number(torque)} N m holds "
+                               f"up to {plain_number(held.torque)} N m only (not at "
+                               f"{plain_number(held.fails)}; at {plain_number(new)} N m "
                                f"{'; '.join(held.lost)})")
-            say(f"  design torque not raised {torque:.4g} -> {new:.4g} N m on the bearing "
-                f"developed at it: {why}")
+            say(f"  design torque not raised {plain_number(torque)} -> {plain_number(new)} N m on "
+                f"the bearing developed at it: {why}")
             return best, root_text, root_safety
         # below the capacity found: every criterion holds there (S falls with T)
         up = _raised_to(case, best, targets, setup, held.torque, torque, say,
@@ -734,15 +736,16 @@ def _regained(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTarge
         if up is None:
             return best, root_text, root_safety
         raised, torques, capacity, safety = up
-        tolerance = (f" — its capacity {new:.4g} N m, the mounting tolerance it has at "
-                     f"{torque:.4g} N m held up to {held.torque:.4g} N m (not at "
-                     f"{held.fails:.4g}; at {new:.4g} N m {'; '.join(held.lost)})")
+        tolerance = (f" — its capacity {plain_number(new)} N m, the mounting tolerance it has at "
+                     f"{plain_number(torque)} N m held up to {plain_number(held.torque)} N m (not "
+                     f"at {plain_number(held.fails)}; at {plain_number(new)} N m "
+                     f"{'; '.join(held.lost)})")
         new = capacity
-    source = (f"{setup['source']}; on the bearing developed at {torque:.4g} N m, "
-              f"raised back to {new:.4g} N m (of {ceiling:.4g}), where every capacity "
-              f"criterion holds{tolerance}")
-    say(f"  design torque {torque:.4g} -> {new:.4g} N m: the bearing developed at the "
-        f"lowered torque carries it (S_F,FE and S_H,loc at or above their minima"
+    source = (f"{setup['source']}; on the bearing developed at {plain_number(torque)} N m, "
+              f"raised back to {plain_number(new)} N m (of {plain_number(ceiling)}), where every "
+              f"capacity criterion holds{tolerance}")
+    say(f"  design torque {plain_number(torque)} -> {plain_number(new)} N m: the bearing "
+        f"developed at the lowered torque carries it (S_F,FE and S_H,loc at or above their minima"
         + (f"; the mounting tolerance holds to it{tolerance}" if tolerance else
            ", the mounting tolerance kept") + ")")
     setup.update(torques=torques, source=source)
@@ -767,8 +770,8 @@ def _raised_to(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTarg
     raised = rescored(best, tree, case, targets, setup)
     lost = _lost_at(best, raised)
     if lost:
-        say(f"  design torque not raised {torque:.4g} -> {new:.4g} N m{what} on the bearing "
-            f"developed at it: it would miss {', '.join(lost)}")
+        say(f"  design torque not raised {plain_number(torque)} -> {plain_number(new)} N m{what} "
+            f"on the bearing developed at it: it would miss {', '.join(lost)}")
         return None
     return raised, torques, new, safety
 
@@ -815,8 +818,9 @@ def _pitting_outclassed(case: Case, setup: dict[str, Any], below: float,
 
     bound = pitting_capacity_bound(case, setup["torques"])
     if bound < below:
-        say(f"  local pitting capacity at most {bound:.4g} N m (S_H,loc at "
-            f"{float(setup['torques'][1]):.4g} N m), below {below:.4g} N m: stopped")
+        say(f"  local pitting capacity at most {plain_number(bound)} N m (S_H,loc at "
+            f"{plain_number(float(setup['torques'][1]))} N m), below {plain_number(below)} N m: "
+            f"stopped")
         raise Outclassed(bound)
 
 

@@ -189,6 +189,7 @@ from contact.optimize.development_variant import check_rank as _check_rank
 from contact.optimize.development_variant import checked_variant as _checked_variant
 from geometry.case import Case
 from geometry.core.errors import InputError, raise_if_interrupted
+from geometry.core.text import plain_number
 from geometry.synthesis.basic_design import (
     BasicDesign,
     with_flank_options,
@@ -500,10 +501,10 @@ def static_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     source = (f"the flank's static capacity of the developed bearing: its LTCA flank peak "
               f"pressure {p:.0f} MPa {'within' if p <= limit else 'still above'} the "
               f"static strength {limit:.0f} MPa, below "
-              f"{setup['source'].split(',')[0]} {capacity:.4g} N m, at which it reached "
+              f"{setup['source'].split(',')[0]} {plain_number(capacity)} N m, at which it reached "
               f"{float(best.metrics['pressure_max_flank'][1]):.0f} MPa")
     setup.update(torques=torques, source=source, lowered=True)
-    say(f"  design torque {capacity:.4g} -> {torque:.4g} N m: {source}")
+    say(f"  design torque {plain_number(capacity)} -> {plain_number(torque)} N m: {source}")
     return dataclasses.replace(best, metrics=ms, objective=full[0], shortfalls=full[1],
                                met=full[2], full=full)
 

@@ -37,6 +37,7 @@ from typing import Any
 from contact.optimize.development_result import STATIC_MARGIN, floor_torque
 from contact.optimize.development_root import root_capacity_step
 from geometry.core.errors import raise_if_interrupted
+from geometry.core.text import plain_number
 
 __all__ = ["CLOSENESS", "COAST_STEPS", "PLASTIC_STEP", "REFINE_STEPS", "CoastCapacity",
            "CoastCheck", "coast_capacity", "coast_torque_step"]
@@ -299,7 +300,7 @@ def coast_capacity(analyse: Callable[[float], CoastCheck], start: float,
         except Exception as exc:  # reported, never fatal: the torques checked are kept
             raise_if_interrupted(exc)
             log.info("coast capacity check at %g N m failed: %s", t, exc)
-            say(f"development: coast flank not analysed at {t:.4g} N m ({exc})")
+            say(f"development: coast flank not analysed at {plain_number(t)} N m ({exc})")
             return None
         checks.append(c)
         return c
@@ -339,12 +340,13 @@ def coast_capacity(analyse: Callable[[float], CoastCheck], start: float,
     now = "; ".join(_within(last)) if holds else "; ".join(last.failures.values())
     n = len(checks) - 1
     reason = (f"the coast flank's capacity at its developed bearing (ltca run --flank "
-              f"coast's analysis): at {start:.4g} N m {'; '.join(first.failures.values())}; "
+              f"coast's analysis): at {plain_number(start)} N m "
+              f"{'; '.join(first.failures.values())}; "
               f"{n} torque{'s' if n != 1 else ''} below checked, the largest that holds "
-              f"{last.torque:.4g} N m, where {'still ' if not holds else ''}{now}"
-              + (f" (at {bad.torque:.4g} N m: {'; '.join(bad.failures.values())})"
+              f"{plain_number(last.torque)} N m, where {'still ' if not holds else ''}{now}"
+              + (f" (at {plain_number(bad.torque)} N m: {'; '.join(bad.failures.values())})"
                  if holds and bad is not first else ""))
-    say(f"  coast design torque {start:.4g} -> {last.torque:.4g} N m: {reason}")
+    say(f"  coast design torque {plain_number(start)} -> {plain_number(last.torque)} N m: {reason}")
     return CoastCapacity(last.torque, start, tuple(checks), reason, holds)
 
 

@@ -50,6 +50,7 @@ from contact.optimize.development_result import DevelopmentEvaluation, floor_tor
 from contact.optimize.development_targets import DevelopmentTargets
 from contact.optimize.development_variant import changed_values, lte_fails, said_variant
 from geometry.case import Case
+from geometry.core.text import plain_number
 from geometry.synthesis.basic_design import BasicDesign, with_flank_options
 
 log = logging.getLogger("contact.optimize.development")
@@ -432,8 +433,8 @@ def coast_lte_within_capacity(developed: BasicDesign, drive: DevelopmentEvaluati
     side = "convex" if developed.options.drive_flank == "concave" else "concave"
     static = float(final.limit)
     say(f"development: coast flank LTE p-p {np.nanmax(old.metrics['lte_peak_to_peak']):.0f}"
-        f" urad at {coast.torques[0]:.4g}/{coast.torques[1]:.4g} N m after its LTE steps: "
-        f"bearings whose peak may rise up to the static strength {static:.0f} MPa")
+        f" urad at {plain_number(coast.torques[0])}/{plain_number(coast.torques[1])} N m after "
+        f"its LTE steps: bearings whose peak may rise up to the static strength {static:.0f} MPa")
 
     def placed(values):
         return synthesize(with_flank_options(developed, side, values), memo=memo)[0]
@@ -455,7 +456,7 @@ def coast_lte_within_capacity(developed: BasicDesign, drive: DevelopmentEvaluati
         # would cut it to 169.4, 28 % of the drive's)
         got = min(near, key=lambda e: float(np.nanmax(e.metrics["lte_peak_to_peak"])))
         say(f"development: coast flank: no bearing within {LTE_LIMIT:g} urad at "
-            f"{coast.torques[1]:.4g} N m; the nearest (LTE p-p "
+            f"{plain_number(coast.torques[1])} N m; the nearest (LTE p-p "
             f"{np.nanmax(got.metrics['lte_peak_to_peak']):.0f} urad) written where its "
             "coast design torque, lowered, keeps the limit")
     text = capacity_text(got, cap, float(coast.torques[1]))
@@ -504,7 +505,7 @@ def capacity_text(e: DevelopmentEvaluation, cap: CoastCapacity, torque: float) -
     return (f"LTE p-p {float(np.nanmax(e.metrics['lte_peak_to_peak'])):.0f} urad within "
             f"60 urad bought with its local pitting margin: flank peak {peak:.0f} MPa "
             f"(static strength {float(final.limit):.0f} MPa), S_H,loc "
-            f"{s_min * bound / peak:.2f} at {torque:.4g} N m below S_Hmin {s_min:g}; the "
+            f"{s_min * bound / peak:.2f} at {plain_number(torque)} N m below S_Hmin {s_min:g}; the "
             "rating's S_H holds there (at or below the coast side's ISO 10300 capacity)")
 
 
@@ -584,7 +585,7 @@ def coast_torque_that_holds(case: Case, basic: BasicDesign, coast: Any,
     again, found = coast_flank_capacity(case, basic, coast, targets, setup, start,
                                         root_stress, True, say)
     if found is None or not found.holds or again.best is None:
-        say(f"development: the coast flank holds at no torque up to {start:.4g} N m on "
+        say(f"development: the coast flank holds at no torque up to {plain_number(start)} N m on "
             "the bearing whose LTE was within 60 urad; the coast design before it written")
         return None
     lte = float(np.nanmax(again.best.metrics["lte_peak_to_peak"]))
@@ -597,7 +598,7 @@ def coast_torque_that_holds(case: Case, basic: BasicDesign, coast: Any,
             lte = float(np.nanmax(again.best.metrics["lte_peak_to_peak"]))
             by_lte = True
     if not lte <= LTE_LIMIT:
-        say(f"development: at the coast design torque {found.torque:.4g} N m, where it "
+        say(f"development: at the coast design torque {plain_number(found.torque)} N m, where it "
             f"holds, its LTE p-p {lte:.0f} urad is above {LTE_LIMIT:g} urad; the coast "
             "design before the step written")
         return None
@@ -607,8 +608,8 @@ def coast_torque_that_holds(case: Case, basic: BasicDesign, coast: Any,
     bound = ", ".join(BOUND_NAMES.get(k, k) for k in failed[-1].failures) if failed else ""
     if by_lte:
         bound = f"LTE p-p within {LTE_LIMIT:g} urad"
-    say(f"development: coast design torque {start:.4g} -> {found.torque:.4g} N m on the "
-        f"bearing whose LTE p-p is {lte:.0f} urad there, set by its {bound}")
+    say(f"development: coast design torque {plain_number(start)} -> {plain_number(found.torque)} "
+        f"N m on the bearing whose LTE p-p is {lte:.0f} urad there, set by its {bound}")
     reason = (f"{cap.reason}; then a coast bearing whose LTE p-p is within "
               f"{LTE_LIMIT:g} urad (the longest ellipse; development_coast_capacity_lte) "
               f"and the coast design torque searched again on it, set by its {bound}: "
@@ -698,16 +699,17 @@ def coast_torque_for_lte(case: Case, basic: BasicDesign, coast: Any, found: Coas
         checks = checks + tuple(there.checks)
         got = [float(x) for x in again.best.metrics["lte_peak_to_peak"]]
         if max(got) <= LTE_LIMIT:
-            say(f"development: coast design torque {found.torque:.4g} -> {there.torque:.4g}"
+            say(f"development: coast design torque {plain_number(found.torque)} -> "
+                f"{plain_number(there.torque)}"
                 f" N m where its LTE p-p is within {LTE_LIMIT:g} urad "
                 f"({' / '.join(f'{x:.0f}' for x in got)} urad at "
-                f"{' / '.join(f'{t:.4g}' for t in again.torques)} N m)")
+                f"{' / '.join(f'{plain_number(t)}' for t in again.torques)} N m)")
             reason = (f"{there.reason + '; ' if there.reason else ''}its LTE p-p "
                       f"{' / '.join(f'{x:.0f}' for x in [*lte, got[1]])} urad at "
-                      f"{' / '.join(f'{t:.4g}' for t in [*seen, again.torques[1]])} N m "
+                      f"{' / '.join(f'{plain_number(t)}' for t in [*seen, again.torques[1]])} N m "
                       f"(the light torque, then each coast design torque tried), within "
                       f"{LTE_LIMIT:g} urad up "
-                      f"to {there.torque:.4g} N m")
+                      f"to {plain_number(there.torque)} N m")
             return again, CoastCapacity(there.torque, found.start, checks, reason, True)
         order = np.argsort([*seen, float(again.torques[1])])
         pairs = [*zip(seen, lte, strict=True), (float(again.torques[1]), got[1])]

@@ -58,6 +58,7 @@ from contact.optimize.development_targets import (
 )
 from geometry.case import Case
 from geometry.core.errors import raise_if_interrupted
+from geometry.core.text import plain_number
 from geometry.synthesis.basic_design import (
     BasicDesign,
     flank_option_values,
@@ -311,7 +312,8 @@ def coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
         # the reason itself, not only its type: "InputError" alone named no cause (the
         # unseen industrial 11x43 of m_mn 12, issue 71 round 13)
         say(f"development: coast flank {side}: not checked (its analysis at "
-            f"{torques[0]:.4g}/{torques[1]:.4g} N m failed: {type(exc).__name__}: {exc})")
+            f"{plain_number(torques[0])}/{plain_number(torques[1])} N m failed: "
+            f"{type(exc).__name__}: {exc})")
         return _CoastOutcome(developed, None, [], "not checked", None, torques)
     synthesised = DevelopmentEvaluation(-1, {k: start[k] for k in targets.variables}, m0,
                                         full[0], full[1], full[2], "",
@@ -328,8 +330,8 @@ def coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
         say(head + f"misses {', '.join(missed)}; coast development off "
             "(coast_max_evaluations = 0)")
         return _CoastOutcome(developed, synthesised, [], "off", None, torques)
-    say(head + f"misses {', '.join(missed)}; developing it at {torques[0]:.4g}/"
-        f"{torques[1]:.4g} N m (light/design) on the same targets: varying "
+    say(head + f"misses {', '.join(missed)}; developing it at {plain_number(torques[0])}/"
+        f"{plain_number(torques[1])} N m (light/design) on the same targets: varying "
         f"{', '.join(targets.variables)} (at most {n_max} designs, coarse LTCA)")
     evals: list[DevelopmentEvaluation] = []
     prefix = (*drive_key, "coast")
@@ -455,12 +457,12 @@ def coast_at_its_torque(pre_coast: BasicDesign, drive: DevelopmentEvaluation,
         # the first design meets every target at the new torques (coast_flank_capacity
         # analysed it there as `ltca run --flank coast` does): that one analysis stands for
         # a search, whose design would replace it only where it met every target as well
-        say(f"development: coast flank at its own design torque {cap.torque:.4g} N m (it "
-            f"was developed at {developed_at:.4g} N m): every target met there; not "
+        say(f"development: coast flank at its own design torque {plain_number(cap.torque)} N m (it "
+            f"was developed at {plain_number(developed_at)} N m): every target met there; not "
             "developed again")
         return None
     say(f"development: coast flank developed again at its own design torque "
-        f"{cap.torque:.4g} N m (it was developed at {developed_at:.4g} N m)")
+        f"{plain_number(cap.torque)} N m (it was developed at {plain_number(developed_at)} N m)")
     redo_setup = dict(setup, torques=[setup["torques"][0], cap.torque])
     # the flank peak pressure the new coast design torque allows (its local pitting
     # safety at S_Hmin) bounds the redevelopment's: a design developed there must carry
@@ -484,10 +486,10 @@ def coast_at_its_torque(pre_coast: BasicDesign, drive: DevelopmentEvaluation,
     if new is None or old.full is None or new.full is None:
         return None
     if ranks_better(old, new):  # a FAIL-level coast LTE never replaces a passing one
-        say(f"development: coast flank at {cap.torque:.4g} N m: the design developed there "
-            f"(objective {new.full[0]:.3g}) kept, not the first ({old.full[0]:.3g})")
+        say(f"development: coast flank at {plain_number(cap.torque)} N m: the design developed "
+            f"there (objective {new.full[0]:.3g}) kept, not the first ({old.full[0]:.3g})")
         return again
-    say(f"development: coast flank at {cap.torque:.4g} N m: the first design kept "
+    say(f"development: coast flank at {plain_number(cap.torque)} N m: the first design kept "
         f"(objective {old.full[0]:.3g}; developed there {new.full[0]:.3g})")
     return None
 
@@ -540,8 +542,8 @@ def coast_lte_at_its_torques(developed: BasicDesign, drive: DevelopmentEvaluatio
     base = developed
     say(f"development: coast flank LTE p-p "
         f"{np.nanmax(old.metrics['lte_peak_to_peak']):.0f} urad at its own torques "
-        f"{coast.torques[0]:.4g}/{coast.torques[1]:.4g} N m (its LTE steps ran at "
-        f"{developed_at:.4g} N m): the coast LTE steps there")
+        f"{plain_number(coast.torques[0])}/{plain_number(coast.torques[1])} N m (its LTE steps "
+        f"ran at {plain_number(developed_at)} N m): the coast LTE steps there")
 
     def placed(values):
         return synthesize(with_flank_options(base, side, values), memo=memo)[0]
@@ -589,8 +591,8 @@ def coast_peak_relief(developed: BasicDesign, drive: DevelopmentEvaluation,
     side = "convex" if developed.options.drive_flank == "concave" else "concave"
     met = {k for k, v in old.full[1].items() if v == 0.0}
     lte = max(LTE_LIMIT, float(np.nanmax(old.metrics["lte_peak_to_peak"])))
-    say(f"development: coast flank's peak {first.pressure:.0f} MPa at {cap.start:.4g} N m "
-        f"set its design torque {cap.torque:.4g} N m: a lighter tip relief")
+    say(f"development: coast flank's peak {first.pressure:.0f} MPa at {plain_number(cap.start)} N "
+        f"m set its design torque {plain_number(cap.torque)} N m: a lighter tip relief")
 
     def placed(values):
         return synthesize(with_flank_options(developed, side, values), memo=memo)[0]

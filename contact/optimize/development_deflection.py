@@ -53,6 +53,7 @@ import xarray as xr
 from contact.ltca.lte_range import LTE_TORQUES, bisected, lte_range_torques
 from contact.study.lte_within import within_text, within_torque
 from geometry.case import Case
+from geometry.core.text import plain_number
 
 __all__ = ["CURVATURE_RATIO_NOTE", "LTE_TORQUES", "DeflectionLTE", "analysed",
            "between_text", "curvature_ratio", "deflection_lte", "deflection_text",
@@ -271,8 +272,8 @@ def deflection_text(found: DeflectionLTE, curvature: float = math.nan) -> str | 
              "([synthesis] design_torque) is the step that keeps the limit (measured: that "
              "16x16 at 300 N m, LTE p-p 57/55 urad at 45/300 N m)")
     return (f"what sets the drive LTE at the design torque: the teeth deflect "
-            f"{found.deflection[-1]:.0f} urad on average at {torque:.4g} N m (the gear's lag "
-            f"under load, the mean loaded TE less the unloaded), and the LTE p-p "
+            f"{found.deflection[-1]:.0f} urad on average at {plain_number(torque)} N m (the "
+            f"gear's lag under load, the mean loaded TE less the unloaded), and the LTE p-p "
             f"{found.lte[-1]:.0f} urad is {100 * found.share:.1f} % of it; within "
             f"{found.limit:g} urad it would be {100 * found.share_needed:.1f} % (a ratio-3 "
             "spiral bevel 13x39 whose every target is met: 7.7 % of 492 urad)"
@@ -323,9 +324,10 @@ def between_text(found: DeflectionLTE) -> str | None:
         return None
     i = int(np.nanargmax(lte))
     curve = (f"LTE p-p {' / '.join(f'{x:.0f}' for x in lte)} urad at "
-             f"{' / '.join(f'{t:.4g}' for t in found.torques)} N m")
-    return (f"the drive LTE p-p is {lte[i]:.1f} urad at {found.torques[i]:.4g} N m, between "
-            f"the light {found.torques[0]:.4g} and the design torque {found.torques[-1]:.4g} "
+             f"{' / '.join(f'{plain_number(t)}' for t in found.torques)} N m")
+    return (f"the drive LTE p-p is {lte[i]:.1f} urad at {plain_number(found.torques[i])} N m, "
+            f"between the light {plain_number(found.torques[0])} and the design torque "
+            f"{plain_number(found.torques[-1])} "
             f"N m, above the limit {found.limit:g} urad it keeps at both ({curve}, ltca "
             "run's lte_range torques): `ltca run`'s verdict finds it there; the "
             "development's check judged its designs between the torques too (the path turned "

@@ -53,6 +53,7 @@ from contact.optimize.development_targets import (
 )
 from geometry.case import Case
 from geometry.core.errors import raise_if_interrupted
+from geometry.core.text import plain_number
 from geometry.machine.meshing import WarmSeeds
 from geometry.pair.assembly import Misalignment
 from geometry.synthesis.basic_design import BasicDesign
@@ -390,7 +391,8 @@ def evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str, 
                              lowered=False,
                              centre_v=working_depth_centre(case))
                 say(f"development: drive flank {basic.options.drive_flank}, light "
-                    f"{setup['torques'][0]:.4g} N m, design {torque:.4g} N m ({source})"
+                    f"{plain_number(setup['torques'][0])} N m, design {plain_number(torque)} N m "
+                    f"({source})"
                     f"{_ratios_text(case)}; varying {', '.join(targets.variables)} (at most "
                     f"{targets.max_evaluations} designs, coarse LTCA)")
             with seeds:

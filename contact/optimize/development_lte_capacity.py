@@ -44,6 +44,7 @@ from contact.optimize.development_result import (
 )
 from contact.optimize.development_targets import DevelopmentTargets, development_score
 from contact.optimize.development_variant import lte_fails
+from geometry.core.text import plain_number
 
 __all__ = ["lte_capacity"]
 
@@ -120,7 +121,7 @@ def lte_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
 
     seen = [float(t) for t in np.linspace(light, design, max(2, int(n)))]
     lte = [float(x) for x in analyse(seen)[0]["lte_peak_to_peak"]]
-    before = (" / ".join(f"{x:.0f}" for x in lte), " / ".join(f"{t:.4g}" for t in seen))
+    before = (" / ".join(f"{x:.0f}" for x in lte), " / ".join(f"{plain_number(t)}" for t in seen))
     accepted = None
     for _ in range(_TRIES):
         within = within_torque(seen, lte, LTE_LIMIT)
@@ -149,12 +150,13 @@ def lte_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     shown = " / ".join(f"{x:.0f}" for x in lowered.metrics["lte_peak_to_peak"])
     source = (f"the torque up to which the developed bearing keeps the drive LTE within "
               f"{LTE_LIMIT:g} urad: checked at {setup['source'].split(',')[0]} "
-              f"{design:.4g} N m its LTE p-p was {max(_worst(best), between):.0f} urad, "
+              f"{plain_number(design)} N m its LTE p-p was {max(_worst(best), between):.0f} urad, "
               "above ltca run's "
               f"FAIL level {_fail_level(LTE_LIMIT):g} urad (LTE p-p {before[0]} urad at "
-              f"{before[1]} N m); {shown} urad at {torques[0]:.4g} / {torques[1]:.4g} N m")
+              f"{before[1]} N m); {shown} urad at {plain_number(torques[0])} / "
+              f"{plain_number(torques[1])} N m")
     setup.update(torques=torques, source=source, lowered=True)
-    say(f"  design torque {design:.4g} -> {torques[1]:.4g} N m: {source}")
+    say(f"  design torque {plain_number(design)} -> {plain_number(torques[1])} N m: {source}")
     return lowered
 
 

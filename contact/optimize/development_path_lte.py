@@ -33,6 +33,7 @@ from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import DevelopmentTargets
 from contact.optimize.development_variant import pattern_length, said_variant
 from geometry.case import Case
+from geometry.core.text import plain_number
 
 log = logging.getLogger("contact.optimize.development")
 
@@ -215,7 +216,7 @@ def checked_path_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
             continue
         tried.append(values)
         where = ("the design torque's" if peak is None else
-                 f"{between[0]:.0f} urad at {between[1]:.4g} N m between the torques")
+                 f"{between[0]:.0f} urad at {plain_number(between[1])} N m between the torques")
         e = said_variant(start, values, STAGE,
                          f"with path_angle {path:.4g}, ellipse_length {ellipse:.3g} (its "
                          f"LTE {light:.0f}/{design:.0f} urad, {where} above "

@@ -37,6 +37,7 @@ from contact.optimize.development_targets import (
 )
 from geometry.case import Case
 from geometry.core.errors import raise_if_interrupted
+from geometry.core.text import plain_number
 
 log = logging.getLogger(__name__)
 
@@ -219,8 +220,8 @@ def checked_pitting(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     p = _peak(best)
     if not (math.isfinite(p) and math.isfinite(limit) and p > limit):
         return best
-    say(f"development: flank peak {p:.0f} MPa at {torque:.4g} N m above its local pitting "
-        f"limit {limit:.0f} MPa (S_H,loc {limit / p:.2f} of S_Hmin): a longer pattern, "
+    say(f"development: flank peak {p:.0f} MPa at {plain_number(torque)} N m above its local "
+        f"pitting limit {limit:.0f} MPa (S_H,loc {limit / p:.2f} of S_Hmin): a longer pattern, "
         "centred lower")
     c0 = time.process_time()
     s0 = slope if slope is not None and abs(slope) >= HEIGHT_SLOPE_MIN else HEIGHT_SLOPE
@@ -233,7 +234,8 @@ def checked_pitting(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         chosen = kept
         if _peak(chosen) <= limit:
             break
-    tried = (f"before any cut, a pattern longer and centred lower was tried at {torque:.4g} "
+    tried = (f"before any cut, a pattern longer and centred lower was tried at "
+             f"{plain_number(torque)} "
              f"N m, where the bearing peaked at {p:.0f} MPa against its local pitting "
              f"limit {limit:.0f} MPa: ")
     if chosen is best:
@@ -245,7 +247,7 @@ def checked_pitting(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     else:
         tried += f"kept, {_peak(chosen):.0f} MPa"
         say(f"development: the pitting step's design kept, peak {_peak(chosen):.0f} MPa at "
-            f"{torque:.4g} N m ({p:.0f} before; local pitting limit {limit:.0f} MPa) "
+            f"{plain_number(torque)} N m ({p:.0f} before; local pitting limit {limit:.0f} MPa) "
             f"[{time.process_time() - c0:.0f} s]")
     if isinstance(setup, dict):  # for the design torque's source where it is cut after
         setup["pitting_tried"] = tried

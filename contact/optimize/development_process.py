@@ -40,6 +40,7 @@ import numpy as np
 
 from contact.ltca.plausibility import LTE_SPREAD_LIMIT, PLASTIC_SHARE_LIMIT
 from geometry.core.errors import InputError
+from geometry.core.text import plain_number
 
 __all__ = ["TORQUE_CUT_FRACTION", "Outclassed", "better_outcome", "failed_outcome",
            "outclassing_torque", "with_generated_gear"]
@@ -83,7 +84,7 @@ def _flank_fails(metrics: Any, torques: tuple[float, ...], flank: str) -> list[s
             if name == "lte_spread" and k < quiet.size and quiet[k]:
                 continue
             if math.isfinite(v) and v > limit:
-                at = f" at {torques[k]:.4g} N m" if k < len(torques) else ""
+                at = f" at {plain_number(torques[k])} N m" if k < len(torques) else ""
                 out.append(f"{flank} {what} {v:.2f}{at} (limit {limit:g})")
     return out
 
@@ -133,12 +134,12 @@ def _torque_cut(result: Any, rated: float) -> str:
     out = []
     cut = float(result.torque[1])
     if result.torque_lowered and math.isfinite(rated) and cut < TORQUE_CUT_FRACTION * rated:
-        out.append(f"design torque cut to {cut:.4g} of {rated:.4g} N m (below "
+        out.append(f"design torque cut to {plain_number(cut)} of {plain_number(rated)} N m (below "
                    f"{TORQUE_CUT_FRACTION:g} of it)")
     coast, light = float(getattr(result, "coast_capacity", math.nan)), float(result.torque[0])
     if math.isfinite(coast) and coast < light:
-        out.append(f"coast design torque cut to {coast:.4g} N m, below the light torque "
-                   f"{light:.4g} N m")
+        out.append(f"coast design torque cut to {plain_number(coast)} N m, below the light torque "
+                   f"{plain_number(light)} N m")
     return "; ".join(out)
 
 
@@ -154,7 +155,7 @@ class Outclassed(Exception):
     """
 
     def __init__(self, torque: float) -> None:
-        super().__init__(f"design torque lowered to {torque:.4g} N m")
+        super().__init__(f"design torque lowered to {plain_number(torque)} N m")
         self.torque = float(torque)
 
 
@@ -282,9 +283,9 @@ def with_generated_gear(run: Callable[[Any], Any], basic: Any,
                   else run(_generated(basic), outclassed_below=below))
     except Outclassed as stop:
         text = (f"Gear process (auto): Formate. The Formate gear's developed design fails "
-                f"({why}) at {first.torque[1]:.4g} N m; the generated gear's development "
-                f"was stopped where its design torque fell to {stop.torque:.4g} N m, below "
-                f"the Formate gear's (it is only lowered from there: "
+                f"({why}) at {plain_number(first.torque[1])} N m; the generated gear's development "
+                f"was stopped where its design torque fell to {plain_number(stop.torque)} N m, "
+                f"below the Formate gear's (it is only lowered from there: "
                 "contact.optimize.development_process.outclassing_torque); kept the Formate "
                 "gear " + _RULE)
         say("development: " + text)
@@ -297,10 +298,10 @@ def with_generated_gear(run: Callable[[Any], Any], basic: Any,
     kept, which = better_outcome(first, second, rated)
     other = failed_outcome(second, rated)
     text = (f"Gear process (auto): {'generated' if which == 'second' else 'Formate'}. The "
-            f"Formate gear's developed design fails ({why}) at {first.torque[1]:.4g} N m; "
-            f"the generated gear's "
+            f"Formate gear's developed design fails ({why}) at {plain_number(first.torque[1])} N "
+            f"m; the generated gear's "
             + (f"fails too ({other})" if other else "does not fail")
-            + f" at {second.torque[1]:.4g} N m; kept the "
+            + f" at {plain_number(second.torque[1])} N m; kept the "
             + ("generated" if which == "second" else "Formate")
             + " gear " + _RULE)
     say("development: " + text)
@@ -326,6 +327,6 @@ def _generated_after_error(run: Callable[[Any], Any], basic: Any, err: InputErro
         log.info("development: the generated gear has no developed design: %s", again)
         raise err from None
     text = (f"Gear process (auto): generated. The Formate gear's development stopped "
-            f"({err}); the generated gear's developed at {second.torque[1]:.4g} N m.")
+            f"({err}); the generated gear's developed at {plain_number(second.torque[1])} N m.")
     say("development: " + text)
     return dataclasses.replace(second, gear_process_text=text)

@@ -56,6 +56,7 @@ from contact.optimize.development_targets import DevelopmentTargets
 from contact.optimize.development_variant import said_variant
 from geometry.case import Case
 from geometry.core.errors import raise_if_interrupted
+from geometry.core.text import plain_number
 
 __all__ = ["ELLIPSE_STEPS", "RANGE_KEY", "STAGE", "checked_range_lte", "range_better",
            "range_lte", "range_peak", "range_record"]
@@ -305,7 +306,7 @@ def _record(setup: Mapping[str, Any], e: DevelopmentEvaluation,
 
 def _curve(found: tuple[tuple[float, ...], tuple[float, ...]]) -> str:
     return (f"LTE p-p {' / '.join(f'{x:.0f}' for x in found[1])} urad at "
-            f"{' / '.join(f'{t:.4g}' for t in found[0])} N m")
+            f"{' / '.join(f'{plain_number(t)}' for t in found[0])} N m")
 
 
 def _longer_ellipse(start: DevelopmentEvaluation, targets: DevelopmentTargets,
@@ -339,7 +340,8 @@ def _longer_ellipse(start: DevelopmentEvaluation, targets: DevelopmentTargets,
         tried.add(x)
         peak, at = range_peak(range_lte(best, setup, teeth))
         e = said_variant(start, dict(start.values) | {"ellipse_length": x}, STAGE,
-                         f"with the ellipse {x:.3g} (its LTE {peak:.0f} urad at {at:.4g} N m "
+                         f"with the ellipse {x:.3g} (its LTE {peak:.0f} urad at "
+                         f"{plain_number(at)} N m "
                          f"between the torques above {limit:g})", targets, setup, teeth, say,
                          placed)
         if e is None:
@@ -402,7 +404,7 @@ def checked_range_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     peak, at = range_peak(found)
     if not peak > limit or not all(x <= limit for x in lte_ends(best)):  # NaN: not run
         return best
-    say(f"  design {best.index + 1}: its drive LTE p-p {peak:.1f} urad at {at:.4g} N m, "
+    say(f"  design {best.index + 1}: its drive LTE p-p {peak:.1f} urad at {plain_number(at)} N m, "
         f"between the light and the design torque, is above {limit:g} urad ({_curve(found)};"
         " ltca run's lte_range torques)")
     kept = checked_path_lte(best, targets, setup, teeth, say, placed, peak=(peak, at),

@@ -22,6 +22,7 @@ from typing import Any
 
 from contact.optimize.development_check import tolerance_checks
 from contact.optimize.development_result import TOLERANCE_KEYS, case_torques, floor_torque
+from geometry.core.text import plain_number
 
 #: [1] the bisection of :func:`tolerant_raise` ends where the torque that holds and the one
 #: that does not are within this ratio (3 %, :func:`~contact.optimize.development_check.
@@ -145,13 +146,13 @@ def tolerant_raise(case: Any, targets: Any, setup: dict[str, Any], teeth: Any,
         bad = sorted({lab for lab, k in before if k in ("edge", "plastic")})
         return TolerantRaise(cut, math.nan, (), f"its edges at the mounting excursion"
                              f"{'s' if len(bad) > 1 else ''} {', '.join(bad)} fail at "
-                             f"{cut:.4g} N m already")
+                             f"{plain_number(cut)} N m already")
     lost = high - before
     if not lost:
         return TolerantRaise(raised)
     first = tuple(dict.fromkeys(lab for lab, _ in sorted(lost)))
-    say(f"  the mounting tolerance at {raised:.4g} N m: "
-        f"{'; '.join(_lost_text(lost))} (met at {cut:.4g} N m): the highest torque that "
+    say(f"  the mounting tolerance at {plain_number(raised)} N m: "
+        f"{'; '.join(_lost_text(lost))} (met at {plain_number(cut)} N m): the highest torque that "
         "keeps it searched")
     lo, hi = cut, raised
     for _ in range(RAISE_STEPS):

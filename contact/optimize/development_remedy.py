@@ -42,6 +42,8 @@ import math
 from collections.abc import Callable
 from typing import Any, NamedTuple
 
+from geometry.core.text import plain_number
+
 __all__ = ["REMEDY_TABLE", "AppliedRemedy", "applied_table", "change_text", "checked_record",
            "chosen_check", "contact_ratios_of", "developed_with_remedy", "file_value", "lte_parts",
            "prescribed_basic", "ratio_changes", "remedied_basic", "worst_lte"]
@@ -309,11 +311,13 @@ def lte_parts(development) -> list[str]:
     """
     lte = development.best.metrics["lte_peak_to_peak"]
     light, design = development.torque
-    parts = [f"drive {lte[0]:.0f}/{lte[1]:.0f} urad at {light:.4g}/{design:.4g} N m"]
+    parts = [f"drive {lte[0]:.0f}/{lte[1]:.0f} urad at "
+             f"{plain_number(light)}/{plain_number(design)} N m"]
     if development.coast is not None:
         c = development.coast["lte_peak_to_peak"]
         cl, cd = development.coast_design_torques
-        parts.append(f"coast {c[0]:.0f}/{c[1]:.0f} urad at {cl:.4g}/{cd:.4g} N m")
+        parts.append(f"coast {c[0]:.0f}/{c[1]:.0f} urad at "
+                     f"{plain_number(cl)}/{plain_number(cd)} N m")
     return parts
 
 

@@ -26,6 +26,7 @@ import numpy as np
 from contact.ltca.plausibility import LTE_SPREAD_LIMIT
 from contact.optimize.development_targets import DevelopmentTargets
 from geometry.case import Case
+from geometry.core.text import plain_number
 from geometry.synthesis.basic_design import FLANK_OPTION_UNITS, BasicDesign
 
 __all__ = ["COAST_STATUS", "STATIC_MARGIN", "TOLERANCE_KEYS", "DevelopmentEvaluation",
@@ -243,11 +244,12 @@ class DevelopmentResult:
             f"Development bearing (contact.optimize.development, {len(self.evaluations)} "
             f"designs, coarse LTCA, the chosen one "
             f"{'checked at the default sampling' if b.checked else 'not checked'}): drive "
-            f"flank {vals}; targets at {tl:.4g} N m (light, "
+            f"flank {vals}; targets at {plain_number(tl)} N m (light, "
             f"{t.light_load:g} x design) pattern {t.pattern_length:g} +/- "
             f"{t.pattern_length_tolerance:g} of the face width centred at "
             f"({t.pattern_centre_u:g}, {self.centre_v:.3g}), clear of the flank ends by "
-            f"{t.clearance:g}; at {td:.4g} N m (design, {self.torque_source}) edge share <= "
+            f"{t.clearance:g}; at {plain_number(td)} N m (design, {self.torque_source}) edge "
+            f"share <= "
             f"{100 * t.max_edge_share:g} %, plastic <= {100 * t.max_plastic_share:g} %; LTE "
             f"p-p <= {t.max_lte:g} urad. Achieved: pattern u {m['pattern_toe_u'][0]:.2f}-"
             f"{m['pattern_heel_u'][0]:.2f}, v {m['pattern_root_v'][0]:.2f}-"
@@ -274,7 +276,7 @@ class DevelopmentResult:
                 f"{self.missed_text(b)}; light-load pattern {m['pattern_toe_u'][0]:.2f}-"
                 f"{m['pattern_heel_u'][0]:.2f} of the face, edge share "
                 f"{100 * m['edge_load_share'][1]:.1f} % and LTE p-p "
-                f"{m['lte_peak_to_peak'][1]:.0f} urad at {self.torque[1]:.4g} N m; "
+                f"{m['lte_peak_to_peak'][1]:.0f} urad at {plain_number(self.torque[1])} N m; "
                 f"{'tolerant' if self.tolerant else 'not tolerant'} at dE +/-"
                 f"{t.offset_tolerance:g} mm, dP +/-{t.mounting_tolerance:g} mm"
                 f"{self._intolerance_text()}; "
@@ -308,10 +310,11 @@ class DevelopmentResult:
         t = self.targets
         at = f"at dE/dP +/-{t.offset_tolerance:g}/{t.mounting_tolerance:g} mm"
         if math.isfinite(holds):
-            return (f"; tolerant up to {holds:.4g} N m {at} (not at {fails:.4g} N m; the "
-                    f"design torque {self.torque[1]:.4g} N m kept)")
+            return (f"; tolerant up to {plain_number(holds)} N m {at} (not at "
+                    f"{plain_number(fails)} N m; the "
+                    f"design torque {plain_number(self.torque[1])} N m kept)")
         if math.isfinite(fails):
-            return f"; not tolerant {at} at the light torque {fails:.4g} N m either"
+            return f"; not tolerant {at} at the light torque {plain_number(fails)} N m either"
         return ""
 
     def _root_headline(self) -> str:
@@ -320,7 +323,7 @@ class DevelopmentResult:
         why = (f" (design torque lowered to {self.root_text.split(':')[0]})"
                if self.root_text else "")
         return (f"; FE root stress S_F,FE {self.root_safety:.2f} at "
-                f"{self.torque[1]:.4g} N m{why}")
+                f"{plain_number(self.torque[1])} N m{why}")
 
     @property
     def coast_static_capacity(self) -> float:
@@ -376,12 +379,12 @@ class DevelopmentResult:
         lim = (f" (limit {self.pressure_limit:.0f} MPa)"
                if math.isfinite(self.pressure_limit) else "")
         tc = self.coast_design_torques[1]
-        at = "" if tc == self.torque[1] else f" at its design torque {tc:.4g} N m"
+        at = "" if tc == self.torque[1] else f" at its design torque {plain_number(tc)} N m"
         # a coast flank whose analysis failed has no peak: said so, not "coast nan MPa"
         # (the unseen industrial 11x43 of m_mn 12, issue 71 round 13)
         said = (f"coast {coast:.0f} MPa{at}" if math.isfinite(coast)
                 else f"coast not analysed{at}")
-        return (f"flank peak pressure at {self.torque[1]:.4g} N m drive {drive:.0f} MPa, "
+        return (f"flank peak pressure at {plain_number(self.torque[1])} N m drive {drive:.0f} MPa, "
                 f"{said}{lim}")
 
     def recorded(self, case: Case) -> Case:
@@ -431,8 +434,8 @@ class DevelopmentResult:
                     f"{100 * c['plastic_share'][1]:.1f} %, flank peak pressure "
                     f"{c['pressure_max_flank'][0]:.0f}/{c['pressure_max_flank'][1]:.0f} MPa, "
                     f"LTE p-p {c['lte_peak_to_peak'][0]:.1f}/{c['lte_peak_to_peak'][1]:.1f} "
-                    f"urad at {self.coast_design_torques[0]:.4g}/"
-                    f"{self.coast_design_torques[1]:.4g} N m (light/design)")
+                    f"urad at {plain_number(self.coast_design_torques[0])}/"
+                    f"{plain_number(self.coast_design_torques[1])} N m (light/design)")
         if self.coast_capacity_text:
             achieved += f"; coast design torque {self.coast_capacity_text}"
         b = self.coast_best
@@ -454,7 +457,7 @@ class DevelopmentResult:
         return f"Coast flank ({why}): {achieved}{met}. "
 
     def _coast_headline(self) -> str:
-        low = (f", coast design torque {self.coast_capacity:.4g} N m (its capacity)"
+        low = (f", coast design torque {plain_number(self.coast_capacity)} N m (its capacity)"
                if math.isfinite(self.coast_capacity) else "")
         return self._coast_state() + low
 

@@ -36,6 +36,7 @@ import numpy as np
 
 from contact.optimize.development_result import STATIC_MARGIN, case_torques, floor_torque
 from geometry.core.errors import raise_if_interrupted
+from geometry.core.text import plain_number
 
 log = logging.getLogger(__name__)
 
@@ -408,7 +409,7 @@ def root_capacity(case, setup: dict[str, Any], light_load: float,
 
     fails = _failing(safe)
     if not fails:
-        say(f"development: at {torque:.4g} N m " + "; ".join(
+        say(f"development: at {plain_number(torque)} N m " + "; ".join(
             f"{CRITERIA[k][1]} {float(s[-1]):.2f} ({m}) >= {s_min:g}"
             for k, (s, s_min, m) in safe.items()))
         return None, _root_of(safe), ""
@@ -464,13 +465,13 @@ def root_capacity(case, setup: dict[str, Any], light_load: float,
     name = ("root-stress" if set(first) == {"root"} else
             "local pitting" if set(first) == {"pitting"} else "root-stress and local pitting")
     source = (f"the {name} capacity of the developed bearing: {was} at the design "
-              f"torque {torque:.4g} N m ({setup['source'].split(',')[0].split(':')[0]}); "
+              f"torque {plain_number(torque)} N m ({setup['source'].split(',')[0].split(':')[0]}); "
               f"T (0.99 S/S_min)^(1/b) in {len(down)} step"
               f"{'s' if len(down) > 1 else ''}, b = "
               f"{'/'.join(f'{b:.2f}' for _, b in down)} measured ({symbols} ~ T^-b)"
               f"{', then one step back up with b measured between the two' if up else ''}"
-              f" -> {t:.4g} N m, where {now}")
-    say(f"  design torque {torque:.4g} -> {t:.4g} N m: {source}")
+              f" -> {plain_number(t)} N m, where {now}")
+    say(f"  design torque {plain_number(torque)} -> {plain_number(t)} N m: {source}")
     setup.update(torques=torques, source=source, lowered=True)
     return tree, _root_of(safe), source
 
@@ -595,7 +596,7 @@ def _checked_at(case, light_load: float, torque: float, say: Callable[[str], Non
     except Exception as exc:  # reported, never fatal
         raise_if_interrupted(exc)
         log.info("development capacity check at %g N m failed: %s", torque, exc)
-        say(f"development: root stress at {torque:.4g} N m not computed ({exc})")
+        say(f"development: root stress at {plain_number(torque)} N m not computed ({exc})")
         return None
 
 

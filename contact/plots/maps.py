@@ -44,6 +44,7 @@ from contact.plots.style import (
     unit_text,
 )
 from geometry.core.errors import InputError
+from geometry.core.text import plain_number
 
 __all__ = [
     "efficiency_map_figure",
@@ -326,7 +327,7 @@ def efficiency_speed_figure(emap: xr.Dataset) -> Figure:
         If ``emap`` lacks ``efficiency``.
     """
     return _efficiency_lines(emap, x="speed", x_name="pinion speed", line="torque",
-                             line_label=lambda t: f"T_p = {t:g} N·m",
+                             line_label=lambda t: f"T_p = {plain_number(t)} N·m",
                              facets=("temperature", "roughness"), panel=(3.0, 2.2),
                              ylabel="mechanical efficiency [%]", title_size=8,
                              what="efficiency against speed")

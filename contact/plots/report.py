@@ -52,6 +52,7 @@ from contact.plots.style import DPI, misalignment_text
 from geometry import __version__
 from geometry.core.atomic_files import atomic_path
 from geometry.core.errors import InputError, LTCAError
+from geometry.core.text import plain_number
 
 __all__ = ["DURABILITY_COLUMNS", "SUMMARY_COLUMNS", "SummaryColumn", "render_page",
            "render_report", "report_context", "write_page", "write_report"]
@@ -204,7 +205,7 @@ def _scuffing_spread(standard: xr.Dataset | None) -> list[str]:
     for v in standard["variant"].values:
         one = standard.sel(variant=v)
         cells = ", ".join(
-            f"{t:g} N·m {_num(one['scuffing_safety_low'].values[i]):.2f}–"
+            f"{plain_number(t)} N·m {_num(one['scuffing_safety_low'].values[i]):.2f}–"
             f"{_num(one['scuffing_safety_high'].values[i]):.2f}"
             for i, t in enumerate(standard["torque"].values))
         out.append(f"{_VARIANT_NAMES.get(str(v), str(v))}: S_B {cells}")
@@ -292,7 +293,7 @@ def _durability(lt: xr.Dataset | None, fr: xr.Dataset | None,
     if lt is None or fr is None or "contact_temperature_max" not in fr:
         return None
     groups = {"ltca": lt, "scuffing_micropitting": fr, "standard_scuffing": standard}
-    rows = [{"torque": f"{t:g}",
+    rows = [{"torque": plain_number(t),
              "cells": [{"key": c.key, **_cell(c.value(groups, i), c.decimals)}
                        for c in DURABILITY_COLUMNS]}
             for i, t in enumerate(fr["torque"].values)]
@@ -361,7 +362,7 @@ def _rating(tree: xr.DataTree, lt: xr.Dataset | None) -> dict | None:
                     ("root_stress_max", fe, 0), ("root_stress_to_root_stress", fe / r, 2))]
             cells += [{"key": k, **_cell(ds[k].transpose("torque", "member").values[i, j], 2)}
                       for k in ("pitting_safety", "bending_safety")]
-            rows.append({"torque": f"{t:g}", "member": str(member), "cells": cells})
+            rows.append({"torque": plain_number(t), "member": str(member), "cells": cells})
     standard = str(ds.attrs.get("rating_standard") or method)
     headers = ["T_p [N·m]", "member"]
     if stresses:
@@ -432,7 +433,7 @@ def _solver(lt: xr.Dataset) -> dict:
                if f"residual_{k}" in lt}
         found = lt["found"].isel(torque=i).values if "found" in lt else np.array([])
         rows.append({
-            "torque": f"{t:g}",
+            "torque": plain_number(t),
             "certified": f"{int(np.sum(found))}/{found.size}",
             "status": ", ".join(f"{k} ×{v}" for k, v in sorted(status.items())),
             "residuals": {k: f"{v:.1e}" for k, v in res.items()},
@@ -454,7 +455,7 @@ def _te_table(tree: xr.DataTree) -> list[dict]:
     for i, t in enumerate(lt["torque"].values):
         for name, a, u in (("theoretical", th_lt, th_ut), ("deviated", lt, ut)):
             h = a["lte_harmonics"].values[i]
-            rows.append({"torque": f"{t:g}", "surfaces": name, "cells": [
+            rows.append({"torque": plain_number(t), "surfaces": name, "cells": [
                 _cell(a["lte_mean"].values[i], 2), _cell(a["lte_peak_to_peak"].values[i], 2),
                 _cell(h[0], 2), _cell(h[1], 2), _cell(h[2], 2),
                 _cell(a["lte_harmonic_rss"].values[i], 2),
@@ -465,15 +466,13 @@ def _te_table(tree: xr.DataTree) -> list[dict]:
 def _operating(tree: xr.DataTree, lt, fr, eo) -> list[tuple[str, str]]:
     rows = []
     if lt is not None:
-        rows.append(("pinion torque T_p", ", ".join(f"{t:g}" for t in lt["torque"].values)
+        # four significant digits, never an exponent: an industrial pair's 15660 N·m
+        # read "1.566e+04" beside the pinion's 10440 (issue 71, round 19)
+        rows.append(("pinion torque T_p", ", ".join(plain_number(t) for t in lt["torque"].values)
                      + " N·m"))
         if "gear_torque" in lt.coords:
-            # four significant digits, never an exponent: an industrial pair's 15660 N·m
-            # read "1.566e+04" beside the pinion's 10440 (issue 71, round 19)
             rows.append(("gear torque", ", ".join(
-                np.format_float_positional(float(t), precision=4, unique=False,
-                                           fractional=False, trim="-")
-                for t in lt["gear_torque"].values) + " N·m (lossless)"))
+                plain_number(t) for t in lt["gear_torque"].values) + " N·m (lossless)"))
     rows.append(("misalignment (ΔE, ΔP, ΔG, ΔΣ)",
                  misalignment_text(tree.attrs) or misalignment_text(eo.attrs) or "not recorded"))
     src = lt if lt is not None else eo
@@ -544,7 +543,7 @@ def _pattern(lt: xr.Dataset | None, inputs_text: str) -> list[dict] | None:
         cells += [_cell(p.mean() if p.size else np.nan, 2),
                   {"text": f"{p.min():.0f}–{p.max():.0f}" if p.size else "–",
                    "value": ""}]
-        rows.append({"torque": f"{t:g}", "cells": cells})
+        rows.append({"torque": plain_number(t), "cells": cells})
     return rows
 
 

@@ -38,6 +38,7 @@ import xarray as xr
 from matplotlib.colors import Normalize
 from matplotlib.figure import Figure
 
+from geometry.core.text import plain_number
 from geometry.plot import png_target
 
 __all__ = [
@@ -281,7 +282,7 @@ def case_text(ds: xr.Dataset | xr.DataTree) -> str:
 
 def torque_text(torque: float) -> str:
     """``"T_p = 500 N·m"`` for a pinion torque [N·m]."""
-    return f"T_p = {float(torque):g} N·m"
+    return f"T_p = {plain_number(torque)} N·m"
 
 
 def symmetric_norm(values, floor: float = 1e-12) -> Normalize:

@@ -56,6 +56,7 @@ from geometry import __version__
 from geometry.case import Case
 from geometry.core.conventions import data_var
 from geometry.core.errors import InputError, raise_if_interrupted
+from geometry.core.text import plain_number
 
 if TYPE_CHECKING:
     from contact.ltca.summary import FlankPeak
@@ -418,7 +419,7 @@ def _durability(case: Case, duty: DutyCycle, ds: xr.Dataset,
         if duty.deflection is not None and reason.startswith("InputError: misalignment"):
             # the reason names ltca run's options; here the deflection table set them
             where = (f"; bin {bad}'s misalignment is the [duty_cycle] deflection table's "
-                     f"at its {float(duty.torque[bad]):.4g} N m plus the case's own")
+                     f"at its {plain_number(float(duty.torque[bad]))} N m plus the case's own")
             if duty.illustrative:
                 where += (" — the ILLUSTRATIVE table of `ltca duty-cycle` without --duty "
                           "(at the top torque dE 0.05, dP -0.03, dG 0.03 mm, dSigma "

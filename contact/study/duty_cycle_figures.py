@@ -18,6 +18,7 @@ import xarray as xr
 
 from geometry.core.atomic_files import atomic_path
 from geometry.core.errors import InputError
+from geometry.core.text import plain_number
 from geometry.plot import new_figure
 
 __all__ = ["bins_figure", "damage_map_figure", "root_damage_figure",
@@ -64,7 +65,7 @@ def damage_map_figure(ds: xr.Dataset):
         im = ax.pcolormesh(u, v, logd.T, shading="nearest", cmap="viridis", vmin=top - 6,
                            vmax=top)
         ax.plot(float(ds["life_u"][k]), float(ds["life_v"][k]), "rx", ms=10,
-                label=f"first to fail: life {float(ds['life'][k]):.3g} h")
+                label=f"first to fail: life {plain_number(ds['life'][k], 3)} h")
         ax.set_xlabel("gear lengthwise fraction u [1] (toe 0, heel 1)")
         ax.set_ylabel("gear profile fraction v [1]")
         ax.set_title(f"{member} flank damage (Miner {ds.attrs.get('miner_rule', '')})")
@@ -114,14 +115,14 @@ def root_damage_figure(ds: xr.Dataset):
         ax.axhline(1.0, color="0.5", lw=0.8, ls="--")
         i = int(ds["root_life_point"].values[k])
         ax.semilogy([x[i]], [max(total[i], 1e-300)], "rx", ms=10,
-                    label=f"first to fail: life {float(ds['root_life'][k]):.3g} h")
+                    label=f"first to fail: life {plain_number(ds['root_life'][k], 3)} h")
         ax.set_ylabel("cumulative root damage [1]")
         ax.set_title(f"{member} root (bending) damage (Miner {ds.attrs.get('miner_rule', '')})")
         ax.legend(loc="best", fontsize=8)
         ax = axes[1, k]
         stress = ds["root_stress_peak"].values[:, k, :]
         for b in range(stress.shape[0]):
-            ax.plot(x, stress[b], lw=1, label=f"{ds['torque'].values[b]:g} N m")
+            ax.plot(x, stress[b], lw=1, label=f"{plain_number(ds['torque'].values[b])} N m")
         ax.set_xlabel("lengthwise fraction of the fillet station [1] (toe 0, heel 1)")
         ax.set_ylabel("peak tensile fillet stress [MPa]")
         ax.legend(fontsize=7, ncol=2, title="bin torque", title_fontsize=7)
@@ -153,7 +154,7 @@ def bins_figure(ds: xr.Dataset):
     _check(ds)
     fig = new_figure(figsize=(10, 6), layout="constrained")
     axes = fig.subplots(2, 2)
-    labels = [f"{t:g}" for t in ds["torque"].values]
+    labels = [plain_number(t) for t in ds["torque"].values]
     x = np.arange(len(labels))
     # each bin's share of the damage at the point that fails first (per member)
     at = np.stack([ds["flank_damage"].sel(member=m, u=float(ds["life_u"][k]),

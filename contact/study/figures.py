@@ -30,6 +30,7 @@ from contact.study.monte_carlo import draw_values
 from contact.study.points import POINT_INPUTS
 from geometry.core.atomic_files import atomic_path
 from geometry.core.errors import InputError
+from geometry.core.text import plain_number
 from geometry.plot import new_figure
 
 __all__ = ["MAP_VARIABLES", "TOLERANCE_VARIABLES", "save_study_figures",
@@ -111,7 +112,7 @@ def sensitivity_map_figure(ds: xr.Dataset, torque: float | None = None, *,
         ax.set_xlabel(_label(ds, x))
         ax.set_ylabel(_label(ds, y))
         ax.set_title(_SYMBOL.get(name, name), fontsize=10)
-    fig.suptitle(f"{ds.attrs.get('case', '')}: sensitivity at pinion torque {t:g} N m")
+    fig.suptitle(f"{ds.attrs.get('case', '')}: sensitivity at pinion torque {plain_number(t)} N m")
     return fig
 
 
@@ -155,7 +156,8 @@ def tolerance_figure(ds: xr.Dataset, torque: float | None = None):
         ax.yaxis.set_major_locator(MaxNLocator(integer=True))  # draws are counted
     n_fail = int((~ok).sum())
     fig.suptitle(f"{ds.attrs.get('case', '')}: {ok.sum()} draws ({ds.attrs.get('method', '')}"
-                 f"{f', {n_fail} failed' if n_fail else ''}) at pinion torque {t:g} N·m; "
+                 f"{f', {n_fail} failed' if n_fail else ''}) at pinion torque "
+                 f"{plain_number(t)} N·m; "
                  "dotted P5, P95, solid P50")
     return fig
 
@@ -199,7 +201,7 @@ def vh_check_figure(vh: xr.Dataset):
     axes[0].legend(loc="lower left", fontsize=7)
     fig.colorbar(mesh, ax=axes, label="maximum pressure [MPa]")
     fig.suptitle(f"{vh.attrs.get('case', '')}: V-H check at pinion torque "
-                 f"{vh.attrs.get('torque_N_m', float('nan')):g} N m")
+                 f"{plain_number(vh.attrs.get('torque_N_m', float('nan')))} N m")
     return fig
 
 

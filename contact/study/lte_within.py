@@ -19,6 +19,8 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from geometry.core.text import plain_number
+
 __all__ = ["within_text", "within_torque"]
 
 
@@ -108,8 +110,8 @@ def within_text(torques: Sequence[float], lte: Sequence[float], limit: float,
     if len(torques) < 2 or not math.isfinite(within) or not float(lte[-1]) > limit:
         return None
     shown = " / ".join(f"{x:.0f}" for x in lte)
-    at = " / ".join(f"{t:.4g}" for t in torques)
+    at = " / ".join(plain_number(t) for t in torques)
     share = (f"{100 * within / design:.0f} % of the design torque; "
              if math.isfinite(design) and design > 0.0 else "")
-    return (f"within {limit:g} {urad} up to about {within:.4g} {nm} ({share}LTE p-p {shown} "
-            f"{urad} at {at} {nm})")
+    return (f"within {limit:g} {urad} up to about {plain_number(within)} {nm} ({share}LTE p-p "
+            f"{shown} {urad} at {at} {nm})")

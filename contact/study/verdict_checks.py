@@ -55,6 +55,8 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
+from geometry.core.text import plain_number
+
 __all__ = ["CHECKS", "analysis_checks", "has_iso_rating", "member_names", "root_stress_safety",
            "unchecked_reason"]
 
@@ -73,7 +75,7 @@ _VARIANT_WORDS = {
 
 
 def _t(torque: float) -> str:
-    return f"{torque:g} N·m"
+    return f"{plain_number(torque)} N·m"
 
 
 def member_names(ds: xr.Dataset | xr.DataArray) -> list[str]:
@@ -142,7 +144,9 @@ def _not_computed(rs: xr.DataArray, names: list[str], torques: np.ndarray,
             if np.isfinite(values[i, j]):
                 continue
             why = next((line.split(": ", 1)[1] for line in said
-                        if line.startswith(f"{m} at {t:g} N m:")), "no reason recorded")
+                        # as root_stress writes it; a file of before round 19: "{t:g}"
+                        if line.startswith((f"{m} at {plain_number(t)} N m:",
+                                            f"{m} at {t:g} N m:"))), "no reason recorded")
             out.append(Finding("attention", "root_stress",
                                f"root stress of the {m} at {_t(t)} not checked: {why}"))
     return out

@@ -166,6 +166,7 @@ from contact.ltca.plausibility import (
 )
 from contact.ltca.summary import edge_load_share, flank_peak
 from geometry.core.errors import InputError
+from geometry.core.text import plain_number
 
 if TYPE_CHECKING:
     from contact.load_capacity.durability import StaticContactStrength
@@ -304,7 +305,7 @@ class Verdict:
 
 
 def _t(torque: float) -> str:
-    return f"{torque:g} N·m"
+    return f"{plain_number(torque)} N·m"
 
 
 def _worst_first(findings: list[Finding]) -> tuple[Finding, ...]:
@@ -991,7 +992,7 @@ def _rating(rt: xr.Dataset, flank_static: frozenset = frozenset()) -> list[Findi
                 beyond = what == "pitting" and float(t) in flank_static
                 if long_life and t > design and n > 0 and not beyond:
                     # an overload above the design torque: a finite life, stated
-                    hours = (f", {n / (60.0 * speed):.3g} h at {speed:g} rpm"
+                    hours = (f", {plain_number(n / (60.0 * speed), 3)} h at {speed:g} rpm"
                              if np.isfinite(speed) and speed > 0 else "")
                     out.append(Finding(
                         "attention", "rating",
@@ -1124,7 +1125,7 @@ def _spread_numbers(ds: xr.Dataset, cause: str, bins: np.ndarray) -> str:
     out = []
     for b in bins:
         pp, mean = float(ds["lte_peak_to_peak"][b]), float(ds["lte_mean"][b])
-        text = (f"bin {b} at {float(ds['torque'][b]):.4g} N m: LTE p-p {pp:.0f} urad, "
+        text = (f"bin {b} at {plain_number(float(ds['torque'][b]))} N m: LTE p-p {pp:.0f} urad, "
                 f"{shown_above(pp / mean, LTE_SPREAD_LIMIT, 2)} times its mean "
                 f"{mean:.0f} urad")  # 0.504 flagged, not "0.50" (issue 71, unseen (8))
         if edge is not None:
@@ -1275,7 +1276,7 @@ def _duty(ds: xr.Dataset) -> tuple[list[Finding], list[str]]:
                 findings.append(Finding(
                     "fail", "damage",
                     f"{m}: {what} damage {float(ds[dmg][k]):.3g} over the cycle: life "
-                    f"{float(ds[life][k]):.4g} h, shorter than the cycle's {hours:g} h"))
+                    f"{plain_number(ds[life][k])} h, shorter than the cycle's {hours:g} h"))
         for name, symbol, dmg in (("contact_safety_factor", "S_H", "damage"),
                                   ("bending_safety_factor", "S_F", "root_damage_max")):
             if name in ds and float(ds[name][k]) < DUTY_MIN_SAFETY:

@@ -36,6 +36,7 @@ from contact.load_capacity.contract import contract_variables
 from geometry.core.conventions import data_var
 from geometry.core.errors import InputError
 from geometry.core.materials import material
+from geometry.core.text import plain_number
 from geometry.core.validation import positive, real_array
 
 __all__ = ["agma2003_rating", "missing", "rate", "tables"]
@@ -399,7 +400,7 @@ def tables(ds: xr.Dataset) -> str:
     out.append(f"allowable transmitted power P_a {f('P_a', 2)} kW")
     for t in ds["torque"].values:
         one = ds.sel(torque=t)
-        out += ["", f"T1 = {t:g} N m (T2 {float(one['T2']):.1f} N m), P "
+        out += ["", f"T1 = {plain_number(t)} N m (T2 {float(one['T2']):.1f} N m), P "
                     f"{float(one['P']):.2f} kW: contact stress number s_c "
                     f"{float(one['s_c']):.1f} MPa",
                 tabulate([(label, *(f"{float(v):.{d}f}" for v in one[name].values))

@@ -21,6 +21,7 @@ from contact.load_capacity.contract import contract_variables
 from contact.load_capacity.iso10300.inputs import RatingInputs
 from contact.load_capacity.iso10300.rating import iso10300_rating
 from geometry.core.errors import InputError
+from geometry.core.text import plain_number
 
 __all__ = ["missing_tables", "rate", "rated_side", "tables"]
 
@@ -223,7 +224,7 @@ def tables(ds: xr.Dataset) -> str:
     given = json.loads(ds.attrs.get("given_load_factors", "{}"))
     for i, t in enumerate(ds["torque"].values):
         one = ds.sel(torque=t)
-        out += ["", f"T1 = {t:g} N m: F_mt1 {float(one['F_mt1']):.1f} N, F_vmt "
+        out += ["", f"T1 = {plain_number(t)} N m: F_mt1 {float(one['F_mt1']):.1f} N, F_vmt "
                     f"{float(one['F_vmt']):.1f} N, F_n {float(one['F_n']):.1f} N",
                 "load factors: " + "  ".join(
                     f"{label} {float(one[name]):.3f}" for name, label in (
