@@ -133,8 +133,8 @@ def coast_capacity_said(basic: BasicDesign, cap: CoastCapacity | None) -> str:
         given = ("[rating] design_torque", basic.rating.get("design_torque"))
     if given[1] is None or not cap.lowered:
         return cap.reason
-    return (f"the drive's design torque {float(given[1]):.4g} N m ({given[0]}) is not the "
-            f"coast flank's: {cap.reason}")
+    return (f"the drive's design torque {plain_number(float(given[1]))} N m ({given[0]}) "
+            f"is not the coast flank's: {cap.reason}")
 
 
 def _as_run(case: Case, basic: BasicDesign, setup: dict[str, Any], coast: float) -> Case:
