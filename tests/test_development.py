@@ -2054,9 +2054,10 @@ def test_synthesizes_note_says_what_the_quieter_design_misses():
     from contact.optimize.development_result import DevelopmentResult
 
     targets = DevelopmentTargets()
-    metrics = _metrics(lte_peak_to_peak=[7.0, 17.0], edge_load_share=[0.0, 0.078])
-    quiet = types.SimpleNamespace(metrics=metrics,
-                                  full=(144.0, {"edge": 0.058, "lte": 0.0}, False))
+    metrics = _metrics(lte_peak_to_peak=[7.0, 17.0], edge_load_share=[0.0, 0.078],
+                       pattern_toe_u=[0.2, 0.0], pattern_heel_u=[0.82, 1.0])
+    quiet = types.SimpleNamespace(metrics=metrics, full=(
+        144.0, {"length": 0.02, "edge": 0.058, "lte": 0.0}, False))
     said = {}
 
     def missed_text(e):  # the development's own text of a design's missed targets
@@ -2074,7 +2075,8 @@ def test_synthesizes_note_says_what_the_quieter_design_misses():
     assert said["e"] is quiet
     assert text == ("; the development's least drive LTE p-p 7/17 urad (design 34 with "
                     "profile_crowning 0 um, not written: it scores no better, missing "
-                    "edge share 7.8 % (limit 2 %)): within 60 urad, but not written")
+                    "pattern length 0.62 (target 0.5 +/- 0.1), edge share 7.8 % (limit "
+                    "2 %)): within 60 urad, but not written")
     # another reason, or no missed target: as before
     dev.lte_reach["why"] = "not tolerant at dE/dP +/-0.05 mm"
     assert "missing" not in reach_text(dev, 60.0)

@@ -274,7 +274,7 @@ def reach_text(development, limit: float,
             # what it gives up for its LTE, in numbers (the FH 9x37 at Sigma 85 deg of
             # round 19b: 7/17 urad with the edge share 7.8 %, limit 2 %)
             why += (", missing " + development.missed_text(e).removeprefix(
-                "not every target met: "))
+                "not every target met: ").replace("; ", ", "))
         said = (f"; the development's least drive LTE p-p {reach['light']:.0f}/"
                 f"{reach['design']:.0f} urad ({reach['what']}{why})")
     # what sets the LTE: the one statement `ltca run`'s next step makes too
