@@ -2000,7 +2000,7 @@ def test_an_lte_above_the_limit_gets_a_flatter_profile_then_a_deeper_te_parabola
                                        lambda v: dict(v)) is quiet and calls == []
     assert setup["lte_reach"][(33.78, 225.2)] == {
         "light": 38.0, "design": 60.0, "what": "design 4 as checked", "why": "",
-        "tried": ()}
+        "tried": (), "evaluation": quiet}
 
 
 def test_synthesizes_note_says_the_lte_the_development_reached():
@@ -2037,6 +2037,54 @@ def test_synthesizes_note_says_the_lte_the_development_reached():
     dev.lte_reach = None
     dev.best.metrics["lte_peak_to_peak"] = np.array([70.0, 133.1])
     assert reach_text(dev, 60.0) == ""
+
+
+def test_synthesizes_note_says_what_the_quieter_design_misses():
+    """Where the development's least-LTE design "scores no better" than the written one,
+    ``ltca synthesize``'s note names the targets it misses, in numbers, from the
+    development's own missed-target text (issue 71, round 19b: the FH hypoid 9x37 at
+    Σ 85° by Method 2, ε_vβ 1.11, wrote 28/61 µrad and said only "design 34 with
+    profile_crowning 0 um, not written: it scores no better" of a design of 7/17 µrad
+    whose edge share was 7.8 %, limit 2 %). A design kept for another reason, or one
+    meeting every target, is said as before."""
+    import types
+
+    from contact.commands.synthesize import reach_text
+    from contact.optimize.development import DevelopmentTargets
+    from contact.optimize.development_result import DevelopmentResult
+
+    targets = DevelopmentTargets()
+    metrics = _metrics(lte_peak_to_peak=[7.0, 17.0], edge_load_share=[0.0, 0.078],
+                       pattern_toe_u=[0.2, 0.0], pattern_heel_u=[0.82, 1.0])
+    quiet = types.SimpleNamespace(metrics=metrics, full=(
+        144.0, {"length": 0.02, "edge": 0.058, "lte": 0.0}, False))
+    said = {}
+
+    def missed_text(e):  # the development's own text of a design's missed targets
+        said["e"] = e
+        return DevelopmentResult.missed_text(types.SimpleNamespace(
+            best=e, targets=targets, centre_v=0.556, pressure_limit=2400.0), e)
+
+    dev = types.SimpleNamespace(
+        best=types.SimpleNamespace(metrics={"lte_peak_to_peak": np.array([28.0, 61.0])}),
+        lte_reach={"light": 7.0, "design": 17.0,
+                   "what": "design 34 with profile_crowning 0 um",
+                   "why": "it scores no better", "tried": (), "evaluation": quiet},
+        missed_text=missed_text)
+    text = reach_text(dev, 60.0)
+    assert said["e"] is quiet
+    assert text == ("; the development's least drive LTE p-p 7/17 urad (design 34 with "
+                    "profile_crowning 0 um, not written: it scores no better, missing "
+                    "pattern length 0.62 (target 0.5 +/- 0.1), edge share 7.8 % (limit "
+                    "2 %)): within 60 urad, but not written")
+    # another reason, or no missed target: as before
+    dev.lte_reach["why"] = "not tolerant at dE/dP +/-0.05 mm"
+    assert "missing" not in reach_text(dev, 60.0)
+    dev.lte_reach["why"] = "it scores no better"
+    quiet.full = (1.0, {"edge": 0.0}, True)
+    assert reach_text(dev, 60.0).endswith("(design 34 with profile_crowning 0 um, not "
+                                          "written: it scores no better): within 60 urad,"
+                                          " but not written")
 
 
 def test_an_lte_missed_at_the_check_gets_the_ellipse_a_step_longer(monkeypatch):

@@ -240,7 +240,9 @@ def reach_text(development, limit: float,
     step saw (``development.lte_reach``,
     :func:`contact.optimize.development_check.checked_crowning_lte`: the profile crowning
     flattened, the TE parabola deepened), what design that was and why it was not
-    written; beyond ``limit`` the statement that the limit is out of the basic data's
+    written (where it "scores no better", the targets it misses in numbers, its
+    ``"evaluation"``'s :meth:`~contact.optimize.development_result.DevelopmentResult.
+    missed_text`); beyond ``limit`` the statement that the limit is out of the basic data's
     reach, higher contact ratios the lever left, and the change that takes them to
     their limits (the note's first part) a trial whose LTE is not estimated
     (:func:`contact.commands.next_steps.overlap_lines`). Empty where the
@@ -280,6 +282,13 @@ def reach_text(development, limit: float,
     said = ""
     if reach:
         why = f", not written: {reach['why']}" if reach.get("why") else ""
+        e = reach.get("evaluation")
+        if (reach.get("why") == "it scores no better" and getattr(e, "full", None)
+                is not None and not e.full[2] and hasattr(development, "missed_text")):
+            # what it gives up for its LTE, in numbers (the FH 9x37 at Sigma 85 deg of
+            # round 19b: 7/17 urad with the edge share 7.8 %, limit 2 %)
+            why += (", missing " + development.missed_text(e).removeprefix(
+                "not every target met: ").replace("; ", ", "))
         said = (f"; the development's least drive LTE p-p {reach['light']:.0f}/"
                 f"{reach['design']:.0f} urad ({reach['what']}{why})")
     # what sets the LTE: the one statement `ltca run`'s next step makes too

@@ -379,8 +379,9 @@ def _reached(setup: Mapping[str, Any], e: DevelopmentEvaluation, what: str,
     LTE p-p (the larger of light and design torque) :func:`checked_crowning_lte` and
     :func:`checked_overlap_lte` have seen:
     ``{"light", "design"}`` [µrad], ``"what"`` it is, ``"why"`` it was not kept (empty
-    where it was, or is the design the step began with) and ``"tried"`` the levers the
-    step analysed (:func:`_tried`)."""
+    where it was, or is the design the step began with), ``"tried"`` the levers the
+    step analysed (:func:`_tried`) and ``"evaluation"`` the design itself (its missed
+    targets, which ``ltca synthesize``'s note names where it "scores no better")."""
     if not isinstance(setup, dict) or e.metrics is None:
         return
     light, design = _lte_ends(e)
@@ -391,7 +392,8 @@ def _reached(setup: Mapping[str, Any], e: DevelopmentEvaluation, what: str,
     if kept is None or max(light, design) < max(kept["light"], kept["design"]) - 1e-9:
         setup["lte_reach"][key] = {"light": light, "design": design, "what": what,
                                    "why": why,
-                                   "tried": () if kept is None else kept["tried"]}
+                                   "tried": () if kept is None else kept["tried"],
+                                   "evaluation": e}
 
 
 def _tried(setup: Mapping[str, Any], lever: str) -> None:
