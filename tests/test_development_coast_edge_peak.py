@@ -153,3 +153,40 @@ def test_the_gate_costs_nothing(monkeypatch):
     loud = Outcome(None, start, (197.7, 1318.0))
     assert dce.coast_edge_peak(None, start, off, setup, None, {}, print, loud, None) is None
     assert calls == []
+
+
+def test_the_written_coast_flank_relieved(monkeypatch, tmp_path):
+    """:func:`coast_edge_peak` on the written 9x37's coast flank (its basic file, the
+    synthesis a stand-in returning the coast prescriptions it is given): the designs made
+    from the written basic design's coast flank at the coast outcome's torques, the
+    outcome returned carries the design kept in its ``basic``; with no capacity search the
+    static strength bounds the peak (the tip relief's 1700 MPa allowed, below 2400)."""
+    from geometry.synthesis import case_synthesis
+    from geometry.synthesis.basic_design import (
+        flank_option_values,
+        load_basic,
+        with_flank_options,
+    )
+
+    basic = load_basic("tests/data/designs/truck_hypoid_9x37.toml")
+    side = "convex" if basic.options.drive_flank == "concave" else "concave"
+
+    def synthesize(b, memo=None):
+        return flank_option_values(b.options.flank(side)), None
+
+    monkeypatch.setattr(case_synthesis, "synthesize", synthesize)
+    calls, targets, setup, start = _start(monkeypatch, flank_tip=1700.0)
+    written = {k: v for k, v in flank_option_values(basic.options.flank(side)).items()
+               if k in COAST} | COAST
+    developed = with_flank_options(basic, side, written)
+    Outcome = collections.namedtuple("Outcome", "basic best torques")
+    coast = Outcome(developed, start, (197.7, 1318.0))
+    lines = []
+    got = dce.coast_edge_peak(developed, start, targets, setup, None, {}, lines.append,
+                              coast, None)
+    assert got is not None
+    assert got.best.values == COAST | {"root_relief": 60.0, "tip_relief": 22.5}
+    kept = flank_option_values(got.basic.options.flank(side))
+    assert kept["root_relief"] == 60.0 and kept["tip_relief"] == 22.5
+    assert "the flank peak bound 2400 MPa" in lines[0]
+    assert all(f == "coast" for f, _, _ in calls) and len(calls) == 2

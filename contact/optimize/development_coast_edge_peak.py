@@ -162,7 +162,9 @@ def coast_edge_peak(developed: BasicDesign, drive: DevelopmentEvaluation,
         The coast outcome of :func:`~contact.optimize.development_coast_flank.
         coast_flank_capacity` (its ``best`` checked at its ``torques`` [N·m]).
     cap : CoastCapacity or None
-        The coast capacity search's result (:func:`coast_edge_bound`).
+        The coast capacity search's result (:func:`coast_edge_bound`; None or without a
+        bound: the flank's static strength, ``edge_static_strength`` [MPa], bounds the
+        peak).
 
     Returns
     -------
@@ -187,6 +189,9 @@ def coast_edge_peak(developed: BasicDesign, drive: DevelopmentEvaluation,
         return None
     side = "convex" if developed.options.drive_flank == "concave" else "concave"
     bound = coast_edge_bound(cap)
+    if not math.isfinite(bound):  # no capacity search (a coast design torque given): the
+        # flank's static strength, the verdict's FAIL limit
+        bound = float(old.metrics["edge_static_strength"][-1])
     above = ", ".join(f"{k} {p:.0f} MPa" for k, p in edges_above(old).items())
     say(f"development: coast flank's edges above the static strength at "
         f"{coast.torques[1]:.4g} N m ({above}): their relief, the flank peak bound "
