@@ -140,6 +140,7 @@ from contact.optimize.development_coast_capacity_lte import (
     coast_lte_within_capacity,
     coast_torque_that_holds,
 )
+from contact.optimize.development_coast_edge_peak import coast_edge_peak, holds_as_before
 from contact.optimize.development_coast_flank import (  # noqa: F401
     COAST_BEARING_DESIGNS,
     COAST_REDEVELOP,
@@ -614,6 +615,13 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                 _both_flanks_built(case, root_stress, built, say)
             else:
                 coast, coast_cap = holds
+        # an edge above the static strength at the coast design torque: its relief
+        # (development_coast_edge_peak), written where the coast flank holds as before
+        coast, developed, case, report = _coast_edges_relieved(
+            (coast, developed, case, report), best, targets, setup, teeth, memo, say,
+            coast_cap, basic, root_stress, functools.partial(
+                synthesize, progress=synthesis_progress, memo=memo),
+            functools.partial(_both_flanks_built, wanted=root_stress, built=built, say=say))
     coast_seconds += time.process_time() - c_cap
     tolerance = final_tolerance(case, targets, setup, teeth, best.values)
     # not tolerant at the design torque: the torque up to which it is, stated (the design
@@ -637,6 +645,35 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                                tolerant_torque=upto, lte_range=_judged(setup, best))
     say(result.headline())
     return result
+
+
+def _coast_edges_relieved(written: tuple, drive: DevelopmentEvaluation,
+                          targets: DevelopmentTargets, setup: dict[str, Any],
+                          teeth: KeptTeeth, memo: dict, say: Callable[[str], None],
+                          cap: CoastCapacity | None, basic: BasicDesign, root_stress: bool,
+                          write: Callable[[BasicDesign], tuple], built: Callable[[Case], None]
+                          ) -> tuple:
+    """The written (coast outcome, basic design, case, report) with the coast edges'
+    relief of :func:`~contact.optimize.development_coast_edge_peak.coast_edge_peak` where
+    it keeps one: written (``write``, ``built``) and analysed as ``ltca run --flank coast``
+    does at the coast design torque (:func:`coast_flank_capacity`), kept where it fails no
+    criterion the design before it held there
+    (:func:`~contact.optimize.development_coast_edge_peak.holds_as_before`); else
+    ``written`` (its FE models built again)."""
+    coast, developed = written[0], written[1]
+    edged = coast_edge_peak(developed, drive, targets, setup, teeth, memo, say, coast, cap)
+    if edged is None:
+        return written
+    case, report = write(edged.basic)
+    built(case)
+    again, after = coast_flank_capacity(case, basic, edged, targets, setup,
+                                        float(edged.torques[1]), root_stress, True, say)
+    if holds_as_before(after, cap):
+        return again, edged.basic, case, report
+    say("development: the coast edges' relief fails a criterion of the coast design "
+        "torque the design before it held; that design written")
+    built(written[2])
+    return written
 
 
 def _rewritten_after_cut(best: DevelopmentEvaluation, developed: BasicDesign, flank: str,

@@ -481,7 +481,9 @@ def checked_relief_variants(best: DevelopmentEvaluation, targets: DevelopmentTar
                        say: Callable[[str], None],
                        placed: Callable[[Mapping[str, float]], Case], *,
                        reliefs: tuple[Relief, ...] = RELIEFS,
-                       eps: tuple[float, float] | None = None) -> DevelopmentEvaluation:
+                       eps: tuple[float, float] | None = None, flank: str = "drive",
+                       key_prefix: tuple | None = None,
+                       tolerant: bool = True) -> DevelopmentEvaluation:
     """A drive design whose LTE a relief sets given each variant of ``reliefs`` whose gate
     holds, in turn (module docstring): each of its designs placed and checked at ``ltca
     run``'s sampling, kept where it ranks better, misses no target the design met and is
@@ -503,6 +505,16 @@ def checked_relief_variants(best: DevelopmentEvaluation, targets: DevelopmentTar
         The pair's (ε_vα, ε_vβ) (default
         :func:`~contact.optimize.development_matched_te.contact_ratios` of the design's
         case, read only where a gate needs it).
+    flank : str, optional
+        The flank the designs are checked on (``"drive"``, default, or ``"coast"``:
+        :func:`~contact.optimize.development_variant.said_variant`'s).
+    key_prefix : tuple, optional
+        The kept pinion tooth's key before the design's bearing (the coast flank's:
+        the drive design's bearing key and ``"coast"``); default the bearing alone.
+    tolerant : bool, optional
+        Ask the mounting tolerance at ΔE/ΔP ± 0.05 mm (default True; the coast flank's
+        steps do not: the tolerance is the drive flank's, :func:`~contact.optimize.
+        development_keep.kept_why`'s ``tolerant``).
 
     Returns
     -------
@@ -535,13 +547,13 @@ def checked_relief_variants(best: DevelopmentEvaluation, targets: DevelopmentTar
         t = next(tries, None)
         while t is not None:
             e = said_variant(best, t.values, relief.stage, t.said, targets, setup, teeth,
-                             say, placed)
+                             say, placed, flank=flank, key_prefix=key_prefix)
             why = None
             if e is not None:
                 rule = {} if relief.better is None else {"better": relief.better}
                 why = kept_why(best, e, targets, setup, teeth, say, t.change,
                                lost=relief.lost or lost_targets,
-                               lost_first=relief.lost_first, **rule)
+                               lost_first=relief.lost_first, tolerant=tolerant, **rule)
                 if t.lever:
                     if not noted:
                         lte_reached(setup, start, f"design {start.index + 1} as checked")

@@ -1,0 +1,241 @@
+"""The coast flank's edge-peak step (issue 71, "a gear you would sign off"): the written
+case's coast flank whose edge carries its coast design torque at a peak pressure above the
+flank's static strength given the relief that takes the load off that edge.
+
+``ltca run --flank coast``'s verdict says an ``edge_pressure`` attention where an edge kind
+carrying at least :data:`~contact.study.verdicts.EDGE_SHARE_MIN` of the torque peaks above
+the weaker member's static strength (:func:`contact.study.verdicts.edge_peaks`); the drive
+flank's step (:mod:`contact.optimize.development_edge_peak`) reads it on the drive flank
+only, and the coast edges are the larger ones: 3449–5156 MPa against 2400 MPa on five of
+eight developed designs (docs/synthesis.md, "The edge peak at the design torque").
+
+:func:`checked_coast_edge_peak` runs the drive step's row
+(:data:`~contact.optimize.development_edge_peak.EDGE_PEAK`: the levers of
+:data:`~contact.optimize.development_edge_peak.LEVERS`, kept where the edges' excess over
+the static strength falls, ending where no edge is above it) through the check's one
+relief loop (:func:`~contact.optimize.development_relief_lte.checked_relief_variants`) on
+the coast flank: its designs placed and checked at ``ltca run``'s sampling on the coast
+flank at its own torques, the kept pinion tooth keyed under the drive's bearing and the
+coast's, the mounting tolerance not asked (the drive flank's, as every coast step's), and
+no target the design met lost — nor its capacity bound (:func:`coast_edge_bound`: the flank
+peak at which the coast capacity search's criteria, the static strength and the local
+pitting safety S_H,loc ≥ S_Hmin, hold at the coast design torque), through the drive step's
+:func:`~contact.optimize.development_edge_peak.pitting_lost`. :func:`coast_edge_peak` runs
+it on the written case's coast flank after every other coast step; the development writes
+the design kept, analyses it as ``ltca run --flank coast`` does and keeps it where it fails
+no capacity criterion the design before it held (:func:`holds_as_before`).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Callable, Mapping
+from typing import Any
+
+from contact.optimize.development_coast import CoastCapacity
+from contact.optimize.development_coast_flank import pitting_pressure
+from contact.optimize.development_edge_peak import (
+    EDGE_PEAK,
+    edge_peak_runs_on,
+    edges_above,
+    pitting_lost,
+)
+from contact.optimize.development_evaluate import KeptTeeth, bearing_key
+from contact.optimize.development_relief_lte import checked_relief_variants
+from contact.optimize.development_result import DevelopmentEvaluation
+from contact.optimize.development_targets import DevelopmentTargets
+from geometry.case import Case
+from geometry.synthesis.basic_design import BasicDesign, with_flank_options
+
+__all__ = ["STAGE", "checked_coast_edge_peak", "coast_edge_bound", "coast_edge_peak",
+           "holds_as_before"]
+
+#: the check stage of the step's designs (:attr:`DevelopmentEvaluation.stage`)
+STAGE = "coast edge peak"
+
+
+def coast_edge_bound(cap: CoastCapacity | None) -> float:
+    """The coast flank's capacity bound [MPa] at its coast design torque: the flank peak
+    pressure at which the coast capacity search's last check (``cap.final``) meets its
+    local pitting safety S_H,loc = S_Hmin
+    (:func:`~contact.optimize.development_coast_flank.pitting_pressure`) or its static
+    strength (the search's ``flank`` criterion), the lower of the two known.
+
+    Parameters
+    ----------
+    cap : CoastCapacity or None
+        The coast capacity search's result (:func:`~contact.optimize.
+        development_coast_flank.coast_flank_capacity`).
+
+    Returns
+    -------
+    float — [MPa]
+        inf where neither is known (no search, no check at its torque, no rating).
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    A variant whose flank peak stays below both keeps the coast design torque the search
+    found (its criteria ``flank`` and ``pitting``, :class:`~contact.optimize.
+    development_coast.CoastCheck`). Source: ISO 10300-2 with the bearing's own peak
+    (S_H,loc ∝ 1/p); ISO 6336-2 Z_NT at the static end × ISO 6336-5 σ_Hlim.
+    """
+    final = cap.final if cap is not None else None
+    if final is None:
+        return math.inf
+    known = [x for x in (pitting_pressure(cap), float(final.limit)) if math.isfinite(x)]
+    return min(known) if known else math.inf
+
+
+def checked_coast_edge_peak(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                            setup: Mapping[str, Any], teeth: KeptTeeth | None,
+                            say: Callable[[str], None],
+                            placed: Callable[[Mapping[str, float]], Case], *,
+                            bound: float, key_prefix: tuple = ()) -> DevelopmentEvaluation:
+    """The coast design ``best`` with its edges' peak at the coast design torque within the
+    flank's static strength where a relief does it: the drive step's row
+    (:data:`~contact.optimize.development_edge_peak.EDGE_PEAK`, stage :data:`STAGE`)
+    through :func:`~contact.optimize.development_relief_lte.checked_relief_variants` on the
+    coast flank (module docstring). At most two designs per edge kind above the static
+    strength.
+
+    Parameters
+    ----------
+    best : DevelopmentEvaluation
+        The coast design, checked at the coast flank's light and design torque (its
+        metrics carry the edge peaks).
+    targets, setup, teeth, say, placed
+        As every coast check step's (:func:`~contact.optimize.development_coast_steps.
+        checked_coast_lte`; ``setup["torques"]``: the coast flank's own).
+    bound : float — [MPa]
+        The flank peak at the coast design torque a design may not rise above where it
+        is above ``best``'s (:func:`coast_edge_bound`; inf: none).
+    key_prefix : tuple, optional
+        The kept pinion tooth's key before the design's bearing.
+
+    Returns
+    -------
+    DevelopmentEvaluation
+        The design kept last; ``best`` itself where no edge is above the static strength,
+        no lever is developed or no design was kept (nothing analysed where the gate
+        does not hold).
+
+    Raises
+    ------
+    Nothing: a design whose synthesis or analysis fails is not kept (logged).
+
+    Notes
+    -----
+    Source: issue 71; ``ltca run --flank coast``'s ``edge_pressure`` attention; the
+    levers: Litvin & Fuentes, *Gear Geometry and Applied Theory*, 2nd ed., 2004, §9.4;
+    Stadtfeld, *Handbook of Bevel and Hypoid Gears*, 1993, ch. 3.
+    """
+    if not edge_peak_runs_on(best, targets):
+        return best
+    relief = dataclasses.replace(EDGE_PEAK, stage=STAGE, lost=pitting_lost(bound))
+    return checked_relief_variants(best, targets, setup, teeth, say, placed,
+                                   reliefs=(relief,), eps=(math.nan, math.nan),
+                                   flank="coast", key_prefix=key_prefix, tolerant=False)
+
+
+def coast_edge_peak(developed: BasicDesign, drive: DevelopmentEvaluation,
+                    targets: DevelopmentTargets, setup: dict[str, Any], teeth: KeptTeeth,
+                    memo: dict, say: Callable[[str], None], coast: Any,
+                    cap: CoastCapacity | None) -> Any | None:
+    """:func:`checked_coast_edge_peak` on the written case's coast flank at its own torques
+    (``coast.torques``, as ``ltca run --flank coast`` analyses it), after every other coast
+    step.
+
+    Parameters
+    ----------
+    developed : BasicDesign
+        The basic design written (both flanks' prescriptions).
+    drive : DevelopmentEvaluation
+        The drive design written (its bearing keys the kept pinion teeth).
+    targets, setup, teeth, memo, say
+        The development's.
+    coast : NamedTuple
+        The coast outcome of :func:`~contact.optimize.development_coast_flank.
+        coast_flank_capacity` (its ``best`` checked at its ``torques`` [N·m]).
+    cap : CoastCapacity or None
+        The coast capacity search's result (:func:`coast_edge_bound`; None or without a
+        bound: the flank's static strength, ``edge_static_strength`` [MPa], bounds the
+        peak).
+
+    Returns
+    -------
+    NamedTuple or None
+        The coast outcome with the design kept (its ``basic`` carrying its coast
+        prescriptions), or None (nothing kept; nothing analysed where no coast edge is
+        above the static strength or the coast development is off).
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: issue 71; docs/synthesis.md, "The coast edge peak at its design torque".
+    """
+    from geometry.synthesis.case_synthesis import synthesize
+
+    old = coast.best if coast is not None else None
+    if (old is None or old.full is None or not old.checked or len(coast.torques) != 2
+            or targets.coast_max_evaluations == 0 or not edge_peak_runs_on(old, targets)):
+        return None
+    side = "convex" if developed.options.drive_flank == "concave" else "concave"
+    bound = coast_edge_bound(cap)
+    if not math.isfinite(bound):  # no capacity search (a coast design torque given): the
+        # flank's static strength, the verdict's FAIL limit
+        bound = float(old.metrics["edge_static_strength"][-1])
+    above = ", ".join(f"{k} {p:.0f} MPa" for k, p in edges_above(old).items())
+    say(f"development: coast flank's edges above the static strength at "
+        f"{coast.torques[1]:.4g} N m ({above}): their relief, the flank peak bound "
+        f"{bound:.0f} MPa")
+
+    def placed(values):
+        return synthesize(with_flank_options(developed, side, values), memo=memo)[0]
+
+    got = checked_coast_edge_peak(old, targets, dict(setup, torques=list(coast.torques)),
+                                  teeth, say, placed, bound=bound,
+                                  key_prefix=(*bearing_key(drive.values), "coast"))
+    if got is old:
+        return None
+    return coast._replace(basic=with_flank_options(developed, side, got.values), best=got)
+
+
+def holds_as_before(after: CoastCapacity | None, before: CoastCapacity | None) -> bool:
+    """Whether the coast flank written with :func:`coast_edge_peak`'s design, analysed at
+    its coast design torque (``after``: a capacity search started there), fails no
+    criterion the design before it held there (``before.final``).
+
+    Parameters
+    ----------
+    after, before : CoastCapacity or None
+        The capacity searches (None: not analysed).
+
+    Returns
+    -------
+    bool
+        False where ``after`` is None or has no check.
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    The keep rule bounds the flank peak (:func:`coast_edge_bound`); the FE root stress
+    and the plastic share are asked here, on the case as written. Source: the coast
+    capacity search's criteria (:attr:`~contact.optimize.development_coast.CoastCheck.
+    failures`).
+    """
+    if after is None or not after.checks:
+        return False
+    held = before.final if before is not None else None
+    was = set(held.failures) if held is not None else set()
+    return set(after.checks[0].failures) <= was

@@ -1,0 +1,192 @@
+"""The coast flank's edge-peak step (:mod:`contact.optimize.development_coast_edge_peak`,
+issue 71): a coast edge above the flank's static strength at the coast design torque given
+the drive step's relief, checked on the coast flank, kept on its capacity bound.
+
+Stand-in analyses whose law follows the truck hypoid 9x37 of tests/data/designs as ``ltca
+run --flank coast`` read its written case (2026-11-27, docs/synthesis.md "The edge peak at
+the design torque"): gear tip 5156 MPa (0.36 % of the torque) and pinion edge 4718 MPa
+(1.57 %) at its coast design torque 1318 N m against the static strength 2400 MPa. The
+prescriptions are the stand-in's; the tests are the step's choices, not numbers of a gear.
+"""
+
+from __future__ import annotations
+
+import collections
+import dataclasses
+import functools
+import math
+
+import numpy as np
+from development_stand_ins import metrics as _metrics
+from development_stand_ins import stand_in
+
+from contact.optimize import development_coast_edge_peak as dce
+from contact.optimize import development_edge_peak as dep
+from contact.optimize.development_coast import CoastCapacity, CoastCheck
+
+#: the stand-in's coast prescriptions
+COAST = {"path_angle": -45.0, "ellipse_length": 0.5, "tip_relief": 15.0,
+         "root_relief": 40.0, "relief_start": 0.2, "profile_crowning": 0.0,
+         "tip_relief_start": 0.85, "blade_angle_change": 0.0}
+
+#: [MPa] the static strength σ_Hlim·Z_NT (case-carburised steel: 1500 × 1.6)
+STATIC = 2400.0
+
+#: the kept pinion tooth's key before the coast bearing (the drive bearing's, "coast")
+PREFIX = ("drive bearing", "coast")
+
+
+def _nine_by_37(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
+                flank="drive", calls=None, lte_root=30.0, flank_tip=1500.0):
+    """The 9x37's coast flank at its light and coast design torque: its gear tip 5156 MPa
+    with the root relief as written (40 µm), 2300 MPa at 60 µm; its pinion edge 4718 MPa
+    with the tip relief 15 µm, 2200 MPa at 22.5 µm; the design torque's LTE ``lte_root``
+    µrad with the deeper root relief (30 as written) and its flank peak ``flank_tip`` MPa
+    with the deeper tip relief (1500 as written). ``calls`` records each call's flank,
+    pinion key and misalignment."""
+    if calls is not None:
+        calls.append((flank, tuple(pinion_key), misalignment))
+    root, tip = float(case["root_relief"]), float(case["tip_relief"])
+    peaks = {"gear_tip": float(np.interp(root, [40.0, 60.0], [5156.0, 2300.0])),
+             "pinion_edge": float(np.interp(tip, [15.0, 22.5], [4718.0, 2200.0])),
+             "gear_heel": 0.0, "gear_toe": 0.0}
+    m = _metrics(lte_peak_to_peak=[20.0, float(np.interp(root, [40.0, 60.0],
+                                                          [30.0, lte_root]))],
+                 pressure_max_flank=[900.0, float(np.interp(tip, [15.0, 22.5],
+                                                            [1500.0, flank_tip]))],
+                 **{f"edge_peak_{k}": [0.0, p] for k, p in peaks.items()},
+                 edge_peak=[0.0, max(peaks.values())], edge_static_strength=[STATIC, STATIC])
+    return m, (0.0, 1.0, 0.0, 1.0, STATIC)
+
+
+def _start(monkeypatch, **law):
+    calls = []
+    fake = functools.partial(_nine_by_37, calls=calls, **law)
+    targets, setup, chosen = stand_in(monkeypatch, fake, [197.7, 1318.0])
+    start = chosen(dict(COAST))
+    calls.clear()
+    return calls, targets, setup, start
+
+
+def test_the_coast_edges_relieved_on_the_coast_flank(monkeypatch):
+    """Both coast edges above 2400 MPa: the gear tip (worst) by the root relief 40 → 60 µm,
+    kept, then the pinion edge by the tip relief 15 → 22.5 µm on it, kept; each analysed on
+    the coast flank under the coast's pinion key, the drive's mounting tolerance not
+    asked; the step ends with no edge above the static strength."""
+    calls, targets, setup, start = _start(monkeypatch)
+    assert start.full[2]
+    assert dep.edges_above(start) == {"gear_tip": 5156.0, "pinion_edge": 4718.0}
+    lines = []
+    got = dce.checked_coast_edge_peak(start, targets, setup, None, lines.append, dict,
+                                      bound=math.inf, key_prefix=PREFIX)
+    assert got.values == COAST | {"root_relief": 60.0, "tip_relief": 22.5}
+    assert got.stage == dce.STAGE and dep.edges_above(got) == {}
+    assert len(calls) == 2
+    assert all(f == "coast" and key[:2] == PREFIX and mis is None for f, key, mis in calls)
+    assert any("gear tip's peak 5156 MPa" in s and "2400 MPa" in s for s in lines)
+
+
+def test_a_relief_that_loses_a_coast_target_is_refused(monkeypatch):
+    """The deeper root relief clears the gear tip but lifts the coast design torque's LTE to
+    45 µrad, past the 40 µrad target the design met: not kept (said); the pinion edge's
+    tip relief is then tried on the design as written and kept."""
+    _, targets, setup, start = _start(monkeypatch, lte_root=45.0)
+    lines = []
+    got = dce.checked_coast_edge_peak(start, targets, setup, None, lines.append, dict,
+                                      bound=math.inf, key_prefix=PREFIX)
+    assert any("not kept: the root_relief 60 um for the gear tip misses lte" in s
+               for s in lines)
+    assert got.values == COAST | {"tip_relief": 22.5}
+    assert dep.edges_above(got) == {"gear_tip": 5156.0}
+
+
+def test_a_relief_above_the_capacity_bound_is_refused(monkeypatch):
+    """The deeper tip relief lifts the flank peak at the coast design torque 1500 → 1700
+    MPa, above the coast flank's capacity bound 1600 MPa (its local pitting safety at
+    S_Hmin there): not kept; without a bound it is."""
+    _, targets, setup, start = _start(monkeypatch, flank_tip=1700.0)
+    lines = []
+    got = dce.checked_coast_edge_peak(start, targets, setup, None, lines.append, dict,
+                                      bound=1600.0, key_prefix=PREFIX)
+    assert got.values == COAST | {"root_relief": 60.0}
+    assert any("tip_relief 22.5 um for the pinion edge misses local pitting" in s
+               for s in lines)
+    free = dce.checked_coast_edge_peak(start, targets, setup, None, lambda s: None, dict,
+                                       bound=math.inf, key_prefix=PREFIX)
+    assert free.values == COAST | {"root_relief": 60.0, "tip_relief": 22.5}
+
+
+def _check(torque, pressure=1500.0, pitting=1.2, root=2.0):
+    return CoastCheck(torque, pressure, STATIC, 0.0, root, 1.5, "gear", math.nan, math.nan,
+                      None, 0.0, pitting, 1.0, "pinion")
+
+
+def test_the_capacity_bound_and_holding_as_before():
+    """The bound: the flank peak at which S_H,loc = S_Hmin (1500 × 1.2 / 1.0 = 1800 MPa,
+    S_H,loc ∝ 1/p) or the static strength, the lower; inf without a check. A design kept
+    where it fails no criterion the design before it held at the coast design torque."""
+    before = CoastCapacity(1318.0, 1318.0, (_check(1318.0),), "", True)
+    assert dce.coast_edge_bound(before) == 1800.0
+    weak = CoastCapacity(1318.0, 1318.0, (_check(1318.0, pitting=2.0),), "", True)
+    assert dce.coast_edge_bound(weak) == STATIC
+    assert dce.coast_edge_bound(None) == math.inf
+    root_fails = CoastCapacity(1000.0, 1318.0, (_check(1318.0, root=1.2), _check(1000.0)),
+                               "", True)
+    assert dce.holds_as_before(before, before)
+    assert not dce.holds_as_before(root_fails, before)
+    given = CoastCapacity(1318.0, 1318.0, (_check(1318.0, root=1.2),), "", False)
+    assert dce.holds_as_before(root_fails, given)  # it failed there before too
+    assert not dce.holds_as_before(None, before)
+
+
+def test_the_gate_costs_nothing(monkeypatch):
+    """No coast edge above the static strength, or the coast development off: nothing
+    analysed, no design returned."""
+    calls, targets, setup, start = _start(monkeypatch)
+    Outcome = collections.namedtuple("Outcome", "basic best torques")
+    below = dict(start.metrics) | {"edge_peak_gear_tip": np.asarray([0.0, 2300.0]),
+                                   "edge_peak_pinion_edge": np.asarray([0.0, 2200.0])}
+    quiet = Outcome(None, dataclasses.replace(start, metrics=below), (197.7, 1318.0))
+    assert dce.coast_edge_peak(None, start, targets, setup, None, {}, print, quiet,
+                               None) is None
+    off = dataclasses.replace(targets, coast_max_evaluations=0)
+    loud = Outcome(None, start, (197.7, 1318.0))
+    assert dce.coast_edge_peak(None, start, off, setup, None, {}, print, loud, None) is None
+    assert calls == []
+
+
+def test_the_written_coast_flank_relieved(monkeypatch, tmp_path):
+    """:func:`coast_edge_peak` on the written 9x37's coast flank (its basic file, the
+    synthesis a stand-in returning the coast prescriptions it is given): the designs made
+    from the written basic design's coast flank at the coast outcome's torques, the
+    outcome returned carries the design kept in its ``basic``; with no capacity search the
+    static strength bounds the peak (the tip relief's 1700 MPa allowed, below 2400)."""
+    from geometry.synthesis import case_synthesis
+    from geometry.synthesis.basic_design import (
+        flank_option_values,
+        load_basic,
+        with_flank_options,
+    )
+
+    basic = load_basic("tests/data/designs/truck_hypoid_9x37.toml")
+    side = "convex" if basic.options.drive_flank == "concave" else "concave"
+
+    def synthesize(b, memo=None):
+        return flank_option_values(b.options.flank(side)), None
+
+    monkeypatch.setattr(case_synthesis, "synthesize", synthesize)
+    calls, targets, setup, start = _start(monkeypatch, flank_tip=1700.0)
+    written = {k: v for k, v in flank_option_values(basic.options.flank(side)).items()
+               if k in COAST} | COAST
+    developed = with_flank_options(basic, side, written)
+    Outcome = collections.namedtuple("Outcome", "basic best torques")
+    coast = Outcome(developed, start, (197.7, 1318.0))
+    lines = []
+    got = dce.coast_edge_peak(developed, start, targets, setup, None, {}, lines.append,
+                              coast, None)
+    assert got is not None
+    assert got.best.values == COAST | {"root_relief": 60.0, "tip_relief": 22.5}
+    kept = flank_option_values(got.basic.options.flank(side))
+    assert kept["root_relief"] == 60.0 and kept["tip_relief"] == 22.5
+    assert "the flank peak bound 2400 MPa" in lines[0]
+    assert all(f == "coast" for f, _, _ in calls) and len(calls) == 2
