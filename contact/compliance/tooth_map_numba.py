@@ -43,11 +43,14 @@ __all__ = ["project_to_mid", "trajectory"]
 
 _jit = numba.njit(cache=True, nogil=True)
 
+#: helpers called from compiled code only: no CPython or C wrapper to compile
+_helper = numba.njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+
 #: the Newton step of the foot on the mid-surface: the NumPy path's own formula, compiled
-_projection_step = _jit(projection_step)
+_projection_step = _helper(projection_step)
 
 
-@_jit
+@_helper
 def _columns(power, m, du, dv, tv, q, level):
     """The coefficients of t_u^i of φ_u and φ_v at t_v (the trajectory's rows 1, 2) into
     q[level, 0 or 1, i]: Horner in t_v, the two rows' chains interleaved."""
@@ -62,7 +65,7 @@ def _columns(power, m, du, dv, tv, q, level):
         q[level, 1, i] = b
 
 
-@_jit
+@_helper
 def _slope(z, rho, p, q, level, du, u, v):
     """du/dv = −(M_u·M_v)/(M_u·M_u) of the orthogonal trajectory at (u, v) of point p, the
     angle polynomials' coefficients of t_u^i at v given (``q[level]``, :func:`_columns`)."""
@@ -132,7 +135,7 @@ def trajectory(u, v0, v1, z, rho, power, member, du, dv, steps):
     return out
 
 
-@_jit
+@_helper
 def _six(power, m, du, dv, tu, tv):
     """φ, φ_u, φ_v, φ_uu, φ_uv, φ_vv (rows 0, 1, 2, 5, 6, 7) of tooth m at (t_u, t_v): six
     Horner schemes with their chains interleaved."""

@@ -59,8 +59,11 @@ __all__ = [
 
 _jit = numba.njit(cache=True, nogil=True)
 
+#: helpers called from compiled code only: no CPython or C wrapper to compile
+_helper = numba.njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 
-@_jit
+
+@_helper
 def _locate(b, x):
     """The cell of breakpoints ``b`` holding x and x's offset in it: x clamped into
     [b[0], b[-1]] (FITPACK's clamp), the largest i ≤ len(b) − 2 with b[i] ≤ x (FITPACK's
@@ -79,7 +82,7 @@ def _locate(b, x):
     return lo, x - b[lo]
 
 
-@_jit
+@_helper
 def _poly(coef, i, j, s, dx, dy):
     """Spline s's polynomial on cell (i, j) at the offsets (dx, dy): Horner's scheme in y
     within Horner's scheme in x."""
@@ -92,16 +95,16 @@ def _poly(coef, i, j, s, dx, dy):
     return acc
 
 
-@_jit
+@_helper
 def _value(sp, x, y):
     """The value at (x, y) of the first spline of ``sp`` = (bx, by, coefficients)
     (:class:`contact.utca.piecewise.PiecewiseSpline`)."""
     i, dx = _locate(sp[0], x)
     j, dy = _locate(sp[1], y)
-    return _poly(sp[2], i, j, 0, dx, dy)
+    return _poly(sp[2], i, j, np.int64(0), dx, dy)
 
 
-@_jit
+@_helper
 def _value_and_slope(sp, i, dx, y):
     """The first spline of ``sp`` and its ∂/∂y at (x, y), x given by its cell i and offset
     dx: the polynomial in y at that x, by Horner's scheme with its derivative's."""
@@ -166,7 +169,7 @@ def pieces(c, basis_x, basis_y):
     return out
 
 
-@_jit
+@_helper
 def _maximum(a, b):
     """np.maximum of two floats (NaN if either is NaN)."""
     if a != a or b != b:
@@ -174,7 +177,7 @@ def _maximum(a, b):
     return a if a >= b else b
 
 
-@_jit
+@_helper
 def _minimum(a, b):
     """np.minimum of two floats (NaN if either is NaN)."""
     if a != a or b != b:
@@ -182,7 +185,7 @@ def _minimum(a, b):
     return a if a <= b else b
 
 
-@_jit
+@_helper
 def _newton_one(q, v0, v1, u, t, v, miss):
     """:meth:`EaseOffFields.newton_v` of one point: v* [1] or NaN. ``q``: the spline of Q
     (bx, by, coefficients), whose value and ∂Q/∂v come from one polynomial per step."""
@@ -216,7 +219,7 @@ def newton_v(q, v0, v1, u, t, v, miss):
     return out
 
 
-@_jit
+@_helper
 def _good_cell(ug, vg, cell_ok, u, v):
     """:meth:`EaseOffFields.good_cell` of one place: its grid cell's corners were all
     computed (places beyond the grid count as its edge cells)."""
@@ -225,7 +228,7 @@ def _good_cell(ug, vg, cell_ok, u, v):
     return cell_ok[iu, iv]
 
 
-@_jit
+@_helper
 def _measure(margin, ug, vg, cell_ok, u, v):
     """:meth:`EaseOffFields.measure` of one place (v may be NaN)."""
     fin = math.isfinite(v)
@@ -261,7 +264,7 @@ def false_position_ends(q, margin, ug, vg, cell_ok, t, a, b, va, n_iter):
     for p in range(m_pts):
         ca[p] = _measure(margin, ug, vg, cell_ok, a[p], va[p])
         vs = va[p] if math.isfinite(va[p]) else 0.5 * (v0 + v1)
-        vb = _newton_one(q, v0, v1, b[p], t[p], vs, False)
+        vb = _newton_one(q, v0, v1, b[p], t[p], vs, np.bool_(False))
         cb[p] = _measure(margin, ug, vg, cell_ok, b[p], vb)
     prev_in = np.zeros(m_pts, dtype=np.bool_)
     prev_out = np.zeros(m_pts, dtype=np.bool_)
@@ -277,7 +280,7 @@ def false_position_ends(q, margin, ug, vg, cell_ok, t, a, b, va, n_iter):
             lo_m, hi_m = _minimum(ap, bp), _maximum(ap, bp)
             wd = 1e-3 * (hi_m - lo_m)
             m = _minimum(_maximum(m, lo_m + wd), hi_m - wd)
-            vm = _newton_one(q, v0, v1, m, t[p], va[p], False)
+            vm = _newton_one(q, v0, v1, m, t[p], va[p], np.bool_(False))
             cm = _measure(margin, ug, vg, cell_ok, m, vm)
             good = cm >= 0
             if good and prev_in[p] and smooth:
@@ -342,7 +345,7 @@ def solve_columns(qn, vn, q_sign, target, breaks, pieces, cell_piece, n_iter):
     return out
 
 
-@_jit
+@_helper
 def _inside_one(margin, ug, vg, cell_ok, u, v):
     """:meth:`EaseOffFields.inside` of one place: in the grid, in a cell whose corners
     were computed, and with the pinion mate in its blank (margin ≥ 0)."""
@@ -382,7 +385,7 @@ def coarse_runs(margin, ug, vg, cell_ok, uc, vc):
     return have, start, stop
 
 
-@_jit
+@_helper
 def _curve_ends(q, margin, ug, vg, cell_ok, t, uc, vc, have, start, stop, s_rows, s_u,
                 s_v, s_lo, s_hi, n_end):
     """``_curve_ends``: the ends (ua, ub) (nb,) of the curves, refined by
@@ -437,7 +440,7 @@ def _curve_ends(q, margin, ug, vg, cell_ok, t, uc, vc, have, start, stop, s_rows
     return ua, ub
 
 
-@_jit
+@_helper
 def _run_start(uc, vc, r, s0, s1, x):
     """``_run_interpolation`` of one place x of curve r: its run's coarse profile places
     (s0 … s1) interpolated linearly (ends held)."""
@@ -455,7 +458,7 @@ def _run_start(uc, vc, r, s0, s1, x):
     return val
 
 
-@_jit
+@_helper
 def _lowest_point(q, eps, vg, t, up, vp, e):
     """``_lowest_point`` with ``_parabola_vertex``: ute, cu, cv, index (nb,)."""
     nb, n = up.shape
@@ -483,7 +486,7 @@ def _lowest_point(q, eps, vg, t, up, vp, e):
         den = 2 * (h2 * a1 + h1 * a2)
         d = (h2 * h2 * a1 - h1 * h1 * a2) / den if (math.isfinite(den) and den > 0) else 0.0
         ur = up[r, k] + _minimum(_maximum(d, -0.5 * h1), 0.5 * h2)
-        vr = _newton_one(q, v0, v1, ur, t[r], vp[r, k], False)
+        vr = _newton_one(q, v0, v1, ur, t[r], vp[r, k], np.bool_(False))
         if math.isfinite(vr):
             er = _value(eps, ur, vr)
             if er < ec:
@@ -526,7 +529,7 @@ def seed_places(q, margin, eps, ug, vg, cell_ok, t, frac, uc, vc, have, start, s
             vs = short_v[r] if is_short[r] else _run_start(uc, vc, r, start[r], stop[r], x)
             if not math.isfinite(vs):
                 vs = 0.5 * (v0 + v1)
-            vp[r, k] = _newton_one(q, v0, v1, x, t[r], vs, False)
+            vp[r, k] = _newton_one(q, v0, v1, x, t[r], vs, np.bool_(False))
         for k in range(n):
             if math.isfinite(vp[r, k]):
                 e[r, k] = _value(eps, up[r, k], vp[r, k])

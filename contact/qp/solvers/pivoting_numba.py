@@ -41,8 +41,11 @@ COLD_START = 4
 
 _jit = numba.njit(cache=True, nogil=True)
 
+#: helpers called from compiled code only: no CPython or C wrapper to compile
+_helper = numba.njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 
-@_jit
+
+@_helper
 def _kkt(C, s, R, T, U, active, upper, floor, L, x_s, x_r, F):
     """The KKT solution on the loaded set ``active`` with ``upper`` at its limits into F
     (N,) [N]; returns Θ [rad], or NaN where C_AA is not positive definite or the Schur
@@ -174,7 +177,7 @@ def block_pivoting(C, s, R, T, U, bounded, f_tol, y_tol, floor, active, upper,
     return F_out, theta_out, max_iterations, ITERATION_CAP
 
 
-@_jit
+@_helper
 def _visited(seen, row, active, upper):
     """Record the sets as row ``row`` of ``seen`` (0 open, 1 loaded, 2 at the limit) and
     whether an earlier row holds the same sets (a cycle)."""
@@ -192,7 +195,7 @@ def _visited(seen, row, active, upper):
     return False
 
 
-@_jit
+@_helper
 def _pivot(active, upper, F, Y, U, bounded, f_tol, y_tol):
     """One block pivot of every segment (in place), and whether any moved: a loaded one
     with F < −f_tol opens, one with F > F_max + f_tol goes to its limit; one at its limit
@@ -292,7 +295,7 @@ def warm_solve(C0, diagonal, s, R, T, U, bounded, has_bounds, f_tol, y_tol, floo
                                              tolerance, f0, d0, r0)
 
 
-@_jit
+@_helper
 def _certified(C, s, R, T, U, bounded, has_bounds, F, theta, tolerance, f0, d0, r0):
     """Whether the residuals of :func:`contact.qp.contact_residuals` of (F, Θ) are finite
     and within ``tolerance`` (their arithmetic, the products summed in order)."""
