@@ -175,6 +175,11 @@ class DevelopmentResult:
         (:func:`contact.optimize.development_range_lte.range_record`: ``"torques"`` [N·m],
         ``"lte"`` [µrad], ``"peak"`` [µrad], ``"at"`` [N·m]); None where the check's steps
         did not judge it at these torques.
+    fe_level_text : str
+        Where the root stress limited a torque on a coarser FE level than the default,
+        why the torque was decided on the default model and the case written names it
+        (:func:`contact.optimize.development_root.refined_for_root`); empty where the
+        case keeps the level it was developed with.
     """
 
     basic: BasicDesign
@@ -206,6 +211,7 @@ class DevelopmentResult:
     lte_reach: dict | None = None
     tolerant_torque: tuple[float, float] = (math.nan, math.nan)
     lte_range: dict | None = None
+    fe_level_text: str = ""
 
     @property
     def tolerant(self) -> bool:
