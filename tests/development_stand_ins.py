@@ -101,3 +101,21 @@ def stand_in(monkeypatch, fake: Callable[..., Any], torques: Iterable[float],
         return checked(values, fake(values, [], **extra)[0], targets, centre_v)
 
     return targets, setup, chosen
+
+
+def counted_builds(monkeypatch) -> list[str]:
+    """Replace the development's FE build of both flanks
+    (``contact.optimize.development_root.both_flanks_built``) by a stand-in that builds
+    nothing and records the FE level of each case it is handed
+    (:func:`contact.compliance.fe.options.fe_level_of`); returns that record."""
+    from contact.compliance.fe.options import fe_level_of
+    from contact.optimize import development_root
+
+    levels: list[str] = []
+
+    def build(case, earlier=None, say=None):
+        levels.append(fe_level_of(case))
+        return {}
+
+    monkeypatch.setattr(development_root, "both_flanks_built", build)
+    return levels

@@ -13,6 +13,7 @@ capacity is rounded down to.
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -228,3 +229,141 @@ def test_regained_capacity_to_the_ceiling_or_not_at_all(monkeypatch):
     monkeypatch.setattr(dr, "_root_tree", broken)
     assert dr.regained_capacity(None, setup, 0.15, 100.0, lines.append) is None
     assert any("not computed (FE model not built)" in line for line in lines)
+
+
+def _levelled(coarse_c, default_c, seen):
+    """A stand-in ``_root_tree`` whose root stress (c·T [MPa], :func:`_tree`) depends on
+    the case's FE level — ``coarse_c`` on coarse10, ``default_c`` on the default model
+    (coarse10 reads high: −1.0 … +7.1 %, docs/fe.md) — recording the level of each call."""
+    from contact.compliance.fe.options import fe_level_of
+
+    def tree(case, torques):
+        level = fe_level_of(case)
+        seen.append(level)
+        return _tree(torques, c=coarse_c if level == "coarse10" else default_c)
+    return tree
+
+
+def _coarse_case():
+    from contact import resolve_case
+    from contact.compliance.fe.options import with_fe_level
+
+    return with_fe_level(resolve_case(None), "coarse10")
+
+
+def test_a_root_limited_torque_is_decided_on_the_default_model(monkeypatch):
+    """The FH 11×46's case in small (2026-11-27): coarse10 reads S_F,FE 1.28 < 1.3 at the
+    ISO capacity, the default model 1.316. Here coarse10 reads c = 5.0 at 100 N·m
+    (S_F,FE 824.67/(500·1.25·1.1) = 1.1995 < 1.3: the root limits the torque), the
+    default model 4.4 (824.67/(440·1.25·1.1) = 1.363 ≥ 1.3): the torque is checked
+    again on the default model, holds there (not lowered), every check after the first
+    reads it, one default build of both flanks (the stand-in counts it), and the case
+    written (:func:`~contact.optimize.development_root.at_decided_level`) names it."""
+    from development_stand_ins import counted_builds
+
+    from contact.compliance.fe.options import fe_level_of
+
+    builds = counted_builds(monkeypatch)
+    seen: list[str] = []
+    monkeypatch.setattr(dr, "_root_tree", _levelled((5.0, 4.0), (4.4, 3.0), seen))
+    setup = {"torques": [15.0, 100.0], "source": "the ISO 10300 capacity"}
+    lines: list[str] = []
+    case = _coarse_case()
+    tree, s, text = dr.root_capacity(case, setup, 0.15, lines.append)
+    assert tree is None and text == "" and "lowered" not in setup
+    assert setup["torques"] == [15.0, 100.0]
+    assert s == pytest.approx(FP / (440.0 * K_A * 1.1), rel=1e-12) and s >= 1.3
+    assert seen == ["coarse10", "default"] and builds == ["default"]
+    assert setup["fe_level"] == "default"
+    assert "root stress limits the design torque 100 N m: checked on the default FE model" \
+        in setup["fe_level_why"] and "S_F,FE 1.20 < S_Fmin 1.3" in setup["fe_level_why"]
+    assert any(setup["fe_level_why"] in line for line in lines)
+    written, _ = dr.at_decided_level(case, _basic(), setup)
+    assert fe_level_of(written) == "default" and fe_level_of(case) == "coarse10"
+    assert dict(_.root_stress) == {"fe_level": "default"}
+    # the raise back after a cut reads the same model
+    seen.clear()
+    dr.regained_capacity(case, setup, 0.15, 120.0, lines.append)
+    assert seen and set(seen) == {"default"} and builds == ["default"]
+
+
+def test_a_root_limited_cut_is_made_on_the_default_model(monkeypatch):
+    """Both models fail at 100 N·m (coarse10 c = 5.5, the default 5.0: S_F,FE 1.0905 and
+    1.1995): the cut's every step is analysed on the default model, and the torque it
+    lowers to is the default model's capacity (S_F,FE ≥ 1.3 there, by the default's
+    numbers: c = 5.0 at the torque written)."""
+    from development_stand_ins import counted_builds
+
+    builds = counted_builds(monkeypatch)
+    seen: list[str] = []
+    monkeypatch.setattr(dr, "_root_tree", _levelled((5.5, 4.0), (5.0, 4.0), seen))
+    setup = {"torques": [15.0, 100.0], "source": "the ISO 10300 capacity"}
+    tree, s, _ = dr.root_capacity(_coarse_case(), setup, 0.15, lambda line: None)
+    t = setup["torques"][1]
+    assert tree is not None and setup["lowered"] and t < 100.0
+    assert seen[0] == "coarse10" and set(seen[1:]) == {"default"} and len(seen) >= 3
+    assert builds == ["default"] and setup["fe_level"] == "default"
+    assert s == pytest.approx(FP / (5.0 * t * K_A * (1.0 + 10.0 / t)), rel=1e-12)
+    assert s >= 1.3
+
+
+def test_a_design_the_root_does_not_limit_keeps_its_level(monkeypatch):
+    """coarse10 holds (c = 3: S_F,FE 1.999 at 100 N·m): nothing checked on the default
+    model, no default build, the case keeps coarse10 (the speed gain stays)."""
+    from development_stand_ins import counted_builds
+
+    builds = counted_builds(monkeypatch)
+    seen: list[str] = []
+    monkeypatch.setattr(dr, "_root_tree", _levelled((3.0, 2.0), (2.9, 2.0), seen))
+    setup = {"torques": [15.0, 100.0], "source": "the ISO 10300 capacity"}
+    case = _coarse_case()
+    tree, _, text = dr.root_capacity(case, setup, 0.15, lambda line: None)
+    assert tree is None and text == "" and seen == ["coarse10"] and builds == []
+    assert "fe_level" not in setup
+    basic = _basic()
+    assert dr.at_decided_level(case, basic, setup) == (case, basic)
+
+
+def test_a_root_limited_coast_torque_is_decided_on_the_default_model(monkeypatch):
+    """The coast design torque's capacity search (development_coast_flank.
+    coast_flank_capacity) with a stand-in coast analysis whose S_F,FE is 1.25 on coarse10
+    and 1.32 on the default model at 733.6 N·m (the FH 11×46's coast torque, 2026-11-27;
+    S_Fmin 1.3): the coast torque is checked again on the default model and holds there
+    (not lowered); a coarse10 check that holds builds no default model."""
+    from development_stand_ins import counted_builds
+
+    from contact.compliance.fe.options import fe_level_of
+    from contact.optimize import development_coast_flank as cf
+    from contact.optimize.development import DevelopmentTargets
+    from contact.optimize.development_coast import CoastCheck
+
+    def run(coarse_safety):
+        builds = counted_builds(monkeypatch)
+        seen: list[str] = []
+
+        def check(case, basic, setup, torque, root_stress, plastic_limit=0.0):
+            level = fe_level_of(case)
+            seen.append(level)
+            return CoastCheck(torque, 1000.0, 2000.0, 0.0,
+                              coarse_safety if level == "coarse10" else 1.32, 1.3, "pinion",
+                              2.0, 110.0)
+
+        monkeypatch.setattr(cf, "_coast_check", check)
+        setup = {"torques": [153.2, 1022.0], "centre_v": 0.6}
+        _, cap = cf.coast_flank_capacity(_coarse_case(), None, None, DevelopmentTargets(),
+                                         setup, 733.6, True, True, lambda line: None)
+        return cap, setup, seen, builds
+
+    cap, setup, seen, builds = run(1.25)
+    assert cap.torque == 733.6 and not cap.lowered and cap.holds
+    assert seen == ["coarse10", "default"] and builds == ["default"]
+    assert "root stress limits the coast design torque (733.6 N m)" in setup["fe_level_why"]
+    cap, setup, seen, builds = run(1.31)
+    assert cap.torque == 733.6 and seen == ["coarse10"] and builds == []
+    assert "fe_level" not in setup
+
+
+def _basic():
+    from geometry.synthesis.basic_design import load_basic
+
+    return load_basic(Path(__file__).parent / "data" / "designs" / "pc_hypoid_10x43.toml")

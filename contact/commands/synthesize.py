@@ -692,6 +692,21 @@ def _size_line(basic, targets) -> str | None:
     return line + " (docs/synthesis.md)"
 
 
+def fe_level_notes(development, case) -> list[str]:
+    """The note that says which FE model decided a root-limited torque and why, where the
+    development moved the case written to the default model
+    (:attr:`contact.optimize.development_result.DevelopmentResult.fe_level_text`,
+    :func:`contact.optimize.development_root.refined_for_root`); empty where the case
+    keeps the level it was developed with (or no development ran)."""
+    if development is None or not development.fe_level_text:
+        return []
+    from contact.compliance.fe.options import fe_level_of
+
+    return [f"{development.fe_level_text}; the case written names [root_stress] fe_level "
+            f"= \"{fe_level_of(case)}\" (ltca run reads the model the torque was decided "
+            "with)"]
+
+
 def synthesis_fe_level(basic, given: str | None = None) -> str:
     """The FE level (:data:`contact.compliance.fe.options.LEVELS`) of a new design's root
     stress: ``given`` (``--fe-level``), else the basic design's ``[root_stress] fe_level``,
@@ -867,7 +882,7 @@ def _run_synthesize(args: argparse.Namespace) -> int:
 
     coast = checked_contact(case, basic.design)
     case, ratios, notes, record = _noted(basic, case, development)
-    notes += coast
+    notes += coast + fe_level_notes(development, case)
     text = _HEADER.format(basic=shown) + case.to_toml()
     # the written text must load back to the same case
     case_from_dict(tomllib.loads(text))

@@ -178,6 +178,7 @@ from contact.optimize.development_result import (  # noqa: F401
     DevelopmentResult,
     metrics_text,
 )
+from contact.optimize.development_root import at_decided_level
 from contact.optimize.development_stages import (  # noqa: F401
     CROWNING_STEP,
     HEIGHT_DESIGNS,
@@ -623,6 +624,9 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                 synthesize, progress=synthesis_progress, memo=memo),
             functools.partial(_both_flanks_built, wanted=root_stress, built=built, say=say))
     coast_seconds += time.process_time() - c_cap
+    # a root-limited torque decided on the default FE model: the case written names it
+    # (ltca run reads the model the torque was decided with)
+    case, developed = at_decided_level(case, developed, setup)
     tolerance = final_tolerance(case, targets, setup, teeth, best.values)
     # not tolerant at the design torque: the torque up to which it is, stated (the design
     # torque is not cut for it)
@@ -642,7 +646,8 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                                coast_capacity_said(basic, coast_cap),
                                lte_reach=setup.get("lte_reach", {}).get(
                                    tuple(float(t) for t in setup["torques"])),
-                               tolerant_torque=upto, lte_range=_judged(setup, best))
+                               tolerant_torque=upto, lte_range=_judged(setup, best),
+                               fe_level_text=setup.get("fe_level_why", ""))
     say(result.headline())
     return result
 

@@ -50,6 +50,7 @@ from contact.optimize.development_result import (
     floor_torque,
     metrics_text,
 )
+from contact.optimize.development_root import decided_case, refined_for_root
 from contact.optimize.development_stages import search_flank
 from contact.optimize.development_targets import (
     TE_NAME,
@@ -233,10 +234,21 @@ def coast_flank_capacity(case: Case, basic: BasicDesign, coast: _CoastOutcome,
     torque given is the drive's) — the coast design torque lowered to what the developed bearing
     carries (:func:`contact.optimize.development_coast.coast_capacity`: flank peak within
     the static strength, no plastic segment, S_F,FE >= S_Fmin). The coast outcome's
-    metrics and torques become those of the last check at the torque kept."""
+    metrics and torques become those of the last check at the torque kept. The root
+    stress on the FE level the development decides root-limited torques on
+    (:func:`contact.optimize.development_root.decided_case`; a coarse level's failing root
+    check taken again on the default model, :func:`~contact.optimize.development_root.
+    refined_for_root`)."""
     def analyse(torque: float) -> CoastCheck:
-        return _coast_check(case, basic, setup, torque, root_stress,
-                            targets.max_plastic_share)
+        check = _coast_check(decided_case(case, setup), basic, setup, torque, root_stress,
+                             targets.max_plastic_share)
+        if "root" in check.failures and refined_for_root(
+                decided_case(case, setup), setup, f"coast design torque ({torque:.4g} N m)",
+                check.root_safety, check.s_min, say) is not None:
+            # a coarse level's failing root check: the coast torque decided on the default
+            check = _coast_check(decided_case(case, setup), basic, setup, torque,
+                                 root_stress, targets.max_plastic_share)
+        return check
 
     try:
         if lower:

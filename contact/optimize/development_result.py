@@ -180,6 +180,11 @@ class DevelopmentResult:
         The contact-ratio remedy applied to the user's basic data before this development
         (``develop(..., apply_remedy=True)``, ``ltca synthesize --apply-remedy``; its
         ``basic`` the remedied basic data as given); None where none was.
+    fe_level_text : str
+        Where the root stress limited a torque on a coarser FE level than the default,
+        why the torque was decided on the default model and the case written names it
+        (:func:`contact.optimize.development_root.refined_for_root`); empty where the
+        case keeps the level it was developed with.
     """
 
     basic: BasicDesign
@@ -212,6 +217,7 @@ class DevelopmentResult:
     tolerant_torque: tuple[float, float] = (math.nan, math.nan)
     lte_range: dict | None = None
     remedy: Any = None
+    fe_level_text: str = ""
 
     @property
     def tolerant(self) -> bool:

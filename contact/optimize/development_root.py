@@ -111,6 +111,110 @@ def root_safety(tree) -> tuple[np.ndarray, float, str]:
     return s[:, j], float(rt["S_Fmin"]), member_names(rs)[j]
 
 
+#: the FE level a torque the root stress limits is decided on: the model the coarser
+#: levels state their accuracy against (:data:`contact.compliance.fe.options.LEVEL_ACCURACY`)
+DECIDING_LEVEL = "default"
+
+
+def decided_case(case, setup: dict[str, Any]):
+    """``case`` on the FE level the development's root checks read: ``setup["fe_level"]``
+    where a root check on a coarser level set it (:func:`refined_for_root`), else ``case``
+    itself (also where ``case`` is None).
+
+    Parameters
+    ----------
+    case : geometry.case.Case or None
+    setup : dict — the development's state (its optional ``"fe_level"``, a key of
+        :data:`contact.compliance.fe.options.LEVELS`)
+
+    Returns
+    -------
+    geometry.case.Case or None
+
+    Raises
+    ------
+    InputError — an unknown level (:func:`contact.compliance.fe.options.with_fe_level`).
+    """
+    level = setup.get("fe_level")
+    if case is None or level is None:
+        return case
+    from contact.compliance.fe.options import fe_level_of, with_fe_level
+
+    return case if fe_level_of(case) == level else with_fe_level(case, level)
+
+
+def at_decided_level(case, basic, setup: dict[str, Any]):
+    """(``case``, ``basic``) on the FE level the development decided its root-limited
+    torques on (:func:`decided_case`; the basic design's ``root_stress`` table naming it
+    too), as given where no root check moved the level.
+
+    Parameters
+    ----------
+    case : geometry.case.Case — the case written
+    basic : geometry.synthesis.basic_design.BasicDesign — its basic design
+    setup : dict — the development's state (its optional ``"fe_level"``)
+
+    Returns
+    -------
+    (geometry.case.Case, BasicDesign)
+
+    Raises
+    ------
+    InputError — an unknown level (:func:`decided_case`).
+    """
+    level = setup.get("fe_level")
+    if level is None:
+        return case, basic
+    import dataclasses
+
+    return (decided_case(case, setup),
+            dataclasses.replace(basic, root_stress={"fe_level": level}))
+
+
+def refined_for_root(case, setup: dict[str, Any], what: str, safety: float, s_min: float,
+                     say: Callable[[str], None]):
+    """Where the root check of ``case`` on a coarser FE level than
+    :data:`DECIDING_LEVEL` fails (S_F,FE ``safety`` < S_Fmin ``s_min`` [1]) and so would
+    limit a torque (``what``: the design torque or the coast design torque), the case on
+    the default FE model: ``setup["fe_level"]`` and ``setup["fe_level_why"]`` set (every
+    root check after reads that model, :func:`decided_case`, and the case written names
+    it, :func:`contact.optimize.development.develop`), said through ``say``, both members'
+    models of both flanks built (:func:`both_flanks_built`). None where ``case`` is None,
+    already on the default model, or the check holds.
+
+    Why: coarse10 reads the peak root stress −1.0 … +7.1 % of the default model's
+    (docs/fe.md, "A coarse model for a new design"); where the root stress limits a
+    torque, that reading is the torque's own error: on the face-hobbed 11×46 (2026-11-27)
+    coarse10's S_F,FE 1.28 at the ISO capacity 1022 N·m cut it to 985.9 N·m (−3.5 %) and
+    the coast design torque 733.6 → 694.7 N·m, while the default model holds 1022 N·m
+    (S_F,FE 1.316). Designs whose torque the root stress does not limit keep the coarse
+    level (no default build). docs/fe.md, "A root-limited torque decided on the default
+    model".
+
+    Returns
+    -------
+    geometry.case.Case or None
+    """
+    if case is None or not (math.isfinite(safety) and safety < s_min):
+        return None
+    from contact.compliance.fe.options import fe_level_of, with_fe_level
+
+    level = fe_level_of(case)
+    if level == DECIDING_LEVEL:
+        return None
+    from contact.study.verdicts import shown_below
+
+    why = (f"root stress limits the {what}: checked on the {DECIDING_LEVEL} FE model "
+           f"(the {level} level reads S_F,FE {shown_below(safety, s_min)} < S_Fmin "
+           f"{s_min:g} there; its "
+           f"peak root stress is -1.0 ... +7.1 % of the default model's, docs/fe.md)")
+    setup.update(fe_level=DECIDING_LEVEL, fe_level_why=why)
+    say(f"development: {why}")
+    finer = with_fe_level(case, DECIDING_LEVEL)
+    both_flanks_built(finer, None, say)
+    return finer
+
+
 def _in_worker_session(function: Callable) -> Callable:
     """``function`` run in a :func:`contact.compliance.fe.elasticity.worker_session`: the
     FE builds it makes share one solver worker (issue 75; imported when called)."""
@@ -383,7 +487,9 @@ def root_capacity(case, setup: dict[str, Any], light_load: float,
     T) and design torque and stepped again, b measured between the last two design
     torques, while one still fails (at most :data:`ROOT_STEPS`). ``setup`` gets the new
     torques, source and ``lowered`` where lowered. An analysis that fails is said through
-    ``say`` and never raised (the torque last checked is kept).
+    ``say`` and never raised (the torque last checked is kept). Where ``case``'s FE level
+    is coarser than the default and its root check fails, the torque is decided on the
+    default model (:func:`refined_for_root`: checked again there, and every check after).
 
     Returns
     -------
@@ -396,7 +502,14 @@ def root_capacity(case, setup: dict[str, Any], light_load: float,
     torques = [float(t) for t in setup["torques"]]
     torque = torques[1]
     try:
+        case = decided_case(case, setup)
         safe = _safeties(_root_tree(case, torques))
+        if "root" in safe:  # a coarse level's failing root check: decided on the default
+            s, s_min, _ = safe["root"]
+            finer = refined_for_root(case, setup, f"design torque {torque:.4g} N m",
+                                     float(s[-1]), s_min, say)
+            if finer is not None:
+                case, safe = finer, _safeties(_root_tree(finer, torques))
     except Exception as exc:  # reported, never fatal (ltca run says it)
         raise_if_interrupted(exc)
         log.info("development root stress check not made: %s", exc)
@@ -520,6 +633,7 @@ def regained_capacity(case, setup: dict[str, Any], light_load: float, ceiling: f
     torque = float(setup["torques"][1])
     if not (math.isfinite(ceiling) and ceiling > 1.01 * torque):
         return None
+    case = decided_case(case, setup)  # the level the root-limited torque was decided on
     high = _checked_at(case, light_load, ceiling, say)
     if high is None:
         return None
