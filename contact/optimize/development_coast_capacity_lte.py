@@ -336,7 +336,7 @@ def checked_coast_capacity_lte(best: DevelopmentEvaluation, targets: Development
 
     limit = LTE_LIMIT if limit is None else float(limit)
     first = longest_ellipse(best.values, targets)
-    if (best.full is None or not best.checked or best.metrics is None or first is None
+    if (not best.checked_full or first is None
             or not math.isfinite(static)
             or not float(np.nanmax(best.metrics["lte_peak_to_peak"])) > limit):
         return best

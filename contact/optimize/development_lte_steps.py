@@ -494,7 +494,7 @@ def checked_crowning_lte(best: DevelopmentEvaluation, targets: DevelopmentTarget
     from contact.study.verdicts import LTE_LIMIT
 
     limit = LTE_LIMIT if lte_limit is None else float(lte_limit)
-    if best.full is None or not best.checked or best.metrics is None:
+    if not best.checked_full:
         return best
     _reached(setup, best, f"design {best.index + 1} as checked")
 
