@@ -426,7 +426,7 @@ def coast_lte_within_capacity(developed: BasicDesign, drive: DevelopmentEvaluati
 
     old = coast.best if coast is not None else None
     final = cap.final if cap is not None else None
-    if (old is None or old.full is None or not old.checked or len(coast.torques) != 2
+    if (old is None or not old.checked_full or len(coast.torques) != 2
             or final is None or targets.coast_max_evaluations == 0
             or not float(np.nanmax(old.metrics["lte_peak_to_peak"])) > LTE_LIMIT):
         return None

@@ -198,7 +198,7 @@ def lte_alone_near(e: DevelopmentEvaluation | None, limit: float = LENGTH_RELIEF
     Source: the issue-71 development's check (docs/synthesis.md, "The lighter relief for
     an LTE just missed").
     """
-    if e is None or e.full is None or not e.checked or e.full[2]:
+    if e is None or not e.checked_full or e.full[2]:
         return False
     short = e.full[1]
     return ([k for k, v in short.items() if v > 0.0] == ["lte"]
