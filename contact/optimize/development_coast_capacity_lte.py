@@ -336,7 +336,7 @@ def checked_coast_capacity_lte(best: DevelopmentEvaluation, targets: Development
 
     limit = LTE_LIMIT if limit is None else float(limit)
     first = longest_ellipse(best.values, targets)
-    if (best.full is None or not best.checked or best.metrics is None or first is None
+    if (not best.checked_full or first is None
             or not math.isfinite(static)
             or not float(np.nanmax(best.metrics["lte_peak_to_peak"])) > limit):
         return best
@@ -426,7 +426,7 @@ def coast_lte_within_capacity(developed: BasicDesign, drive: DevelopmentEvaluati
 
     old = coast.best if coast is not None else None
     final = cap.final if cap is not None else None
-    if (old is None or old.full is None or not old.checked or len(coast.torques) != 2
+    if (old is None or not old.checked_full or len(coast.torques) != 2
             or final is None or targets.coast_max_evaluations == 0
             or not float(np.nanmax(old.metrics["lte_peak_to_peak"])) > LTE_LIMIT):
         return None

@@ -184,7 +184,7 @@ def coast_edge_peak(developed: BasicDesign, drive: DevelopmentEvaluation,
     from geometry.synthesis.case_synthesis import synthesize
 
     old = coast.best if coast is not None else None
-    if (old is None or old.full is None or not old.checked or len(coast.torques) != 2
+    if (old is None or not old.checked_full or len(coast.torques) != 2
             or targets.coast_max_evaluations == 0 or not edge_peak_runs_on(old, targets)):
         return None
     side = "convex" if developed.options.drive_flank == "concave" else "concave"

@@ -540,7 +540,7 @@ def coast_lte_at_its_torques(developed: BasicDesign, drive: DevelopmentEvaluatio
     from geometry.synthesis.case_synthesis import synthesize
 
     old = coast.best
-    if (old is None or old.full is None or not old.checked or len(coast.torques) != 2
+    if (old is None or not old.checked_full or len(coast.torques) != 2
             or not float(coast.torques[1]) < COAST_REDEVELOP * float(developed_at)
             or not np.nanmax(old.metrics["lte_peak_to_peak"]) > LTE_LIMIT
             or targets.coast_max_evaluations == 0):

@@ -108,7 +108,7 @@ def checked_coast_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     limit = LTE_LIMIT if lte_limit is None else float(lte_limit)
     entered = best
     for changes in (*(((n, s),) for n, s in COAST_LTE_STEPS), COAST_TIP_START_STEP):
-        if (best.full is None or not best.checked
+        if (not best.checked_full
                 or not np.nanmax(best.metrics["lte_peak_to_peak"]) > limit):
             return (best if best is entered else
                     checked_coast_lighter_relief(best, targets, setup, teeth, say, placed,
@@ -218,7 +218,7 @@ def checked_coast_lighter_relief(best: DevelopmentEvaluation, targets: Developme
     0.64, off its band). Both are blade changes in a completing face-hobbing process
     (the blade's toprem and flankrem): the coast flank's alone, as every coast
     prescription of the synthesis is (docs/synthesis.md, "Face hobbing")."""
-    if (best.full is None or not best.checked
+    if (not best.checked_full
             or not np.nanmax(best.metrics["lte_peak_to_peak"]) > targets.max_lte
             or not float(best.values.get("tip_relief", 0.0)) > 0.0):
         return best
@@ -393,7 +393,7 @@ def checked_coast_te(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     at 45 (1367 MPa): the light LTE rises with the level and the design LTE falls, their
     larger least where they cross; the ellipse and path steps before it scored worse or
     peaked higher there."""
-    if (level is None or best.full is None or not best.checked
+    if (level is None or not best.checked_full
             or TE_NAME not in targets.variables or TE_NAME not in best.values):
         return best
     lte = best.metrics["lte_peak_to_peak"]

@@ -315,7 +315,7 @@ def edge_peak_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     -----
     Source: ``ltca run``'s ``edge_pressure`` attention (module docstring).
     """
-    if best.full is None or not best.checked or best.metrics is None:
+    if not best.checked_full:
         return False
     return any(lever_designs(k, best.values, targets) for k in edges_above(best))
 

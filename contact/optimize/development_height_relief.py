@@ -51,7 +51,7 @@ def height_relief_applies(best: DevelopmentEvaluation, targets: DevelopmentTarge
     target missed), and both reliefs (:data:`RELIEF_NAMES`) are developed.
 
     Raises nothing; a pure function of its inputs (no analysis)."""
-    if (best.full is None or not best.checked or best.metrics is None
+    if (not best.checked_full
             or best.case is None
             or not all(n in targets.variables and n in best.values for n in RELIEF_NAMES)):
         return False

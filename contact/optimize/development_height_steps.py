@@ -68,7 +68,7 @@ def pattern_high(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     Source: the issue-71 development's height targets (docs/synthesis.md, "Development
     bearing"; docs/own_gear_set.md, "The pattern's height").
     """
-    if (best.full is None or not best.checked or best.full[1]["centre_v"] == 0.0
+    if (not best.checked_full or best.full[1]["centre_v"] == 0.0
             or not all(n in targets.variables and n in best.values for n in names)
             or not math.isfinite(footprint_centre_v(best))):
         return False
@@ -253,7 +253,7 @@ def checked_blade(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     every target met, tolerant.
     """
     names = (HEIGHT_NAME, "root_relief", "relief_start")
-    if (best.full is None or not best.checked or best.met
+    if (not best.checked_full or best.met
             or not all(n in targets.variables and n in best.values for n in names)
             or best.values[HEIGHT_NAME] == 0.0):
         return best

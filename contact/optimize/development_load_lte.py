@@ -186,7 +186,7 @@ def checked_load_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     design torque are the bearing's length and bias, not the TE parabola (the 22x33:
     ``te_level`` 10 / 45 / 80 µrad gave 68 / 71 / 75 µrad at 510 N m).
     """
-    if (best.full is None or not best.checked or best.metrics is None
+    if (not best.checked_full
             or best.case is None or best.full[1].get("lte", 0.0) == 0.0
             or any(v > 0.0 for k, v in best.full[1].items() if k != "lte")):
         return best
@@ -332,7 +332,7 @@ def checked_relief_ellipse_lte(best: DevelopmentEvaluation, targets: Development
 
     limit = LTE_LIMIT if lte_limit is None else float(lte_limit)
     name = "root_relief"
-    if (best.full is None or not best.checked or best.metrics is None or best.case is None
+    if (not best.checked_full or best.case is None
             or name not in targets.variables or not float(best.values.get(name, 0.0)) > 0.0
             or any(v > 0.0 for k, v in best.full[1].items() if k != "lte")):
         return best

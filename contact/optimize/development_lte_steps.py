@@ -63,7 +63,7 @@ def checked_ellipse(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     µrad, 0.62 (the length's tolerance 0.5 ± 0.1 missed); 0.6: 8 / 16 µrad, 0.72; profile
     crowning 45 / 60 µm: 39 / 49, 42 / 51 µrad; te_level 25: 39 / 47; tip relief 30 µm:
     35 / 41 µrad, 1.2 % on edges."""
-    if (best.full is None or not best.checked or best.full[1]["lte"] == 0.0
+    if (not best.checked_full or best.full[1]["lte"] == 0.0
             or best.full[1]["length"] > 0.0 or "ellipse_length" not in targets.variables
             or "ellipse_length" not in best.values):
         return best
@@ -135,7 +135,7 @@ def checked_long(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     (beyond 0.5 ± 0.1). On the coast flank, whose search ends at the check of its best
     designs, it is the only step (:func:`contact.optimize.development_coast_flank.
     coast_development`)."""
-    if (best.full is None or not best.checked or best.full[1]["lte"] == 0.0):
+    if (not best.checked_full or best.full[1]["lte"] == 0.0):
         return best
     values = long_bearing(best.values, targets)
     if values is None:
@@ -245,7 +245,7 @@ def shallower_root_relief(
     lo, hi = (float(x) for x in targets.variables[name])
     now = float(best.values[name])
     for fraction in RELIEF_LTE_FRACTIONS:
-        if (best.full is None or not best.checked
+        if (not best.checked_full
                 or not np.nanmax(best.metrics["lte_peak_to_peak"]) > limit):
             return best
         x = float(np.clip(fraction * now, lo, hi))
@@ -280,7 +280,7 @@ def checked_te_back(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     at 2779 MPa at the design torque (above the static strength 2400 MPa, so the design
     torque was lowered to 217.7 N m), with 45 at 2142 MPa (LTE 87 µrad): the outcome
     followed which design the search's TE stage met, a 0.2 % change of a torque apart."""
-    if (best.full is None or not best.checked or best.met or TE_NAME not in targets.variables
+    if (not best.checked_full or best.met or TE_NAME not in targets.variables
             or TE_NAME not in best.values):
         return best
     lo, hi = (float(x) for x in targets.variables[TE_NAME])
@@ -331,7 +331,7 @@ def checked_overlap_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets
     ellipse 0.6 with no profile crowning and M −0.2: 37 / 38.5 µrad, 1.50 / 2.30, the
     bound 33 µrad, every target met, tolerant. Each alone did less (ellipse 0.6: 43 / 43
     µrad, centre u missed; no crowning: 43 / 51 µrad, centre v missed)."""
-    if (best.full is None or not best.checked or best.full[1]["lte"] == 0.0
+    if (not best.checked_full or best.full[1]["lte"] == 0.0
             or best.full[1]["length"] > 0.0):
         return best
     values = dict(best.values)
@@ -494,7 +494,7 @@ def checked_crowning_lte(best: DevelopmentEvaluation, targets: DevelopmentTarget
     from contact.study.verdicts import LTE_LIMIT
 
     limit = LTE_LIMIT if lte_limit is None else float(lte_limit)
-    if best.full is None or not best.checked or best.metrics is None:
+    if not best.checked_full:
         return best
     _reached(setup, best, f"design {best.index + 1} as checked")
 

@@ -217,7 +217,7 @@ def runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     Source: issue 71 (the drive LTE where the contact ratios are low; docs/synthesis.md,
     "The TE parabola matched to the load where the contact ratios are low").
     """
-    if (best.full is None or not best.checked or best.metrics is None
+    if (not best.checked_full
             or TE_NAME not in targets.variables
             or not float(best.full[1].get("lte", 0.0)) > 0.0):
         return False

@@ -120,7 +120,7 @@ def runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     Source: issue 71 (docs/synthesis.md, "The path turned again for the design torque's
     LTE").
     """
-    if (best.full is None or not best.checked or best.metrics is None
+    if (not best.checked_full
             or "lte_peak_to_peak" not in best.metrics
             or not all(n in targets.variables and n in best.values for n in NAMES)):
         return False

@@ -138,7 +138,7 @@ def checked_path(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     benchmarks/data/unseen_designs: −65.6° → −80°, ellipse 0.625, pattern 0.35 long at
     4.6 N m, where nothing more was tried)."""
     names = ("path_angle", "ellipse_length")
-    if (best.full is None or not best.checked
+    if (not best.checked_full
             or not all(n in targets.variables and n in best.values for n in names)):
         return best
     short = best.full[1]

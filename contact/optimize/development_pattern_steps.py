@@ -136,7 +136,7 @@ def checked_length(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     (path −45°, ellipse 0.55): pattern 0.65 long against 0.5 ± 0.1, every other target
     met (docs/synthesis.md, "The coast flank's pattern length")."""
     name = "ellipse_length"
-    if (best.full is None or not best.checked or best.full[1]["length"] == 0.0
+    if (not best.checked_full or best.full[1]["length"] == 0.0
             or name not in targets.variables or name not in best.values):
         return best
     lo, hi = (float(x) for x in targets.variables[name])
@@ -307,7 +307,7 @@ def _met_count(e: DevelopmentEvaluation) -> int:
 def near_miss(e: DevelopmentEvaluation, limit: float = NEAR_MISS) -> bool:
     """Whether a checked design misses its light-load centre v, and misses nothing by more
     than ``limit`` (:data:`NEAR_MISS`, in :func:`development_score`'s shortfall units)."""
-    if e.full is None or not e.checked or e.full[2]:
+    if not e.checked_full or e.full[2]:
         return False
     short = e.full[1]
     return short.get("centre_v", 0.0) > 0.0 and max(short.values()) <= limit
@@ -492,7 +492,7 @@ def checked_centre_u(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     by M half-way back to the design kept, where the pattern, linear in M, still meets its
     band: the 11x41's second M step, from −0.137 (u 0.54) to −0.192 (u 0.49), was not
     tolerant (a plastic segment at ΔP −0.05 mm)."""
-    if best.full is None or not best.checked or best.full[1].get("centre_u", 0.0) == 0.0:
+    if not best.checked_full or best.full[1].get("centre_u", 0.0) == 0.0:
         return best
     u0 = centre_u_of(best)
     if not math.isfinite(u0):

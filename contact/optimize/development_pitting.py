@@ -208,7 +208,7 @@ def checked_pitting(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     MPa; the blade angle −0.1° (centre v 0.63 → 0.57): 1520 MPa; both (ellipse 0.65):
     1469 MPa, every target met, tolerant; tip relief 30–45 µm raised the peak (1696–1731
     MPa)."""
-    if best.full is None or not best.checked or best.case is None:
+    if not best.checked_full or best.case is None:
         return best
     torque = float(setup["torques"][1])
     try:

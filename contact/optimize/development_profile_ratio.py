@@ -215,7 +215,7 @@ def checked_profile_ratio(best: DevelopmentEvaluation, targets: DevelopmentTarge
     def above(e: DevelopmentEvaluation) -> bool:
         return bool(np.nanmax(e.metrics["lte_peak_to_peak"]) > limit)
 
-    if (best.full is None or not best.checked or best.metrics is None or not above(best)):
+    if (not best.checked_full or not above(best)):
         return best
     values = profile_ratio_bearing(best.values, targets)
     if values is None:

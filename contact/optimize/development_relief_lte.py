@@ -165,7 +165,7 @@ def tip_start_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     Source: issue 71 (LTE p-p <= 60 µrad at every torque on a face contact ratio below 1;
     docs/synthesis.md, "LTE at every torque on a face contact ratio below 1").
     """
-    if (best.full is None or not best.checked or best.metrics is None
+    if (not best.checked_full
             or not float(best.full[1].get("lte", 0.0)) > 0.0):
         return False
     if not lte_ends(best)[1] > float(targets.max_lte):
@@ -198,7 +198,7 @@ def lte_alone_near(e: DevelopmentEvaluation | None, limit: float = LENGTH_RELIEF
     Source: the issue-71 development's check (docs/synthesis.md, "The lighter relief for
     an LTE just missed").
     """
-    if e is None or e.full is None or not e.checked or e.full[2]:
+    if e is None or not e.checked_full or e.full[2]:
         return False
     short = e.full[1]
     return ([k for k, v in short.items() if v > 0.0] == ["lte"]
@@ -287,7 +287,7 @@ def tip_lte_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets) ->
     -----
     Source: issue 71 (docs/synthesis.md, "The tip relief for the design torque's LTE").
     """
-    if (best.full is None or not best.checked or best.metrics is None
+    if (not best.checked_full
             or "lte_peak_to_peak" not in best.metrics
             or not all(n in targets.variables and n in best.values
                        for n in ("tip_relief", "tip_relief_start"))):

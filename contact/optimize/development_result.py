@@ -7,6 +7,9 @@ its value and limit, both flanks' peak pressure), the paragraph and the informat
 ``[development]`` table written into the case, and the coast design torque capped at the
 coast flank's static capacity. Imported through :mod:`contact.optimize.development`.
 
+:attr:`DevelopmentEvaluation.checked_full` is the one test the development's steps make
+of the checked best design before they read its metrics or full score.
+
 Public names
 ------------
 DevelopmentEvaluation, DevelopmentResult, COAST_STATUS, STATIC_MARGIN, floor_torque,
@@ -76,6 +79,18 @@ class DevelopmentEvaluation:
     full: tuple[float, dict[str, float], bool] | None = None
     checked: bool = False
     stage: str = ""
+
+    @property
+    def checked_full(self) -> bool:
+        """True when this design was scored on every target at the final check.
+
+        Certifies that ``full`` is not None (the design was scored on every target),
+        ``checked`` is set (``metrics`` and ``full`` are those of the final check at
+        :data:`CHECK_LTCA`, not of the coarse search) and ``metrics`` is not None: the
+        condition the development's steps require of the checked best design before
+        they read its metrics or full score.
+        """
+        return self.full is not None and self.checked and self.metrics is not None
 
 
 @dataclass(frozen=True, eq=False)

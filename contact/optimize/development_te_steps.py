@@ -60,7 +60,7 @@ def checked_te(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     at its fifth design, every target met coarsely. Source: the issue-71 development's TE
     stage (docs/synthesis.md, "Development bearing").
     """
-    if (TE_NAME not in targets.variables or best.full is None or not best.checked
+    if (TE_NAME not in targets.variables or not best.checked_full
             or best.full[1]["lte"] == 0.0):
         return best
     lo, hi = targets.variables[TE_NAME]

@@ -205,7 +205,7 @@ def checked_tolerance(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     22.5 µm (−0.088°, te_level 10 µrad) brought the centre v to 0.59 but the LTE to 40 / 75
     µrad; blade steps of −0.03 / −0.05° without the TE change on 18.75 or 22.5 µm each gave
     up the pattern length or the LTE (2026-11-26, branch tol71b)."""
-    if best.full is None or not best.checked or not best.met or best.case is None:
+    if not best.checked_full or not best.met or best.case is None:
         return best
     tolerance = tolerance_checks(best.case, targets, setup, teeth, best.values)
     setup["tolerance"] = (dict(best.values), tuple(setup["torques"]), tolerance)
@@ -340,7 +340,7 @@ def checked_tolerance_height(best: DevelopmentEvaluation, targets: DevelopmentTa
     tolerant −0.0536° and −0.0714° meet every target (LTE 35 / 37 and 35 / 39 µrad)."""
     from contact.optimize.development_stages import HEIGHT_SLOPE, HEIGHT_SLOPE_MIN
 
-    if (best.full is None or not best.checked or not best.met or best.case is None
+    if (not best.checked_full or not best.met or best.case is None
             or HEIGHT_NAME not in targets.variables or HEIGHT_NAME not in best.values
             or not math.isfinite(footprint_centre_v(best))):
         return best
