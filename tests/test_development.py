@@ -2171,7 +2171,10 @@ def test_a_coast_lte_above_the_verdicts_limit_gets_a_longer_ellipse(monkeypatch)
                                    lambda v: dict(v), key_prefix=("d",))
     assert got.stage == "coast lte"
     assert got.values == values | {"ellipse_length": pytest.approx(0.5, abs=1e-12)}
-    assert calls == [("coast", pytest.approx(0.5), ("d", *dcheck.bearing_key(got.values)))]
+    # the design kept, within the limit at both torques, then judged between them as ltca
+    # run --flank coast judges it (its lte_range torques, the same kept pinion tooth)
+    key = ("d", *dcheck.bearing_key(got.values))
+    assert calls == [("coast", pytest.approx(0.5), key)] * 2
     assert "ellipse_length 0.5" in lines[0] and not any("not kept" in x for x in lines)
     # within the limit at every torque: not analysed
     quiet = _checked(values, _metrics(lte_peak_to_peak=[55.0, 60.0]), targets, 0.6)
@@ -2182,7 +2185,7 @@ def test_a_coast_lte_above_the_verdicts_limit_gets_a_longer_ellipse(monkeypatch)
     top = _checked(values | {"ellipse_length": 0.75}, start.metrics, targets, 0.6)
     got = dcheck.checked_coast_lte(top, targets, setup, None, lines.append,
                                    lambda v: dict(v))
-    assert [c[:2] for c in calls] == [("coast", 0.75)]
+    assert [c[:2] for c in calls] == [("coast", 0.75)] * 2  # the turn; between the torques
     assert got.values["path_angle"] == pytest.approx(-43.75)
 
 
@@ -2251,7 +2254,8 @@ def test_a_coast_lte_the_ellipse_does_not_lower_gets_the_path_turned_lengthwise(
     lines = []
     got = dcheck.checked_coast_lte(start, targets, setup, None, lines.append,
                                    lambda v: dict(v))
-    assert seen == [(-45.0, pytest.approx(0.65)), (-30.0, 0.55)]
+    # the path turned, then judged between the torques (ltca run --flank coast's lte_range)
+    assert seen == [(-45.0, pytest.approx(0.65)), (-30.0, 0.55), (-30.0, 0.55)]
     assert got.values == {"path_angle": -30.0, "ellipse_length": 0.55}
     assert got.metrics["lte_peak_to_peak"][1] == 55.0
     assert "path_angle -30" in lines[1]

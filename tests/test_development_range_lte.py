@@ -281,3 +281,71 @@ def test_the_result_carries_the_record_of_the_design_written_alone(monkeypatch):
     later = dataclasses.replace(start, values=dict(WRITTEN) | {"tip_relief": 30.0})
     assert _judged(setup, later) is None
     assert _judged(dict(setup, torques=[250.0, 1668.0]), start) is None
+
+
+#: the coast flank's development torques and ltca run's lte_range torques of a coast run
+#: at them: 135.2 / 368.33 / 601.47 / 834.6 N m (the face-hobbed spiral bevel 20x24 at
+#: Σ 100° of benchmarks/data/unseen_designs, b2 24 -> 33.6 mm by ltca synthesize
+#: --apply-remedy, its coast flank as ltca run --flank coast judged it, 2026-11-27: LTE p-p
+#: 44.1 / 54.4 urad at 135.2 / 834.6 N m, 80.8 urad at 368.3 N m between them)
+COAST_TORQUES = (135.2, 834.6)
+COAST_GRID = lte_range_torques(COAST_TORQUES, COAST_TORQUES[1])
+
+COAST_WRITTEN = {"path_angle": -45.0, "ellipse_length": 0.5, "tip_relief": 0.0,
+                 "tip_relief_start": 0.9}
+
+#: LTE p-p [urad] at COAST_GRID by (path angle, ellipse): as written; the ellipse 0.1
+#: longer (lower at both torques, the peak between higher: it ranks better at the two
+#: torques alone); the path turned 15 deg lengthwise (the peak between within 60). The
+#: variants' numbers are the law's (the test is the step's choices)
+COAST_CURVES = {(-45.0, 0.5): (44.1, 80.8, 67.5, 54.4), (-45.0, 0.6): (35.0, 85.0, 60.0, 45.0),
+                (-30.0, 0.5): (42.0, 57.0, 52.0, 50.0)}
+
+
+def test_the_coast_lte_steps_act_on_a_peak_between_the_torques(monkeypatch):
+    """A coast design within 60 urad at its light and design torque and above it between
+    them (ltca run --flank coast's lte_range) is given the coast LTE steps
+    (development_coast_steps.checked_coast_lte), each judged on its largest LTE over the
+    range on the coast flank: the longer ellipse, better at the two torques alone but 85
+    urad between, is not kept; the path turned lengthwise (57 urad) is. A design within the
+    limit between the torques too is returned as it is."""
+    from contact.optimize import development_coast_steps as dcs
+
+    asked: list[tuple] = []
+
+    def law(case, torques, misalignment=None, flank="drive", pinion_key=(), **kw):
+        ts = tuple(float(t) for t in torques) or COAST_TORQUES
+        asked.append((flank, pinion_key[:2], ts))
+        curve = COAST_CURVES[(float(case["path_angle"]), round(float(case["ellipse_length"]),
+                                                               9))]
+        m = {k: np.resize(v, len(ts)) for k, v in _metrics(edge_load_share=[0.0, 0.0]).items()}
+        m["lte_peak_to_peak"] = np.interp(ts, COAST_GRID, curve)
+        return m, (0.0, 1.0, 0.0, 1.0, 2400.0)
+
+    seen, fake = seen_designs(law)
+    targets, setup, chosen = stand_in(monkeypatch, fake, COAST_TORQUES)
+    start = chosen(dict(COAST_WRITTEN))
+    start = dataclasses.replace(start, case=dict(start.values))
+    assert max(start.metrics["lte_peak_to_peak"]) <= 60.0  # within at both torques
+    asked.clear()
+    seen.clear()
+    lines: list[str] = []
+    prefix = ("drive bearing", "coast")
+    got = dcs.checked_coast_lte(start, targets, setup, None, lines.append,
+                                lambda v: dict(v), key_prefix=prefix)
+    # every analysis on the coast flank, under the coast design's kept pinion tooth
+    assert {(f, k) for f, k, _ in asked} == {("coast", prefix)}
+    # the two torques between analysed, then the crossing's interval bisected
+    assert asked[0][2] == pytest.approx(COAST_GRID[1:3])
+    assert "its LTE p-p 80.8 urad at 368.3 N m, between the light and the design torque" \
+        in lines[0]
+    tried = [(s["path_angle"], s["ellipse_length"]) for s in seen if s != COAST_WRITTEN]
+    assert list(dict.fromkeys(tried)) == [(-45.0, 0.6), (-30.0, 0.5)]
+    assert got.values == COAST_WRITTEN | {"path_angle": -30.0}
+    assert drl.range_peak(drl.range_lte(got, setup, None, flank="coast",
+                                        key_prefix=prefix))[0] == pytest.approx(57.0)
+    # within the limit between the torques too: returned as it is
+    seen.clear()
+    assert dcs.checked_coast_lte(got, targets, setup, None, [].append, lambda v: dict(v),
+                                 key_prefix=prefix) is got
+    assert seen == []  # its analyses between the torques kept (the setup's memo)

@@ -46,6 +46,7 @@ from contact.optimize.development_relief_lte import checked_relief_variants
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import DevelopmentTargets
 from geometry.case import Case
+from geometry.core.text import plain_number
 from geometry.synthesis.basic_design import BasicDesign, with_flank_options
 
 __all__ = ["STAGE", "checked_coast_edge_peak", "coast_edge_bound", "coast_edge_peak",
@@ -194,7 +195,7 @@ def coast_edge_peak(developed: BasicDesign, drive: DevelopmentEvaluation,
         bound = float(old.metrics["edge_static_strength"][-1])
     above = ", ".join(f"{k} {p:.0f} MPa" for k, p in edges_above(old).items())
     say(f"development: coast flank's edges above the static strength at "
-        f"{coast.torques[1]:.4g} N m ({above}): their relief, the flank peak bound "
+        f"{plain_number(coast.torques[1])} N m ({above}): their relief, the flank peak bound "
         f"{bound:.0f} MPa")
 
     def placed(values):

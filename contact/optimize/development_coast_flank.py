@@ -243,7 +243,8 @@ def coast_flank_capacity(case: Case, basic: BasicDesign, coast: _CoastOutcome,
         check = _coast_check(decided_case(case, setup), basic, setup, torque, root_stress,
                              targets.max_plastic_share)
         if "root" in check.failures and refined_for_root(
-                decided_case(case, setup), setup, f"coast design torque ({torque:.4g} N m)",
+                decided_case(case, setup), setup,
+                f"coast design torque ({plain_number(torque)} N m)",
                 check.root_safety, check.s_min, say) is not None:
             # a coarse level's failing root check: the coast torque decided on the default
             check = _coast_check(decided_case(case, setup), basic, setup, torque,

@@ -34,6 +34,7 @@ from contact.optimize.development_targets import TE_NAME, DevelopmentTargets
 from contact.optimize.development_variant import check_rank as _check_rank
 from contact.optimize.development_variant import said_variant as _said_variant
 from geometry.case import Case
+from geometry.core.text import plain_number
 
 #: the coast check's steps (:func:`checked_coast_lte`), each a change of one prescription
 #: [file units] from the design kept so far, tried in turn while its LTE exceeds the
@@ -69,8 +70,14 @@ def checked_coast_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     :func:`contact.optimize.development_coast_flank.pitting_pressure`): the coast design
     torque, set afterwards by the coast flank's capacity, is not given up for it.
     ``lte_limit`` [µrad]: the verdict's ``lte`` limit (default
-    :data:`contact.study.verdicts.LTE_LIMIT`, 60 µrad); a design within it at every torque
-    is returned as it is, without an analysis. ``key_prefix``: the kept pinion tooth's key
+    :data:`contact.study.verdicts.LTE_LIMIT`, 60 µrad); a design within it at its light and
+    design torque is judged between them as ``ltca run --flank coast`` judges it
+    (:func:`~contact.optimize.development_range_lte.range_lte` on the coast flank: its
+    ``lte_range`` torques, the crossing bisected) and returned as it is where it keeps the
+    limit there too; where it exceeds it there alone, the steps below act on that peak,
+    each design judged on its largest LTE over the range
+    (:func:`~contact.optimize.development_range_lte.range_better`, as the drive's last
+    check step). ``key_prefix``: the kept pinion tooth's key
     before the design's bearing (:func:`checked_best`). Last, where the LTE still exceeds
     the limit at the design torque, the TE level raised back towards ``level`` (the coast
     flank's own ``te_level`` [µrad]; :func:`checked_coast_te`); then, where it exceeds
@@ -103,13 +110,34 @@ def checked_coast_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     path −58.75°, ellipse 0.4, tip relief from 0.5: LTE 111 / 68 µrad, 1389 MPa); ellipse
     0.7 with the tip relief from 0.85: 54 / 38 µrad, 1079 MPa, pattern 0.60 long, no edge
     (``python -m contact run --flank coast`` on the case edited by hand, 2026-11-26)."""
+    from contact.optimize.development_range_lte import range_better, range_lte, range_peak
     from contact.study.verdicts import LTE_LIMIT
 
     limit = LTE_LIMIT if lte_limit is None else float(lte_limit)
     entered = best
+
+    def between(e: DevelopmentEvaluation) -> float:  # its largest LTE over ltca run's range
+        return range_peak(range_lte(e, setup, teeth, flank="coast", key_prefix=key_prefix))[0]
+
+    def above(e: DevelopmentEvaluation) -> bool:  # at its own torques, else between them
+        return bool(np.nanmax(e.metrics["lte_peak_to_peak"]) > limit or between(e) > limit)
+
+    # above the limit between the torques alone: each step judged on the LTE over the range
+    # (as the drive's, development_range_lte.checked_range_lte)
+    better = (range_better(setup, teeth, limit, flank="coast", key_prefix=key_prefix)
+              if best.checked_full
+              and not np.nanmax(best.metrics["lte_peak_to_peak"]) > limit else None)
+    if better is not None and above(best):
+        found = range_lte(best, setup, teeth, flank="coast", key_prefix=key_prefix)
+        peak, at = range_peak(found)
+        say(f"  coast design {best.index + 1}: its LTE p-p {peak:.1f} urad at "
+            f"{plain_number(at)} N m, "
+            f"between the light and the design torque, is above {limit:g} urad (LTE p-p "
+            f"{' / '.join(f'{x:.0f}' for x in found[1])} urad at "
+            f"{' / '.join(plain_number(t) for t in found[0])} N m, ltca run's lte_range "
+            "torques)")
     for changes in (*(((n, s),) for n, s in COAST_LTE_STEPS), COAST_TIP_START_STEP):
-        if (not best.checked_full
-                or not np.nanmax(best.metrics["lte_peak_to_peak"]) > limit):
+        if not best.checked_full or not above(best):
             return (best if best is entered else
                     checked_coast_lighter_relief(best, targets, setup, teeth, say, placed,
                                                  key_prefix=key_prefix))
@@ -123,7 +151,7 @@ def checked_coast_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                           setup, teeth, say, placed, flank="coast", key_prefix=key_prefix)
         if e is None:
             continue
-        if _coast_kept(best, e, targets, name, say):
+        if _coast_kept(best, e, targets, name, say, better=better):
             best = e
     best = checked_coast_te(best, targets, setup, teeth, say, placed, key_prefix=key_prefix,
                             limit=limit, level=level)
@@ -334,7 +362,9 @@ def _coast_step_values(values: Mapping[str, float], targets: DevelopmentTargets,
 
 
 def _coast_kept(best: DevelopmentEvaluation, e: DevelopmentEvaluation,
-                targets: DevelopmentTargets, name: str, say: Callable[[str], None]) -> bool:
+                targets: DevelopmentTargets, name: str, say: Callable[[str], None],
+                better: Callable[[DevelopmentEvaluation, DevelopmentEvaluation], bool]
+                | None = None) -> bool:
     """Whether a coast LTE step's design ``e`` replaces ``best``, on the check steps' one
     keep rule (:func:`~contact.optimize.development_keep.kept_why`, its mounting tolerance
     not asked: the tolerance is the drive flank's): ``ltca run``'s verdict first
@@ -357,8 +387,9 @@ def _coast_kept(best: DevelopmentEvaluation, e: DevelopmentEvaluation,
         raised = _pressure_raised(best, e, targets)
         return _lost_but_length(best, e) + ([raised] if raised else [])
 
+    rank = {} if better is None else {"better": better}
     return not _kept_why(best, e, targets, {}, None, say, f"the {name} step", lost=lost,
-                         tolerant=False)
+                         tolerant=False, **rank)
 
 
 def _limit_rank(e: DevelopmentEvaluation, limit: float) -> tuple[bool, bool, float]:

@@ -102,9 +102,10 @@ def _limit() -> float:
 
 
 def range_lte(e: DevelopmentEvaluation, setup: Mapping[str, Any], teeth: KeptTeeth | None,
-              n: int = LTE_TORQUES) -> tuple[tuple[float, ...], tuple[float, ...]] | None:
-    """A checked drive design's LTE p-p at the torques ``ltca run``'s ``lte_range`` step
-    judges a case analysed at the development's light and design torque.
+              n: int = LTE_TORQUES, *, flank: str = "drive", key_prefix: tuple | None = None
+              ) -> tuple[tuple[float, ...], tuple[float, ...]] | None:
+    """A checked design's LTE p-p on ``flank`` at the torques ``ltca run``'s ``lte_range``
+    step judges a case analysed at the development's light and design torque.
 
     Parameters
     ----------
@@ -120,6 +121,15 @@ def range_lte(e: DevelopmentEvaluation, setup: Mapping[str, Any], teeth: KeptTee
     n : int, optional
         :func:`~contact.ltca.lte_range.lte_range_torques`' ``n`` (default
         :data:`~contact.ltca.lte_range.LTE_TORQUES`).
+    flank : {"drive", "coast"}, optional
+        The flank ``e`` was checked on (default the drive's; the coast LTE steps',
+        :func:`~contact.optimize.development_coast_steps.checked_coast_lte`, judge the
+        coast flank's).
+    key_prefix : tuple, optional
+        The kept pinion tooth's key before the design's bearing, as the check step that
+        analysed ``e`` gave it (:func:`~contact.optimize.development_variant.said_variant`;
+        the coast flank's: the drive bearing's and ``"coast"``); default the design's
+        bearing alone (the drive flank's).
 
     Returns
     -------
@@ -148,14 +158,15 @@ def range_lte(e: DevelopmentEvaluation, setup: Mapping[str, Any], teeth: KeptTee
     own = dict(zip((light, design), lte_ends(e), strict=True))
     memo = setup.setdefault(_MEMO, {}) if isinstance(setup, dict) else {}
     key = (tuple((k, float(v)) for k, v in sorted(e.values.items())), light, design, int(n),
-           id(teeth))
+           id(teeth), flank, key_prefix)
     if key in memo:
         return memo[key]
-    pinion = bearing_key(e.values)
+    pinion = bearing_key(e.values) if key_prefix is None else (*key_prefix,
+                                                               *bearing_key(e.values))
 
     def analyse(torques: list[float]) -> list[float]:
         ms, _ = evaluation.analyse_design(e.case, list(torques), options=CHECK_LTCA,
-                                          teeth=teeth, pinion_key=pinion)
+                                          teeth=teeth, pinion_key=pinion, flank=flank)
         lte = np.asarray(ms["lte_peak_to_peak"], float).ravel()
         if lte.shape != (len(torques),):
             raise ValueError(f"{lte.size} LTE values at {len(torques)} torques")
@@ -210,7 +221,8 @@ def range_peak(found: tuple[tuple[float, ...], tuple[float, ...]] | None
 
 
 def range_better(setup: Mapping[str, Any], teeth: KeptTeeth | None,
-                 limit: float | None = None
+                 limit: float | None = None, *, flank: str = "drive",
+                 key_prefix: tuple | None = None
                  ) -> Callable[[DevelopmentEvaluation, DevelopmentEvaluation], bool]:
     """The ``better`` of the check's keep rule
     (:func:`~contact.optimize.development_keep.kept_why`) for a step acting on an LTE peak
@@ -225,6 +237,8 @@ def range_better(setup: Mapping[str, Any], teeth: KeptTeeth | None,
         The kept shell teeth.
     limit : float, optional — [µrad]
         Default ``ltca run``'s verdict limit (:data:`contact.study.verdicts.LTE_LIMIT`).
+    flank, key_prefix : optional
+        :func:`range_lte`'s (default the drive flank's).
 
     Returns
     -------
@@ -250,8 +264,8 @@ def range_better(setup: Mapping[str, Any], teeth: KeptTeeth | None,
     cap = _limit() if limit is None else float(limit)
 
     def better(best: DevelopmentEvaluation, e: DevelopmentEvaluation) -> bool:
-        old, _ = range_peak(range_lte(best, setup, teeth))
-        new, _ = range_peak(range_lte(e, setup, teeth))
+        old, _ = range_peak(range_lte(best, setup, teeth, flank=flank, key_prefix=key_prefix))
+        new, _ = range_peak(range_lte(e, setup, teeth, flank=flank, key_prefix=key_prefix))
         if not math.isfinite(new):
             return False
         if math.isfinite(old) and old > cap:

@@ -506,7 +506,7 @@ def root_capacity(case, setup: dict[str, Any], light_load: float,
         safe = _safeties(_root_tree(case, torques))
         if "root" in safe:  # a coarse level's failing root check: decided on the default
             s, s_min, _ = safe["root"]
-            finer = refined_for_root(case, setup, f"design torque {torque:.4g} N m",
+            finer = refined_for_root(case, setup, f"design torque {plain_number(torque)} N m",
                                      float(s[-1]), s_min, say)
             if finer is not None:
                 case, safe = finer, _safeties(_root_tree(finer, torques))
