@@ -42,9 +42,11 @@ from contact.optimize.development_edge_peak import (
     pitting_lost,
 )
 from contact.optimize.development_evaluate import KeptTeeth, bearing_key
+from contact.optimize.development_range_lte import range_lte, range_peak
 from contact.optimize.development_relief_lte import checked_relief_variants
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import DevelopmentTargets
+from contact.study.verdicts import LTE_LIMIT
 from geometry.case import Case
 from geometry.core.text import plain_number
 from geometry.synthesis.basic_design import BasicDesign, with_flank_options
@@ -137,7 +139,22 @@ def checked_coast_edge_peak(best: DevelopmentEvaluation, targets: DevelopmentTar
     """
     if not edge_peak_runs_on(best, targets):
         return best
-    relief = dataclasses.replace(EDGE_PEAK, stage=STAGE, lost=pitting_lost(bound))
+    pitting = pitting_lost(bound)
+
+    def lost(kept: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:
+        # a relief variant judged on its coast LTE between the torques too, as ltca run
+        # --flank coast's lte_range step judges it: the e-axle 11x39 Σ 80°'s gear-toe
+        # variant (ellipse 0.425) held 55/56 urad at its two torques and 60.6 between
+        gone = pitting(kept, e)
+        peak = range_peak(range_lte(e, setup, teeth, flank="coast", key_prefix=key_prefix))[0]
+        if peak > LTE_LIMIT:
+            was = range_peak(range_lte(kept, setup, teeth, flank="coast",
+                                       key_prefix=key_prefix))[0]
+            if not was > LTE_LIMIT:
+                gone = [*gone, f"LTE p-p {peak:.1f} urad between the torques"]
+        return gone
+
+    relief = dataclasses.replace(EDGE_PEAK, stage=STAGE, lost=lost)
     return checked_relief_variants(best, targets, setup, teeth, say, placed,
                                    reliefs=(relief,), eps=(math.nan, math.nan),
                                    flank="coast", key_prefix=key_prefix, tolerant=False)
