@@ -585,8 +585,8 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                     coast, developed, case, report = held
                     _both_flanks_built(case, root_stress, built, say)
             # the coast LTE steps again where its torque was lowered after them
-            side = "convex" if developed.options.drive_flank == "concave" else "concave"
-            level = flank_option_values(pre_coast.options.flank(side)).get(TE_NAME)
+            level = flank_option_values(
+                pre_coast.options.flank(coast_flank.coast_side(developed))).get(TE_NAME)
             lte = coast_flank.coast_lte_at_its_torques(
                 developed, best, targets, setup, teeth, memo, say, coast, coast_cap,
                 coast_setup["torques"][1], level)

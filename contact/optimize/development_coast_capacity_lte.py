@@ -36,10 +36,14 @@ from typing import Any
 import numpy as np
 
 from contact.optimize.development_coast import CoastCapacity
-from contact.optimize.development_coast_flank import coast_flank_capacity, pitting_pressure
+from contact.optimize.development_coast_flank import (
+    coast_flank_capacity,
+    pitting_pressure,
+    written_coast,
+)
 from contact.optimize.development_coast_steps import COAST_LIGHTER_RELIEF_STEPS
 from contact.optimize.development_deflection import within_torque
-from contact.optimize.development_evaluate import KeptTeeth, bearing_key
+from contact.optimize.development_evaluate import KeptTeeth
 from contact.optimize.development_keep import lost_targets
 from contact.optimize.development_pattern_steps import (
     CENTRE_U_SLOPE,
@@ -51,7 +55,7 @@ from contact.optimize.development_targets import DevelopmentTargets
 from contact.optimize.development_variant import changed_values, lte_fails, said_variant
 from geometry.case import Case
 from geometry.core.text import plain_number
-from geometry.synthesis.basic_design import BasicDesign, with_flank_options
+from geometry.synthesis.basic_design import BasicDesign
 
 log = logging.getLogger("contact.optimize.development")
 
@@ -422,7 +426,6 @@ def coast_lte_within_capacity(developed: BasicDesign, drive: DevelopmentEvaluati
     Source: issue 71; docs/synthesis.md, "The coast LTE within the flank's capacity".
     """
     from contact.study.verdicts import LTE_LIMIT
-    from geometry.synthesis.case_synthesis import synthesize
 
     old = coast.best if coast is not None else None
     final = cap.final if cap is not None else None
@@ -430,20 +433,15 @@ def coast_lte_within_capacity(developed: BasicDesign, drive: DevelopmentEvaluati
             or final is None or targets.coast_max_evaluations == 0
             or not float(np.nanmax(old.metrics["lte_peak_to_peak"])) > LTE_LIMIT):
         return None
-    side = "convex" if developed.options.drive_flank == "concave" else "concave"
     static = float(final.limit)
     say(f"development: coast flank LTE p-p {np.nanmax(old.metrics['lte_peak_to_peak']):.0f}"
         f" urad at {plain_number(coast.torques[0])}/{plain_number(coast.torques[1])} N m after "
         f"its LTE steps: bearings whose peak may rise up to the static strength {static:.0f} MPa")
-
-    def placed(values):
-        return synthesize(with_flank_options(developed, side, values), memo=memo)[0]
-
+    written = written_coast(developed, drive, memo)
     near: list[DevelopmentEvaluation] = []
     got = checked_coast_capacity_lte(old, targets, dict(setup, torques=list(coast.torques)),
-                                     teeth, say, placed, static=static,
-                                     key_prefix=(*bearing_key(drive.values), "coast"),
-                                     near=near)
+                                     teeth, say, written.placed, static=static,
+                                     key_prefix=written.key_prefix, near=near)
     if got is old:
         if not near or not lte_fails(old):
             return None
@@ -462,8 +460,7 @@ def coast_lte_within_capacity(developed: BasicDesign, drive: DevelopmentEvaluati
     text = capacity_text(got, cap, float(coast.torques[1]))
     if text:
         say(f"development: coast flank {text}")
-    return (coast._replace(basic=with_flank_options(developed, side, got.values), best=got),
-            text)
+    return written.outcome(coast, got), text
 
 
 def capacity_text(e: DevelopmentEvaluation, cap: CoastCapacity, torque: float) -> str:

@@ -34,14 +34,14 @@ from collections.abc import Callable, Mapping
 from typing import Any
 
 from contact.optimize.development_coast import CoastCapacity
-from contact.optimize.development_coast_flank import pitting_pressure
+from contact.optimize.development_coast_flank import pitting_pressure, written_coast
 from contact.optimize.development_edge_peak import (
     EDGE_PEAK,
     edge_peak_runs_on,
     edges_above,
     pitting_lost,
 )
-from contact.optimize.development_evaluate import KeptTeeth, bearing_key
+from contact.optimize.development_evaluate import KeptTeeth
 from contact.optimize.development_range_lte import range_lte, range_peak
 from contact.optimize.development_relief_lte import checked_relief_variants
 from contact.optimize.development_result import DevelopmentEvaluation
@@ -49,7 +49,7 @@ from contact.optimize.development_targets import DevelopmentTargets
 from contact.study.verdicts import LTE_LIMIT
 from geometry.case import Case
 from geometry.core.text import plain_number
-from geometry.synthesis.basic_design import BasicDesign, with_flank_options
+from geometry.synthesis.basic_design import BasicDesign
 
 __all__ = ["STAGE", "checked_coast_edge_peak", "coast_edge_bound", "coast_edge_peak",
            "holds_as_before"]
@@ -199,13 +199,11 @@ def coast_edge_peak(developed: BasicDesign, drive: DevelopmentEvaluation,
     -----
     Source: issue 71; docs/synthesis.md, "The coast edge peak at its design torque".
     """
-    from geometry.synthesis.case_synthesis import synthesize
 
     old = coast.best if coast is not None else None
     if (old is None or not old.checked_full or len(coast.torques) != 2
             or targets.coast_max_evaluations == 0 or not edge_peak_runs_on(old, targets)):
         return None
-    side = "convex" if developed.options.drive_flank == "concave" else "concave"
     bound = coast_edge_bound(cap)
     if not math.isfinite(bound):  # no capacity search (a coast design torque given): the
         # flank's static strength, the verdict's FAIL limit
@@ -214,16 +212,13 @@ def coast_edge_peak(developed: BasicDesign, drive: DevelopmentEvaluation,
     say(f"development: coast flank's edges above the static strength at "
         f"{plain_number(coast.torques[1])} N m ({above}): their relief, the flank peak bound "
         f"{bound:.0f} MPa")
-
-    def placed(values):
-        return synthesize(with_flank_options(developed, side, values), memo=memo)[0]
-
+    written = written_coast(developed, drive, memo)
     got = checked_coast_edge_peak(old, targets, dict(setup, torques=list(coast.torques)),
-                                  teeth, say, placed, bound=bound,
-                                  key_prefix=(*bearing_key(drive.values), "coast"))
+                                  teeth, say, written.placed, bound=bound,
+                                  key_prefix=written.key_prefix)
     if got is old:
         return None
-    return coast._replace(basic=with_flank_options(developed, side, got.values), best=got)
+    return written.outcome(coast, got)
 
 
 def holds_as_before(after: CoastCapacity | None, before: CoastCapacity | None) -> bool:

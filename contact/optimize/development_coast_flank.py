@@ -272,6 +272,87 @@ def coast_flank_capacity(case: Case, basic: BasicDesign, coast: _CoastOutcome,
     return coast._replace(best=best, torques=torques), cap
 
 
+def coast_side(basic: BasicDesign) -> str:
+    """The pinion flank side of the coast flank: ``"convex"`` where the drive flank is the
+    concave, else ``"concave"``.
+
+    Parameters
+    ----------
+    basic : BasicDesign
+        Its ``options.drive_flank``.
+
+    Returns
+    -------
+    str
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: the seed's convention of the pinion's concave (drive) and convex (coast) flank
+    of a left-hand pinion; geometry.synthesis.basic_design's flank options.
+    """
+    return "convex" if basic.options.drive_flank == "concave" else "concave"
+
+
+class WrittenCoast(NamedTuple):
+    """The coast flank of a written basic design as a step after the coast development
+    varies it (:func:`written_coast`): the basic design, its coast side
+    (:func:`coast_side`), ``placed`` (coast prescriptions → the case synthesised, with the
+    development's memo) and the coast's kept-teeth key prefix (the drive bearing's key and
+    ``"coast"``)."""
+
+    basic: BasicDesign
+    side: str
+    placed: Callable[[dict], Case]
+    key_prefix: tuple
+
+    def outcome(self, coast: Any, got: DevelopmentEvaluation) -> Any:
+        """``coast`` (a coast outcome) with the design ``got`` kept: its ``basic`` carrying
+        ``got``'s coast prescriptions, its ``best`` ``got``."""
+        return coast._replace(basic=with_flank_options(self.basic, self.side, got.values),
+                              best=got)
+
+
+def written_coast(developed: BasicDesign, drive: DevelopmentEvaluation,
+                  memo: dict) -> WrittenCoast:
+    """What a step on the written case's coast flank needs to vary it
+    (:func:`coast_lte_at_its_torques`, :func:`coast_peak_relief`, the coast LTE within
+    the flank's capacity, the coast edge peak).
+
+    Parameters
+    ----------
+    developed : BasicDesign
+        The basic design written (both flanks' prescriptions).
+    drive : DevelopmentEvaluation
+        The drive design written (its bearing keys the kept pinion teeth).
+    memo : dict
+        The development's synthesis memo.
+
+    Returns
+    -------
+    WrittenCoast
+
+    Raises
+    ------
+    Nothing (the synthesis raises where ``placed`` is called).
+
+    Notes
+    -----
+    Source: issue 71 (the coast flank developed on the drive's targets).
+    """
+    from geometry.synthesis.case_synthesis import synthesize
+
+    side = coast_side(developed)
+
+    def placed(values: dict) -> Case:
+        return synthesize(with_flank_options(developed, side, values), memo=memo)[0]
+
+    return WrittenCoast(developed, side, placed, (*bearing_key(drive.values), "coast"))
+
+
 class _CoastOutcome(NamedTuple):
     """What :func:`coast_development` did: the basic design with the chosen coast
     prescriptions, the chosen coast design (None where its analysis failed), the designs
@@ -308,7 +389,7 @@ def coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
     chosen one is the case written, bit for bit."""
     from geometry.synthesis.case_synthesis import synthesize
 
-    side = "convex" if developed.options.drive_flank == "concave" else "concave"
+    side = coast_side(developed)
     start = flank_option_values(developed.options.flank(side))
     drive_key = bearing_key(drive.values)
     torques = tuple(setup["torques"])  # the coast side's own light and design torque
@@ -538,7 +619,6 @@ def coast_lte_at_its_torques(developed: BasicDesign, drive: DevelopmentEvaluatio
     coast LTE p-p was 111 / 68 µrad (1389 MPa), with the ellipse 0.7 and the tip relief
     from 0.85 54 / 38 µrad (1079 MPa)."""
     from contact.study.verdicts import LTE_LIMIT
-    from geometry.synthesis.case_synthesis import synthesize
 
     old = coast.best
     if (old is None or not old.checked_full or len(coast.torques) != 2
@@ -551,22 +631,16 @@ def coast_lte_at_its_torques(developed: BasicDesign, drive: DevelopmentEvaluatio
         held = (targets.max_flank_pressure if targets.max_flank_pressure is not None
                 else setup.get("pressure_limit", math.inf))
         targets = dataclasses.replace(targets, max_flank_pressure=float(min(held, limit)))
-    side = "convex" if developed.options.drive_flank == "concave" else "concave"
-    base = developed
     say(f"development: coast flank LTE p-p "
         f"{np.nanmax(old.metrics['lte_peak_to_peak']):.0f} urad at its own torques "
         f"{plain_number(coast.torques[0])}/{plain_number(coast.torques[1])} N m (its LTE steps "
         f"ran at {plain_number(developed_at)} N m): the coast LTE steps there")
-
-    def placed(values):
-        return synthesize(with_flank_options(base, side, values), memo=memo)[0]
-
+    written = written_coast(developed, drive, memo)
     got = checked_coast_lte(old, targets, dict(setup, torques=list(coast.torques)), teeth,
-                            say, placed, key_prefix=(*bearing_key(drive.values), "coast"),
-                            level=level)
+                            say, written.placed, key_prefix=written.key_prefix, level=level)
     if got is old:
         return None
-    return coast._replace(basic=with_flank_options(base, side, got.values), best=got)
+    return written.outcome(coast, got)
 
 
 def coast_peak_relief(developed: BasicDesign, drive: DevelopmentEvaluation,
@@ -592,28 +666,23 @@ def coast_peak_relief(developed: BasicDesign, drive: DevelopmentEvaluation,
     pinion's local pitting safety 0.87 at 76.4 N m under a 51 µm tip relief from half-way)."""
     from contact.optimize.development_check import checked_coast_peak
     from contact.study.verdicts import LTE_LIMIT
-    from geometry.synthesis.case_synthesis import synthesize
 
     old = coast.best
-    if (cap is None or not cap.lowered or old is None or old.full is None
-            or not old.checked or targets.coast_max_evaluations == 0):
+    if (cap is None or not cap.lowered or old is None or not old.checked_full
+            or targets.coast_max_evaluations == 0):
         return None
     first = next((c for c in cap.checks if c.torque == cap.start), None)
     if first is None or not {"flank", "pitting"} & set(first.failures):
         return None
-    side = "convex" if developed.options.drive_flank == "concave" else "concave"
     met = {k for k, v in old.full[1].items() if v == 0.0}
     lte = max(LTE_LIMIT, float(np.nanmax(old.metrics["lte_peak_to_peak"])))
     say(f"development: coast flank's peak {first.pressure:.0f} MPa at {plain_number(cap.start)} N "
         f"m set its design torque {plain_number(cap.torque)} N m: a lighter tip relief")
-
-    def placed(values):
-        return synthesize(with_flank_options(developed, side, values), memo=memo)[0]
-
+    written = written_coast(developed, drive, memo)
     got = checked_coast_peak(old, targets, dict(setup, torques=[setup["torques"][0],
                                                                 cap.start]),
-                             teeth, say, placed, peak=first.pressure, met=met, lte=lte,
-                             key_prefix=(*bearing_key(drive.values), "coast"))
+                             teeth, say, written.placed, peak=first.pressure, met=met,
+                             lte=lte, key_prefix=written.key_prefix)
     if got is None:
         return None
-    return coast._replace(basic=with_flank_options(developed, side, got.values), best=got)
+    return written.outcome(coast, got)
