@@ -570,8 +570,9 @@ class EdgePeaks(NamedTuple):
     ``""`` where the dataset has no segments) the peak pressure [MPa] per torque, shape
     (NT,), the ``edge_pressure`` check judges (0 where the kind carries less than
     :data:`EDGE_SHARE_MIN` of the torque or is at the edges' contact-pressure limit);
-    ``static`` the flank's static strength σ_Hlim·Z_NT,static [MPa] of the weaker member
-    it judges them against; ``cap`` the edges' limit [MPa] (NaN: none)."""
+    ``static`` the flank's static strength σ_Hlim·Z_NT,stat·Z_W·Z_X [MPa] of the weaker
+    member it judges them against (:func:`flank_static_strength`); ``cap`` the edges'
+    limit [MPa] (NaN: none)."""
 
     peaks: dict[str, np.ndarray]
     static: float
