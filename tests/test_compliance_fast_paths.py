@@ -732,3 +732,11 @@ def test_pool_of_several_rolls_equals_each_roll_assembled_alone():
         b, db = alone.restricted(j, mask)
         np.testing.assert_allclose(a, b, rtol=1e-12, atol=1e-12 * np.abs(b).max())
         np.testing.assert_allclose(da, db, rtol=1e-12)
+        # the whole pool selected: the pool's own (read-only) matrix, the same as the
+        # gather of a selection that leaves one segment out, on the rows it keeps
+        assert not a.flags.writeable
+        keep = mask.copy()
+        keep.flat[np.flatnonzero(mask)[0]] = False
+        part, dpart = together.restricted(j, keep)
+        np.testing.assert_array_equal(part, a[1:, 1:])
+        np.testing.assert_array_equal(dpart, da[1:])

@@ -80,6 +80,31 @@ def test_contact_problem_fast_path_equals_the_general_one():
     assert s.flags.writeable and R.flags.writeable  # the caller's arrays left alone
 
 
+def test_contact_problem_exactly_symmetric_kept_as_given():
+    """An exactly symmetric compliance (the LTCA's every roll) is kept as it is, copied,
+    instead of symmetrised (issue 75, studypt80): the problem equals the one the
+    symmetrising path makes from it, to the bit, and the caller's matrix stays its own."""
+    C, s, R = _problem_inputs()
+    sym = 0.5 * (C + C.T)
+    assert np.array_equal(sym, sym.T)
+    fast = ContactProblem(sym, s, R, 2.0e5)
+    # the general path: the same matrix as nested lists (converted, then symmetrised)
+    slow = ContactProblem(sym.tolist(), s.tolist(), R.tolist(), 2.0e5)
+    for name in ("compliance", "separation", "moment_arm", "upper_bound"):
+        assert np.array_equal(getattr(fast, name), getattr(slow, name)), name
+    assert np.array_equal(fast.compliance, 0.5 * (sym + sym.T))  # ½(C + Cᵀ) is C
+    assert fast.asymmetry == slow.asymmetry == 0.0 and fast.scale == slow.scale
+    assert fast.compliance is not sym and sym.flags.writeable
+    assert not fast.compliance.flags.writeable
+    # a diagonal changed later (Weber's iterations) as from a symmetrised one
+    d = np.diagonal(sym) * 1.5
+    assert np.array_equal(fast.with_diagonal(d, s).compliance,
+                          slow.with_diagonal(d, s).compliance)
+    # an asymmetric matrix still takes the symmetrising path and reports its asymmetry
+    asym = ContactProblem(C, s, R, 2.0e5)
+    assert asym.asymmetry > 0.0 and np.array_equal(asym.compliance, 0.5 * (C + C.T))
+
+
 @pytest.mark.parametrize("field", ["compliance", "separation", "moment_arm"])
 def test_contact_problem_non_finite_still_named(field):
     C, s, R = _problem_inputs()

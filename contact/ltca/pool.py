@@ -211,15 +211,21 @@ class CompliancePool:
         mats = _checked(self._model_name, jobs, mats)
         for (j, mask), (c_full, info) in zip(jobs, mats, strict=True):
             self._masks[j] = mask
-            self._structural[j] = c_full - info["weber"]
+            structural = c_full - info["weber"]
+            structural.setflags(write=False)  # handed out whole (restricted)
+            self._structural[j] = structural
             self._depth[j] = info["weber_depth"]
             self.time[j] += info["time"]
             self.asymmetry = max(self.asymmetry, float(info["asymmetry"]))
 
     def restricted(self, j: int, selected: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """The structural compliance (N, N) [mm/N] and Weber depths (N, 2) [mm] of the
-        pool's segments ``selected`` (K, S) of roll j (row-major order)."""
-        sub = np.flatnonzero(selected[self._masks[j]])  # the selection's places in the pool
+        pool's segments ``selected`` (K, S) of roll j (row-major order); the compliance
+        read-only (where the whole pool is selected, the pool's own matrix)."""
+        in_pool = selected[self._masks[j]]
+        if in_pool.all():  # the whole pool (most rolls' every round): the matrix itself
+            return self._structural[j], self._depth[j][in_pool]
+        sub = np.flatnonzero(in_pool)  # the selection's places in the pool
         return self._structural[j][np.ix_(sub, sub)], self._depth[j][sub]
 
     def coupling(self, j: int, rows: np.ndarray, columns: np.ndarray) -> np.ndarray:

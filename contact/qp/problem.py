@@ -195,17 +195,26 @@ class ContactProblem:
         norm = np.linalg.norm(C)
         if norm == 0:
             raise NotPositiveDefiniteError("compliance: is the zero matrix, not positive definite")
-        skew = np.linalg.norm(C - C.T)
-        asym = float(skew / norm)
-        if asym > ASYMMETRY_LIMIT:
-            raise AsymmetricComplianceError(
-                f"compliance: relative asymmetry ‖C − Cᵀ‖/‖C‖ = {asym:.3g} exceeds "
-                f"{ASYMMETRY_LIMIT:g}; a compliance matrix is symmetric by Maxwell–Betti "
-                "reciprocity, so this is a modelling error (transposed block, sign, loads "
-                "and deflections along different directions), not round-off")
-        if asym > 0.0:
-            log.debug("compliance: relative asymmetry %.3g, symmetrised", asym)
-        C = 0.5 * (C + C.T)
+        if math.isfinite(norm) and (C == C.T).all():
+            # symmetric to the bit (the LTCA's every roll: its pools are symmetrised when
+            # assembled, issue 75): ‖C − Cᵀ‖ is 0 and ½(C + Cᵀ) is C itself (x + x and
+            # its half are exact below the overflow a finite ‖C‖ excludes), copied as the
+            # symmetric part is a new array: the same problem in one pass instead of four
+            skew, asym = 0.0, 0.0
+            C = C.copy()
+        else:
+            skew = np.linalg.norm(C - C.T)
+            asym = float(skew / norm)
+            if asym > ASYMMETRY_LIMIT:
+                raise AsymmetricComplianceError(
+                    f"compliance: relative asymmetry ‖C − Cᵀ‖/‖C‖ = {asym:.3g} exceeds "
+                    f"{ASYMMETRY_LIMIT:g}; a compliance matrix is symmetric by "
+                    "Maxwell–Betti reciprocity, so this is a modelling error (transposed "
+                    "block, sign, loads and deflections along different directions), not "
+                    "round-off")
+            if asym > 0.0:
+                log.debug("compliance: relative asymmetry %.3g, symmetrised", asym)
+            C = 0.5 * (C + C.T)
         _check_positive_definite(C)
         U = _upper_bound(self.upper_bound, R, T, n)
         bounded = np.isfinite(U)
