@@ -151,7 +151,8 @@ def test_the_remedies_that_pass_come_first_lowest_unloaded_te_first():
 def test_the_lte_diagnosis_names_the_unloaded_te_where_it_sets_the_lte():
     """ute_sets_lte and reach_text: the 8x35 at k_d 2.16 (round 15: unloaded TE p-p 609
     µrad, LTE 605/600 µrad, the development's least 57/80) is said to be set by its
-    unloaded TE, not the contact ratios, with the numbers; a design whose unloaded TE is
+    unloaded TE, not the contact ratios, with the numbers, and — the development's least
+    above the limit too — that none of its designs came within it; a design whose unloaded TE is
     within the limit (the 17x29's stand-in, 45 µrad) or whose light-torque LTE keeps less
     than UTE_KEPT_SHARE of it keeps the contact-ratio statement."""
     from contact.commands.synthesize import reach_text
@@ -173,7 +174,8 @@ def test_the_lte_diagnosis_names_the_unloaded_te_where_it_sets_the_lte():
                    "why": "it misses centre_u", "tried": ()})
     text = reach_text(dev, 60.0, (609.0, 859.0))
     assert text.startswith("; the development's least drive LTE p-p 57/80 urad (design 12 as "
-                           "checked, not written: it misses centre_u); the written drive "
+                           "checked, not written: it misses centre_u): none it checked "
+                           "within 60 urad; the written drive "
                            "flank's unloaded TE p-p is 609 urad (ease-off 859 um), above the "
                            "verdict's 60 urad before any load: that, not the contact ratios, "
                            "sets its LTE p-p 605/600 urad (light/design), and a higher "
@@ -181,6 +183,21 @@ def test_the_lte_diagnosis_names_the_unloaded_te_where_it_sets_the_lte():
                            "prescriptions the development wrote (path_angle -58.8, "
                            "ellipse_length 0.25, te_level 10)")
     assert "only higher contact ratios" not in text
+    # the lever it names untried only where no checked design came within the limit (round
+    # 20b's FH 16x16 at Sigma 60 deg: least 509/197 urad, written 511/315, unloaded TE 622);
+    # a design within it is not said to be missing
+    dev.lte_reach = {"light": 509.0, "design": 197.0, "what": "design 36 with less "
+                     "crowning both ways", "why": "it misses centre_v, edge, length",
+                     "tried": ()}
+    assert reach_text(dev, 60.0, (622.0, 99.0)).startswith(
+        "; the development's least drive LTE p-p 509/197 urad (design 36 with less crowning "
+        "both ways, not written: it misses centre_v, edge, length): none it checked within "
+        "60 urad; the written drive flank's unloaded TE p-p is 622 urad (ease-off 99 um)")
+    dev.lte_reach = {"light": 38.0, "design": 55.0, "what": "design 12 as checked",
+                     "why": "it misses centre_u", "tried": ()}
+    assert reach_text(dev, 60.0, (609.0, 859.0)).startswith(
+        "; the development's least drive LTE p-p 38/55 urad (design 12 as checked, not "
+        "written: it misses centre_u); the written drive flank's unloaded TE p-p is 609")
     # without the step's reach, the statement alone
     dev.lte_reach = None
     assert reach_text(dev, 60.0, (609.0, 859.0)).startswith(

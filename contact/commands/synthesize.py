@@ -257,8 +257,11 @@ def reach_text(development, limit: float,
         that unloaded TE is what the LTE is
         (:func:`contact.optimize.remedy_check.ute_sets_lte`), the statement says so
         instead of naming the contact ratios (the 8x35 at Sigma 85 deg and k_d 2.16 of
-        benchmarks/data/unseen_designs: unloaded TE p-p 609 urad, LTE 605/600 urad).
-        Also said where the step did not run.
+        benchmarks/data/unseen_designs: unloaded TE p-p 609 urad, LTE 605/600 urad),
+        with ": none it checked within <limit> urad" before it where the step's least
+        LTE exceeds ``limit`` too (the prescriptions it names as the lever were then not
+        found by the check: the FH 16x16 at Sigma 60 deg, least 509/197 urad). Also said
+        where the step did not run.
 
     Returns
     -------
@@ -294,11 +297,14 @@ def reach_text(development, limit: float,
     # what sets the LTE: the one statement `ltca run`'s next step makes too
     diagnosis = lte_diagnosis(lte, limit, written_ute,
                               getattr(development.best, "values", None) or {})
+    least = max(reach["light"], reach["design"]) if reach else math.nan
     if diagnosis.cause == "unloaded_te":
-        return said + "; " + diagnosis.text
+        # the lever it names is untried where no checked design came within the limit
+        # (round 20b: the FH 16x16 at Sigma 60 deg, least 509/197 urad, written 511/315)
+        none = f": none it checked within {limit:g} urad" if least > limit else ""
+        return said + none + "; " + diagnosis.text
     if not reach:
         return ""
-    least = max(reach["light"], reach["design"])
     tried = " and ".join(reach.get("tried", ()))
     tried = (f"{tried} tried" if tried else "no flatter profile or deeper TE parabola "
              "left to try")
