@@ -327,7 +327,11 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     the height stage's measured d(centre v)/d(blade angle) per bearing); then the LTE
     judged between the light and the design torque as ``ltca run``'s ``lte_range`` step
     judges it, the path turned towards the profile where it exceeds 60 µrad there alone
-    (:func:`contact.optimize.development_range_lte.checked_range_lte`). Run again where
+    (:func:`contact.optimize.development_range_lte.checked_range_lte`); last, where the
+    design still misses its LTE target at the design torque or that limit between the
+    torques and nothing else, the shallower root relief with a longer ellipse
+    (:func:`contact.optimize.development_relief_ellipse_range.
+    checked_relief_ellipse_range`). Run again where
     the design torque was lowered after them (to the
     bearing's static flank capacity or its FE root-stress capacity): the light torque
     follows the design torque (``light_load`` × it), and the light-load LTE rises as the
@@ -367,9 +371,15 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     best = checked_path_lte(best, targets, setup, teeth, say, placed)
     best = checked_near_miss(best, targets, setup, teeth, say, placed, level,
                              slope=(slopes or {}).get(bearing_key(best.values)))
-    # last, the LTE between the torques as `ltca run`'s lte_range step judges it
+    # the LTE between the torques as `ltca run`'s lte_range step judges it
     from contact.optimize.development_range_lte import checked_range_lte
-    return checked_range_lte(best, targets, setup, teeth, say, placed)
+    best = checked_range_lte(best, targets, setup, teeth, say, placed)
+    # last, the shallower root relief with a longer ellipse for an LTE target or a peak
+    # between the torques still missed (the spiral bevel 27x34 at beta_m 30 deg)
+    from contact.optimize.development_relief_ellipse_range import (
+        checked_relief_ellipse_range,
+    )
+    return checked_relief_ellipse_range(best, targets, setup, teeth, say, placed)
 
 
 def steps_on_each(chosen: DevelopmentEvaluation, others: list[DevelopmentEvaluation],

@@ -28,7 +28,7 @@ over the range keeps the limit, as the long bearing buys the LTE with it). The r
 Public names
 ------------
 RANGE_KEY, STAGE, ELLIPSE_STEPS, range_lte, range_peak, range_better, range_record,
-checked_range_lte
+recorded_range, checked_range_lte
 """
 
 from __future__ import annotations
@@ -59,7 +59,7 @@ from geometry.core.errors import raise_if_interrupted
 from geometry.core.text import plain_number
 
 __all__ = ["ELLIPSE_STEPS", "RANGE_KEY", "STAGE", "checked_range_lte", "range_better",
-           "range_lte", "range_peak", "range_record"]
+           "range_lte", "range_peak", "range_record", "recorded_range"]
 
 log = logging.getLogger("contact.optimize.development")
 
@@ -307,8 +307,31 @@ def range_record(setup: Mapping[str, Any]) -> dict[str, Any] | None:
     return setup.get(RANGE_KEY, {}).get(key) if isinstance(setup, Mapping) else None
 
 
-def _record(setup: Mapping[str, Any], e: DevelopmentEvaluation,
-            found: tuple[tuple[float, ...], tuple[float, ...]]) -> None:
+def recorded_range(setup: Mapping[str, Any], e: DevelopmentEvaluation,
+                   found: tuple[tuple[float, ...], tuple[float, ...]]) -> None:
+    """Record ``found``, the LTE over the range of the design ``e`` a check step keeps
+    (:func:`range_lte`), as the development's record at its torques (:func:`range_record`:
+    what :func:`~contact.optimize.development_lte_capacity.lte_capacity` and ``ltca
+    synthesize``'s note read).
+
+    Parameters
+    ----------
+    setup : mapping
+        The development's state (``torques`` [N·m]); the record is kept in it (a dict;
+        nothing is recorded in another mapping).
+    e : DevelopmentEvaluation
+        The design kept (its ``values`` [file units] recorded with it).
+    found : (tuple of float, tuple of float) — [N·m], [µrad]
+        Its torques and LTE p-p over the range (:func:`range_lte`).
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: ``ltca run``'s ``lte_range`` step (:mod:`contact.ltca.lte_range`, issue 71).
+    """
     if not isinstance(setup, dict):
         return
     peak, at = range_peak(found)
@@ -413,7 +436,7 @@ def checked_range_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     found = range_lte(best, setup, teeth)
     if found is None:
         return best
-    _record(setup, best, found)
+    recorded_range(setup, best, found)
     limit = _limit()
     peak, at = range_peak(found)
     if not peak > limit or not all(x <= limit for x in lte_ends(best)):  # NaN: not run
@@ -428,7 +451,7 @@ def checked_range_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     if kept is not best:
         again = range_lte(kept, setup, teeth)
         if again is not None:
-            _record(setup, kept, again)
+            recorded_range(setup, kept, again)
             say(f"  design {kept.index + 1} kept on its LTE between the torques: "
                 f"{_curve(again)}")
     return kept
