@@ -367,3 +367,85 @@ def _basic():
     from geometry.synthesis.basic_design import load_basic
 
     return load_basic(Path(__file__).parent / "data" / "designs" / "pc_hypoid_10x43.toml")
+
+
+def test_a_given_torque_is_checked_on_the_default_model_not_lowered(monkeypatch):
+    """A design torque the basic file gives is kept, but its root stress is checked as
+    ``ltca run`` judges it (the industrial 19×57 given 0.9 of its ISO capacity, round 20:
+    coarse10's gear S_F,FE 1.28 failed ``ltca run``, the default model reads 1.30).
+    Here coarse10 reads c = 5.0 at 100 N·m (S_F,FE 1.1995 < 1.3), the default model 4.4
+    (824.67/(440·1.25·1.1) = 1.363): checked again on the default model, one default build
+    of both flanks, the torque not lowered, nothing to note, and the case written names
+    the default model (:func:`~contact.optimize.development_root.at_decided_level`)."""
+    from development_stand_ins import counted_builds
+
+    from contact.compliance.fe.options import fe_level_of
+
+    builds = counted_builds(monkeypatch)
+    seen: list[str] = []
+    monkeypatch.setattr(dr, "_root_tree", _levelled((5.0, 4.0), (4.4, 3.0), seen))
+    setup = {"torques": [15.0, 100.0], "source": "[synthesis] design_torque of the basic file"}
+    lines: list[str] = []
+    case = _coarse_case()
+    s, text = dr.given_torque_root(case, setup, lines.append)
+    assert text == "" and setup["torques"] == [15.0, 100.0] and "lowered" not in setup
+    assert s == pytest.approx(FP / (440.0 * K_A * 1.1), rel=1e-12)
+    assert seen == ["coarse10", "default"] and builds == ["default"]
+    assert "root stress limits the given design torque 100 N m: checked on the default FE" \
+        in setup["fe_level_why"]
+    assert any("at the given design torque 100 N m S_F,FE 1.36 (pinion) >= 1.3" in line
+               for line in lines)
+    written, _ = dr.at_decided_level(case, _basic(), setup)
+    assert fe_level_of(written) == "default"
+
+
+def test_a_given_torque_above_the_root_capacity_is_said_not_lowered(monkeypatch):
+    """Both models fail at the given 100 N·m (coarse10 c = 5.5, the default 5.0: S_F,FE
+    1.1995 on the default model, K_v = 1 + 10/T). The torque stays 100 N·m; the sentence
+    gives the default model's S_F,FE, that ``ltca run`` rates it FAIL, and the estimate
+    T (0.99 S/S_min)^(1/b) with b measured between 15 and 100 N·m: S_F,FE(15) =
+    824.67/(75·1.25·(1+10/15)) = 5.278, b = ln(5.278/1.1995)/ln(100/15) = 0.781, bounded
+    to [0.3, 1]; 100·(0.99·1.1995/1.3)^(1/0.781) = 89.06 N·m, 89.0 (floor_torque)."""
+    from development_stand_ins import counted_builds
+
+    builds = counted_builds(monkeypatch)
+    seen: list[str] = []
+    monkeypatch.setattr(dr, "_root_tree", _levelled((5.5, 4.0), (5.0, 4.0), seen))
+    setup = {"torques": [15.0, 100.0], "source": "[synthesis] design_torque of the basic file"}
+    lines: list[str] = []
+    s, text = dr.given_torque_root(_coarse_case(), setup, lines.append)
+    assert setup["torques"] == [15.0, 100.0] and "lowered" not in setup
+    assert seen == ["coarse10", "default"] and builds == ["default"]
+    s15 = FP / (15.0 * 5.0 * K_A * (1.0 + 10.0 / 15.0))
+    assert s == pytest.approx(FP / (500.0 * K_A * 1.1), rel=1e-12)
+    b = math.log(s15 / s) / math.log(100.0 / 15.0)
+    holds = dr.root_capacity_step(100.0, s, 1.3, exponent=b)
+    assert holds == 89.0
+    assert ("the design torque 100 N m the basic file gives is above the developed "
+            "bearing's root-stress capacity: its FE root stress gives S_F,FE 1.20 (pinion) "
+            "below S_Fmin 1.3 there, which `ltca run` rates FAIL; about "
+            f"{holds:g} N m would hold") in text and f"b = {b:.2f}" in text
+    assert any(text in line for line in lines)
+
+
+def test_a_given_torque_that_holds_builds_no_default_model(monkeypatch):
+    """coarse10 holds at the given torque (c = 3: S_F,FE 1.999): no default build, the
+    level kept; an analysis that fails is said, never raised (S_F,FE NaN)."""
+    from development_stand_ins import counted_builds
+
+    builds = counted_builds(monkeypatch)
+    seen: list[str] = []
+    monkeypatch.setattr(dr, "_root_tree", _levelled((3.0, 2.0), (2.9, 2.0), seen))
+    setup = {"torques": [15.0, 100.0]}
+    s, text = dr.given_torque_root(_coarse_case(), setup, lambda line: None)
+    assert text == "" and s == pytest.approx(FP / (300.0 * K_A * 1.1), rel=1e-12)
+    assert seen == ["coarse10"] and builds == [] and "fe_level" not in setup
+
+    def broken(case, torques):
+        raise RuntimeError("FE model not built")
+
+    monkeypatch.setattr(dr, "_root_tree", broken)
+    lines: list[str] = []
+    s, text = dr.given_torque_root(_coarse_case(), setup, lines.append)
+    assert math.isnan(s) and text == ""
+    assert any("not checked (FE model not built)" in line for line in lines)

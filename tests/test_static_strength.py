@@ -29,7 +29,12 @@ from contact.catalogue import resolve_case
 from contact.load_capacity.durability import static_contact_strength, weaker_static_strength
 from contact.ltca import LTCAOptions
 from contact.ltca.summary import edge_load_share, flank_peak
-from contact.study.duty_cycle import DutyInputs, bin_envelopes, duty_cycle_result
+from contact.study.duty_cycle import (
+    DutyInputs,
+    bin_envelopes,
+    duty_cycle_result,
+    judged_edge_peak,
+)
 from contact.study.duty_cycle_inputs import DutyCycle
 from contact.study.verdicts import EDGE_SHARE_MIN, flank_static_strength, verdict
 
@@ -125,6 +130,7 @@ def _cycle(case, lt: xr.Dataset) -> xr.Dataset:
         {"lte_mean": (one, [10.0]), "lte_peak_to_peak": (one, [5.0]),
          "pressure_max_flank": (one, fp.dataset),
          "pressure_max_edge": (one, lt["pressure_max_edge"].values),
+         "edge_peak_pressure": (one, [judged_edge_peak(lt)]),
          "flank_peak_pressure": (one, fp.pressure),
          "flank_corner_curves": (one, fp.corner_curves),
          "edge_load_share": (one, edge_load_share(lt)), "plastic_load_share": (one, [0.0]),
@@ -181,3 +187,59 @@ def test_ltca_run_and_a_one_bin_duty_cycle_judge_one_strength(case, ratio):
         assert "static strength 2400 MPa" in duty_edge[0].reason
         assert "static strength 2400 MPa" in run_edge[0].reason
         assert (run.severity, duty.severity) == ("fail", "fail")
+
+
+def _mesh_with_a_trace_edge(p_edge: float, p_trace: float) -> xr.Dataset:
+    """:func:`_mesh` at a flank peak of 1500 MPa with a sixth segment, a gear-heel edge at
+    ``p_trace`` carrying 0.1 N (of 400.1 N with unit arms: 0.025 % of the torque, below
+    EDGE_SHARE_MIN, 0.05 %) on the heel-root node; the dataset's ``pressure_max_edge`` the
+    peak over both edges."""
+    lt = _mesh(1500.0, p_edge)
+    dims = ("torque", "roll", "pair", "segment")
+
+    def grown(name, value):
+        a = lt[name]
+        return xr.concat([a, xr.full_like(a.isel(segment=[-1]), value)], dim="segment")
+
+    extra = {name: grown(name, value) for name, value in (
+        ("pressure_max", p_trace), ("force", 0.1), ("half_width", 0.2))}
+    extra.update({name: xr.concat([lt[name], lt[name].isel(segment=[-1])], dim="segment")
+                  for name in ("segment_length", "moment_arm")})
+    extra["segment_u"] = xr.concat([lt["segment_u"], xr.full_like(
+        lt["segment_u"].isel(segment=[-1]), 1.0)], dim="segment")
+    extra["segment_v"] = xr.concat([lt["segment_v"], xr.full_like(
+        lt["segment_v"].isel(segment=[-1]), 0.0)], dim="segment")
+    out = lt.drop_vars([*extra, "segment_kind"]).assign(
+        {k: (v.dims, v.values) for k, v in extra.items()})
+    out = out.assign_coords(segment_kind=("segment", np.array(
+        [*lt["segment_kind"].values.astype(str), "gear_heel"])))
+    out["pressure_max_edge"] = ("torque", [max(p_edge, p_trace)])
+    assert out["pressure_max"].dims == dims
+    return out
+
+
+def test_a_duty_cycle_names_the_edge_peak_ltca_run_judges(case):
+    """A pinion edge at 2500 MPa carrying 1 % of the torque and a gear-heel edge at 2800
+    MPa carrying 0.025 % (below EDGE_SHARE_MIN): ``ltca run``'s verdict judges the pinion
+    edge alone (2500 MPa above the 2400 MPa static strength); the one-bin duty cycle at the
+    same torque names the same 2500 MPa — before, its bin's ``pressure_max_edge``, 2800 MPa
+    (the hypoid 9×41 of benchmarks/data/unseen_designs, round 20: ``ltca run`` 2462 MPa,
+    its duty cycle 2730 MPa at 330.4 N·m)."""
+    lt = _mesh_with_a_trace_edge(2500.0, 2800.0)
+    share = edge_load_share(lt, kinds=("gear_heel",))
+    assert 0.0 < float(share[0]) < EDGE_SHARE_MIN
+    assert float(edge_load_share(lt, kinds=("pinion_edge",))[0]) >= EDGE_SHARE_MIN
+    assert judged_edge_peak(lt) == 2500.0
+    run = verdict(xr.DataTree.from_dict({"/ltca": lt}))
+    (f,) = [f for f in run.findings if f.check == "edge_pressure"]
+    assert "2500 MPa on the pinion edge" in f.reason and "2800" not in f.reason
+    duty = verdict(_cycle(case, lt))
+    (g,) = [g for g in duty.findings if g.check == "edge_pressure"]
+    assert "2500 MPa in bin 0" in g.reason and "2800" not in g.reason
+    # a file written before the variable: the bin's peak over every edge, as before
+    old = _cycle(case, lt).drop_vars("edge_peak_pressure")
+    (h,) = [h for h in verdict(old).findings if h.check == "edge_pressure"]
+    assert "2800 MPa in bin 0" in h.reason
+    # no edge counted: 0
+    assert judged_edge_peak(_mesh_with_a_trace_edge(0.0, 2800.0).assign(
+        force=lambda d: d["force"].where(d["segment_kind"] != "pinion_edge", 0.0))) == 0.0

@@ -378,3 +378,25 @@ def test_a_case_no_analysis_accepts_is_not_written(tmp_path, capsys, monkeypatch
     with pytest.raises(ModelUnavailableError, match="roll-angle surface is not monotone"):
         unloaded_tca(checked[0])
 
+
+
+def test_a_given_torque_above_its_root_capacity_is_noted():
+    """A design torque the basic file gives at or below the ISO capacity but above the
+    developed bearing's root-stress capacity (the industrial 19×57 given 0.9 of its ISO
+    capacity, round 20) gets the development's sentence as its note; above the ISO
+    capacity the ISO note comes first; neither: no note."""
+    from types import SimpleNamespace
+
+    from contact import resolve_case
+    from contact.commands.synthesize import _given_torque_note
+    from contact.load_capacity.iso10300.capacity import capacity_torque
+
+    case = resolve_case(None)
+    capacity = capacity_torque(case)
+    said = SimpleNamespace(given_root_text="the design torque 90 N m ... rates FAIL")
+    quiet = SimpleNamespace(given_root_text="")
+    assert _given_torque_note(case, 0.9 * capacity, said) == said.given_root_text
+    assert _given_torque_note(case, 0.9 * capacity, quiet) is None
+    assert _given_torque_note(case, 0.9 * capacity, None) is None
+    above = _given_torque_note(case, 2.0 * capacity, said)
+    assert above.startswith("the design torque") and "ISO 10300 long-life capacity" in above

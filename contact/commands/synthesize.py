@@ -663,6 +663,18 @@ def _above_capacity_note(case, torque: float) -> str | None:
             "load cycles as [rating] load_cycles, rates it for what it is")
 
 
+def _given_torque_note(case, torque: float, development) -> str | None:
+    """The note on a design torque the basic file gives: above the pair's ISO 10300
+    capacity (:func:`_above_capacity_note`), else above the developed bearing's
+    root-stress capacity (S_F,FE < S_Fmin there, which ``ltca run`` rates FAIL:
+    :attr:`contact.optimize.development_result.DevelopmentResult.given_root_text`); None
+    where neither."""
+    above = _above_capacity_note(case, torque)
+    if above is None and development is not None and development.given_root_text:
+        return development.given_root_text
+    return above
+
+
 def _size_scale(basic) -> float:
     """The basic design's :func:`geometry.synthesis.basic_design.size_scale`; 1 where its
     blank cannot be made (the synthesis then names why)."""
@@ -909,7 +921,7 @@ def _run_synthesize(args: argparse.Namespace) -> int:
     if math.isfinite(coast_torque):
         print(f"  coast design torque: {plain_number(coast_torque)} N m, {coast_why}")
     given = torque_why.startswith(("[synthesis] design_torque", "[rating] design_torque"))
-    above = _above_capacity_note(case, torque) if given else None
+    above = _given_torque_note(case, torque, development) if given else None
     if above is not None:
         print("note: " + above)
     if ratios is not None:

@@ -178,7 +178,7 @@ from contact.optimize.development_result import (  # noqa: F401
     DevelopmentResult,
     metrics_text,
 )
-from contact.optimize.development_root import at_decided_level
+from contact.optimize.development_root import at_decided_level, given_torque_root
 from contact.optimize.development_stages import (  # noqa: F401
     CROWNING_STEP,
     HEIGHT_DESIGNS,
@@ -498,7 +498,7 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     coast_seconds = time.process_time() - c_coast
     pre_coast, developed = developed, coast.basic
     case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
-    root_safety, root_text = math.nan, ""
+    root_safety, root_text, given_root_text = math.nan, "", ""
     built: list[Case] = []  # the case whose FE models were built last (_both_flanks_built)
     given = (basic.options.design_torque is not None
              or basic.rating.get("design_torque") is not None)
@@ -527,6 +527,11 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
         if root_text and setup.get("pitting_tried") and "pitting" in setup["source"]:
             # a torque cut for the local pitting capacity says what was tried before it
             setup["source"] = f"{setup['source']}; {setup['pitting_tried']}"
+    else:
+        # a design torque the basic file gives stands as given, but its root stress is
+        # checked as ltca run judges it (on the default FE model where the coarse level
+        # fails: the case written names it) and a failure said (development_root)
+        root_safety, given_root_text = _given_root(case, setup, say, root_stress)
     # the coast flank at its own design torque as `ltca run --flank coast` analyses it,
     # the coast design torque lowered to what its developed bearing carries (flank static
     # strength, no plastic segment, root stress) where that is less
@@ -647,9 +652,20 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                                lte_reach=setup.get("lte_reach", {}).get(
                                    tuple(float(t) for t in setup["torques"])),
                                tolerant_torque=upto, lte_range=_judged(setup, best),
-                               fe_level_text=setup.get("fe_level_why", ""))
+                               fe_level_text=setup.get("fe_level_why", ""),
+                               given_root_text=given_root_text)
     say(result.headline())
     return result
+
+
+def _given_root(case: Case, setup: dict[str, Any], say: Callable[[str], None],
+                root_stress: bool) -> tuple[float, str]:
+    """:func:`~contact.optimize.development_root.given_torque_root` of the written case at
+    the design torque the basic file gives; (NaN, "") where ``root_stress`` is off (no FE
+    model is built)."""
+    if not root_stress:
+        return math.nan, ""
+    return given_torque_root(case, setup, say)
 
 
 def _coast_edges_relieved(written: tuple, drive: DevelopmentEvaluation,

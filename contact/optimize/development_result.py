@@ -155,7 +155,9 @@ class DevelopmentResult:
     root_safety : float — [1]
         S_F,FE of the weaker member at the design torque written, from the FE root stress
         of the written case (:func:`contact.optimize.development_root.root_capacity`);
-        NaN where not computed (a design torque given, no rating, the FE model failed).
+        NaN where not computed (no rating, the FE model failed); at a design torque the
+        basic file gives, its S_F,FE there
+        (:func:`contact.optimize.development_root.given_torque_root`).
     root_text : str
         Why the design torque was lowered to the root-stress capacity (empty where not).
     coast_torques : tuple of float — [N·m]
@@ -200,6 +202,11 @@ class DevelopmentResult:
         why the torque was decided on the default model and the case written names it
         (:func:`contact.optimize.development_root.refined_for_root`); empty where the
         case keeps the level it was developed with.
+    given_root_text : str
+        Where the design torque the basic file gives is above the developed bearing's
+        root-stress capacity (S_F,FE < S_Fmin there, which ``ltca run`` rates FAIL): the
+        numbers and the torque that would hold
+        (:func:`contact.optimize.development_root.given_torque_root`); empty where not.
     """
 
     basic: BasicDesign
@@ -233,6 +240,7 @@ class DevelopmentResult:
     lte_range: dict | None = None
     remedy: Any = None
     fe_level_text: str = ""
+    given_root_text: str = ""
 
     @property
     def tolerant(self) -> bool:
@@ -342,7 +350,8 @@ class DevelopmentResult:
         if not math.isfinite(self.root_safety):
             return ""
         why = (f" (design torque lowered to {self.root_text.split(':')[0]})"
-               if self.root_text else "")
+               if self.root_text else " (below S_Fmin: the given torque is above its "
+               "root-stress capacity, see the note)" if self.given_root_text else "")
         return (f"; FE root stress S_F,FE {self.root_safety:.2f} at "
                 f"{plain_number(self.torque[1])} N m{why}")
 

@@ -589,6 +589,97 @@ def root_capacity(case, setup: dict[str, Any], light_load: float,
     return tree, _root_of(safe), source
 
 
+def given_torque_root(case, setup: dict[str, Any], say: Callable[[str], None]
+                      ) -> tuple[float, str]:
+    """The FE root stress of the written ``case`` at a design torque the basic file gives
+    (``[synthesis]`` or ``[rating] design_torque``), checked as ``ltca run`` will judge it
+    and said — the torque itself kept as given (:func:`root_capacity` lowers only the
+    default design torque, the ISO 10300 capacity).
+
+    Where the case's FE level is coarser than :data:`DECIDING_LEVEL` and its check fails,
+    the torque is checked again on the default model (:func:`refined_for_root`:
+    ``setup["fe_level"]`` set, so that the case written names it and ``ltca run`` reads
+    it); where it fails there too, the returned sentence says so with an estimate of the
+    torque the bearing carries: :func:`root_capacity_step` with the exponent b of
+    S_F,FE ∝ T^(−b) measured between the light and the design torque (:func:`root_capacity`'s
+    first step; not checked by an analysis).
+
+    Why: a given torque skipped every root check, so the case kept the coarse level of the
+    development (coarse10, whose peak root stress is −1.0 … +7.1 % of the default
+    model's, docs/fe.md); the industrial spiral bevel 19×57 given 0.9 of its ISO capacity
+    (2865.6 N·m; benchmarks/data/unseen_designs, round 20) then failed ``ltca run`` on
+    coarse10's gear S_F,FE 1.28 < 1.3, while the default model reads 1.30 there
+    (ATTENTION), and ``ltca synthesize`` had said nothing of the root.
+
+    Parameters
+    ----------
+    case : geometry.case.Case — the case written (its ``[root_stress] fe_level``)
+    setup : dict — the development's state: ``"torques"`` (light, design) [N·m]; gets
+        ``"fe_level"`` and ``"fe_level_why"`` where the default model decided
+    say : callable — one plain line per step (the CLI prints them)
+
+    Returns
+    -------
+    safety : float — [1]
+        S_F,FE of the weaker member at the design torque, on the model that decided; NaN
+        where not computed (no FE root stress, no ISO 10300 rating, a failed analysis:
+        said through ``say``, never raised).
+    text : str
+        Where S_F,FE < S_Fmin: the torque, the safety, that ``ltca run`` rates it FAIL and
+        the torque the bearing carries; empty where it holds or was not computed.
+
+    Raises
+    ------
+    KeyboardInterrupt
+        Passed on (:func:`geometry.core.errors.raise_if_interrupted`); every other error
+        of the analysis is said, not raised.
+
+    Notes
+    -----
+    Source: the verdict's root-stress check (:func:`contact.study.verdict_checks.
+    root_stress_safety`: S_F,FE = σ_FP / (σ_F,FE,max·K_A·K_v), ISO 10300-3's permissible
+    stress on the FE peak fillet stress) at ``ltca run``'s sampling (:func:`_root_tree`).
+    """
+    from contact.study.verdicts import shown_below
+
+    torques = [float(t) for t in setup["torques"]]
+    torque = torques[1]
+    try:
+        case = decided_case(case, setup)
+        s, s_min, member = root_safety(_root_tree(case, torques))
+        finer = refined_for_root(case, setup, f"given design torque {plain_number(torque)} "
+                                 f"N m", float(s[-1]), s_min, say)
+        if finer is not None:
+            s, s_min, member = root_safety(_root_tree(finer, torques))
+    except Exception as exc:  # reported, never fatal (ltca run says it)
+        raise_if_interrupted(exc)
+        log.info("development root stress check at the given torque not made: %s", exc)
+        say(f"development: root stress at the given design torque {plain_number(torque)} "
+            f"N m not checked ({exc})")
+        return math.nan, ""
+    safety = float(s[-1])
+    if not math.isfinite(safety):
+        say(f"development: root stress at the given design torque {plain_number(torque)} "
+            f"N m not computed (S_F,FE NaN)")
+        return math.nan, ""
+    if safety >= s_min:
+        say(f"development: at the given design torque {plain_number(torque)} N m S_F,FE "
+            f"{safety:.2f} ({member}) >= {s_min:g}")
+        return safety, ""
+    low, high, default = CRITERIA["root"][2]
+    b = _exponent(torques[0], float(s[0]), torque, safety, default, low, high)
+    holds = root_capacity_step(torque, safety, s_min, exponent=b)
+    text = (f"the design torque {plain_number(torque)} N m the basic file gives is above "
+            f"the developed bearing's root-stress capacity: its FE root stress gives S_F,FE "
+            f"{shown_below(safety, s_min)} ({member}) below S_Fmin {s_min:g} there, which "
+            f"`ltca run` rates FAIL; about {plain_number(holds)} N m would hold (T (0.99 "
+            f"S_F,FE/S_Fmin)^(1/b), b = {b:.2f} measured between the light and the design "
+            f"torque; an estimate, not analysed); without a given torque the development "
+            f"lowers its design torque to the capacity it finds")
+    say(f"development: {text}")
+    return safety, text
+
+
 def regained_capacity(case, setup: dict[str, Any], light_load: float, ceiling: float,
                       say: Callable[[str], None]
                       ) -> tuple[Any, list[float], float, float] | None:

@@ -1217,14 +1217,18 @@ def _duty_plastic(ds: xr.Dataset) -> list[Finding]:
 def _duty_edge_pressure(ds: xr.Dataset) -> list[Finding] | None:
     """``ltca run``'s ``edge_pressure`` attention (:func:`_edge_pressure`) for a spectrum:
     the bins whose edges carry at least :data:`EDGE_SHARE_MIN` of the torque with their
-    peak ``pressure_max_edge`` above the bin's ``contact_static_strength`` (the weaker
+    peak ``edge_peak_pressure`` (the edge kinds ``ltca run`` judges; ``pressure_max_edge``
+    in a file written before it) above the bin's ``contact_static_strength`` (the weaker
     member's), no segment at the contact-pressure limit (a bin with a ``plastic_load_share``
     is the ``plastic_edges`` check's). The bins hold the edges' total share only, so the
     edge kind is not named. None for a file without those variables (no check made)."""
     need = {"pressure_max_edge", "edge_load_share", "contact_static_strength", "torque"}
     if not need <= set(ds.variables):
         return None
-    p = np.nan_to_num(np.asarray(ds["pressure_max_edge"].values, float))
+    # the edges ltca run's check judges (contact.study.duty_cycle.judged_edge_peak); a
+    # file written before it: the bin's peak over every edge
+    p = np.nan_to_num(np.asarray(ds["edge_peak_pressure" if "edge_peak_pressure" in ds
+                                    else "pressure_max_edge"].values, float))
     share = np.nan_to_num(np.asarray(ds["edge_load_share"].values, float))
     strength = np.asarray(ds["contact_static_strength"].values, float).min(axis=-1)
     plastic = (np.nan_to_num(np.asarray(ds["plastic_load_share"].values, float))
