@@ -18,8 +18,9 @@ import math
 
 import numpy as np
 from development_stand_ins import metrics as _metrics
-from development_stand_ins import stand_in
+from development_stand_ins import seen_designs, stand_in
 
+from contact.ltca.lte_range import lte_range_torques
 from contact.optimize import development_coast_edge_peak as dce
 from contact.optimize import development_edge_peak as dep
 from contact.optimize.development_coast import CoastCapacity, CoastCheck
@@ -116,6 +117,65 @@ def test_a_relief_above_the_capacity_bound_is_refused(monkeypatch):
     free = dce.checked_coast_edge_peak(start, targets, setup, None, lambda s: None, dict,
                                        bound=math.inf, key_prefix=PREFIX)
     assert free.values == COAST | {"root_relief": 60.0, "tip_relief": 22.5}
+
+
+#: the 9x37's coast torques and ltca run --flank coast's lte_range torques of a run at
+#: them: 197.7 / 571.1 / 944.6 / 1318 N m
+TORQUES = (197.7, 1318.0)
+GRID = lte_range_torques(TORQUES, TORQUES[1])
+
+
+def _between(curves):
+    """The 9x37's law (:func:`_nine_by_37`) with its coast LTE p-p between the torques:
+    ``curves`` maps the root relief [µm] to the LTE [µrad] at the two torques between
+    (GRID[1:3]), interpolated over GRID with the law's own two values."""
+    def law(case, torques, misalignment=None, **kw):
+        m, limits = _nine_by_37(case, torques, misalignment, **kw)
+        ts = tuple(float(t) for t in torques) or TORQUES
+        if ts == TORQUES:
+            return m, limits
+        light, design = (float(x) for x in m["lte_peak_to_peak"])
+        m = {k: np.resize(v, len(ts)) for k, v in m.items()}
+        m["lte_peak_to_peak"] = np.interp(ts, GRID, (light, *curves[float(case["root_relief"])],
+                                                     design))
+        return m, limits
+    return law
+
+
+def test_a_relief_past_60_urad_between_the_torques_is_refused(monkeypatch):
+    """The refusal of 29e95de (the e-axle 11x39 at Σ 80°: its gear-toe variant 55 / 56 µrad
+    at its coast torques and 60.6 between them failed the slow test's coast_lte60): the
+    gear tip's root relief 40 → 60 µm, 30 / 30 µrad at the coast torques but 61 µrad at
+    571.1 N m between them where the design kept has 35, is refused for it (said), though
+    it clears the edge and misses no other target; the pinion edge's tip relief is then
+    tried on the design as written (35 µrad between) and kept. Where the design kept is
+    above 60 µrad between the torques itself (65), the same relief is not refused on that
+    account: kept, then the tip relief on it."""
+    seen, fake = seen_designs(_between({40.0: (35.0, 32.0), 60.0: (61.0, 40.0)}))
+    targets, setup, chosen = stand_in(monkeypatch, fake, TORQUES)
+    start = dataclasses.replace(chosen(dict(COAST)), case=dict(COAST))
+    seen.clear()
+    lines = []
+    got = dce.checked_coast_edge_peak(start, targets, setup, None, lines.append, dict,
+                                      bound=math.inf, key_prefix=PREFIX)
+    assert any("not kept: the root_relief 60 um for the gear tip misses LTE p-p 61.0 urad "
+               "between the torques" in s for s in lines), lines
+    assert got.values == COAST | {"tip_relief": 22.5}
+    assert dep.edges_above(got) == {"gear_tip": 5156.0}
+    # analysed: the root relief at its torques, between them and twice more where its
+    # LTE crosses 60 µrad (ltca run's bisections); the design as written between its
+    # torques (the LTE it keeps there); the tip relief at its torques and between them
+    assert [(d["root_relief"], d["tip_relief"]) for d in seen] == [
+        *[(60.0, 15.0)] * 4, (40.0, 15.0), (40.0, 22.5), (40.0, 22.5)]
+    # the design kept above the limit between the torques already: not refused for it
+    seen, fake = seen_designs(_between({40.0: (65.0, 32.0), 60.0: (61.0, 40.0)}))
+    targets, setup, chosen = stand_in(monkeypatch, fake, TORQUES)
+    start = dataclasses.replace(chosen(dict(COAST)), case=dict(COAST))
+    lines.clear()
+    got = dce.checked_coast_edge_peak(start, targets, setup, None, lines.append, dict,
+                                      bound=math.inf, key_prefix=PREFIX)
+    assert not any("between the torques" in s for s in lines), lines
+    assert got.values == COAST | {"root_relief": 60.0, "tip_relief": 22.5}
 
 
 def _check(torque, pressure=1500.0, pitting=1.2, root=2.0):

@@ -10,7 +10,10 @@ far its peak stays below the static strength, and the case is written with an LT
 verdict flags. :func:`checked_coast_capacity_lte` gives such a coast design the longest
 ellipse, its light-load pattern's clearance to toe and heel by M's place and lighter
 reliefs, and keeps one on a rule of its own (:func:`capacity_kept`): the verdict's LTE
-limit met at every torque where the design misses it, no plastic segment, no target the
+limit met at every torque where the design misses it — at its two torques and between
+them, as ``ltca run --flank coast``'s ``lte_range`` step judges it (:func:`coast_range_peak`,
+the development's :func:`~contact.optimize.development_range_lte.range_lte` on the coast
+flank) —, no plastic segment, no target the
 design met lost but the pattern length and the pitting bound, and its peak within the
 flank's static strength — the verdict's FAIL limit and the bound of the coast capacity
 search's ``flank`` criterion. The coast design torque is at or below the coast side's ISO
@@ -50,6 +53,7 @@ from contact.optimize.development_pattern_steps import (
     SHIFT_BOUNDS,
     SHIFT_NAME,
 )
+from contact.optimize.development_range_lte import range_lte, range_peak
 from contact.optimize.development_result import DevelopmentEvaluation, floor_torque
 from contact.optimize.development_targets import DevelopmentTargets
 from contact.optimize.development_variant import changed_values, lte_fails, said_variant
@@ -213,7 +217,8 @@ def lighter_reliefs(values: Mapping[str, float], targets: DevelopmentTargets
 
 
 def capacity_kept(best: DevelopmentEvaluation, e: DevelopmentEvaluation | None,
-                  targets: DevelopmentTargets, limit: float, static: float) -> str:
+                  targets: DevelopmentTargets, limit: float, static: float, *,
+                  between: tuple[float, float] | None = None) -> str:
     """Why the coast design ``e`` does not replace ``best`` on the rule of
     :func:`checked_coast_capacity_lte`, empty where it does.
 
@@ -229,13 +234,19 @@ def capacity_kept(best: DevelopmentEvaluation, e: DevelopmentEvaluation | None,
         The verdict's LTE limit.
     static : float — [MPa]
         The coast flank's static strength (the verdict's flank-pressure FAIL limit).
+    between : (float, float), optional — [µrad], [N·m]
+        ``e``'s largest LTE p-p over ``ltca run``'s ``lte_range`` torques on the coast
+        flank and its torque (:func:`~contact.optimize.development_range_lte.range_peak`
+        of :func:`~contact.optimize.development_range_lte.range_lte`, its own two torques
+        among them); judged where given and finite, else the LTE at its own torques alone.
 
     Returns
     -------
     str
-        Empty where ``e`` is kept: its LTE p-p within ``limit`` at every torque, no
-        plastic share above ``max_plastic_share``, no target ``best`` met missed but those
-        of :data:`MAY_LOSE`, and its flank peak pressure at the design torque within
+        Empty where ``e`` is kept: its LTE p-p within ``limit`` at every torque (and
+        between them where ``between`` is given), no plastic share above
+        ``max_plastic_share``, no target ``best`` met missed but those of
+        :data:`MAY_LOSE`, and its flank peak pressure at the design torque within
         ``static``; else the reason.
 
     Raises
@@ -258,6 +269,9 @@ def capacity_kept(best: DevelopmentEvaluation, e: DevelopmentEvaluation | None,
     lte = float(np.nanmax(e.metrics["lte_peak_to_peak"]))
     if not lte <= limit:
         return f"its LTE p-p {lte:.0f} urad above {limit:g}"
+    if between is not None and math.isfinite(between[0]) and not between[0] <= limit:
+        return (f"its LTE p-p {between[0]:.1f} urad at {plain_number(between[1])} N m, "
+                f"between the torques, above {limit:g}")
     plastic = float(np.max(e.metrics["plastic_share"]))
     if plastic > targets.max_plastic_share:
         return f"plastic segments carry {100 * plastic:.2g} % of the torque"
@@ -268,6 +282,46 @@ def capacity_kept(best: DevelopmentEvaluation, e: DevelopmentEvaluation | None,
     if not peak <= static:
         return f"its flank peak {peak:.0f} MPa above the static strength {static:.0f} MPa"
     return ""
+
+
+def coast_range_peak(e: DevelopmentEvaluation | None, setup: Mapping[str, Any],
+                     teeth: KeptTeeth | None, key_prefix: tuple = ()) -> tuple[float, float]:
+    """A coast design's largest LTE p-p over ``ltca run --flank coast``'s ``lte_range``
+    torques and its torque: :func:`~contact.optimize.development_range_lte.range_peak` of
+    :func:`~contact.optimize.development_range_lte.range_lte` on the coast flank (its own
+    two torques among them, the analyses kept in ``setup``).
+
+    Parameters
+    ----------
+    e : DevelopmentEvaluation or None
+        A coast design checked at ``setup["torques"]`` [N·m] (the coast flank's light and
+        design torque).
+    setup : mapping
+        The development's state at the coast flank's torques.
+    teeth : KeptTeeth or None
+        The kept shell teeth.
+    key_prefix : tuple, optional
+        The kept pinion tooth's key before the design's bearing (the coast's).
+
+    Returns
+    -------
+    (float, float) — [µrad], [N·m]
+        NaN, NaN where ``e`` is None or not analysed between the torques (logged by
+        ``range_lte``).
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: ``ltca run``'s ``lte_range`` step and verdict (:mod:`contact.ltca.lte_range`,
+    issue 71: "LTE p-p ≤ 60 µrad at every torque", both flanks), as the coast LTE steps
+    judge it (:func:`~contact.optimize.development_coast_steps.checked_coast_lte`).
+    """
+    if e is None:
+        return math.nan, math.nan
+    return range_peak(range_lte(e, setup, teeth, flank="coast", key_prefix=key_prefix))
 
 
 def checked_coast_capacity_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
@@ -284,8 +338,12 @@ def checked_coast_capacity_lte(best: DevelopmentEvaluation, targets: Development
     lighter
     reliefs (:func:`lighter_reliefs`): at most four designs, each placed and checked at
     ``ltca run``'s sampling on the coast flank at ``setup["torques"]`` and judged by
-    :func:`capacity_kept` against ``best``; of those kept, the one of least flank peak
-    pressure at the design torque (the capacity the LTE is bought with).
+    :func:`capacity_kept` against ``best``, one that meets its rule at the two torques
+    judged on its LTE between them too (:func:`coast_range_peak`: ``ltca run --flank
+    coast``'s ``lte_range`` torques, one analysis of the two torques between and the
+    crossing's bisections); of those kept (each within the limit over the range), the one
+    of least flank peak pressure at the design torque (the capacity the LTE is bought
+    with).
 
     Parameters
     ----------
@@ -302,7 +360,8 @@ def checked_coast_capacity_lte(best: DevelopmentEvaluation, targets: Development
         The verdict's LTE limit (default :data:`contact.study.verdicts.LTE_LIMIT`).
     near : list, optional
         Where given, the step's designs refused for their LTE alone (each meeting the
-        rule of :func:`capacity_kept` but the limit) are appended to it: the designs whose
+        rule of :func:`capacity_kept` but the limit, at their torques or between them)
+        are appended to it: the designs whose
         coast design torque :func:`coast_torque_that_holds` may lower to where their LTE
         keeps the limit (:func:`coast_lte_within_capacity`).
 
@@ -353,6 +412,11 @@ def checked_coast_capacity_lte(best: DevelopmentEvaluation, targets: Development
                          f"{static:.0f} MPa)", targets, setup, teeth, say, placed,
                          flank="coast", key_prefix=key_prefix)
         refused = capacity_kept(best, e, targets, limit, static)
+        if not refused:  # kept at its two torques: judged between them too, as ltca run
+            # --flank coast's lte_range step judges it (the 20x24 at Sigma 100 deg remedied:
+            # its lighter tip relief 44 / 54 urad at its torques, 80.8 between)
+            refused = capacity_kept(best, e, targets, limit, static,
+                                    between=coast_range_peak(e, setup, teeth, key_prefix))
         if refused:
             say(f"  not kept: {refused}")
             if near is not None and not capacity_kept(best, e, targets, math.inf, static):
@@ -423,7 +487,12 @@ def coast_lte_within_capacity(developed: BasicDesign, drive: DevelopmentEvaluati
 
     Notes
     -----
-    Source: issue 71; docs/synthesis.md, "The coast LTE within the flank's capacity".
+    The designs are judged on their LTE at the coast torques and between them
+    (:func:`coast_range_peak`); where none is kept and the coast design's LTE fails the
+    verdict, the one written nearest the limit is the one of least LTE over that range,
+    and :func:`capacity_text` says the LTE over it. Source: issue 71; docs/synthesis.md,
+    "The coast LTE within the flank's capacity" and "The coast capacity LTE step judged
+    between the torques".
     """
     from contact.study.verdicts import LTE_LIMIT
 
@@ -439,9 +508,15 @@ def coast_lte_within_capacity(developed: BasicDesign, drive: DevelopmentEvaluati
         f"its LTE steps: bearings whose peak may rise up to the static strength {static:.0f} MPa")
     written = written_coast(developed, drive, memo)
     near: list[DevelopmentEvaluation] = []
-    got = checked_coast_capacity_lte(old, targets, dict(setup, torques=list(coast.torques)),
-                                     teeth, say, written.placed, static=static,
-                                     key_prefix=written.key_prefix, near=near)
+    at = dict(setup, torques=list(coast.torques))
+
+    def over(e: DevelopmentEvaluation) -> tuple[float, float]:
+        # its largest LTE over ltca run --flank coast's lte_range torques (kept in the
+        # setup's memo: the step's analyses reused)
+        return coast_range_peak(e, at, teeth, written.key_prefix)
+
+    got = checked_coast_capacity_lte(old, targets, at, teeth, say, written.placed,
+                                     static=static, key_prefix=written.key_prefix, near=near)
     if got is old:
         if not near or not lte_fails(old):
             return None
@@ -451,19 +526,30 @@ def coast_lte_within_capacity(developed: BasicDesign, drive: DevelopmentEvaluati
         # design torque lowered by coast_torque_that_holds to where its LTE keeps it. An
         # LTE between 60 and 120 urad is an attention the verdict says, not a reason to
         # cut the coast design torque (the 20x24 at Sigma 100 deg: 104 urad at 603.3 N m
-        # would cut it to 169.4, 28 % of the drive's)
-        got = min(near, key=lambda e: float(np.nanmax(e.metrics["lte_peak_to_peak"])))
+        # would cut it to 169.4, 28 % of the drive's). Nearest by its largest LTE over
+        # the range (its own torques' where not analysed between them)
+        got = min(near, key=lambda e: _largest(e, over(e)))
         say(f"development: coast flank: no bearing within {LTE_LIMIT:g} urad at "
             f"{plain_number(coast.torques[1])} N m; the nearest (LTE p-p "
-            f"{np.nanmax(got.metrics['lte_peak_to_peak']):.0f} urad) written where its "
+            f"{_largest(got, over(got)):.0f} urad) written where its "
             "coast design torque, lowered, keeps the limit")
-    text = capacity_text(got, cap, float(coast.torques[1]))
+    text = capacity_text(got, cap, float(coast.torques[1]), between=over(got))
     if text:
         say(f"development: coast flank {text}")
     return written.outcome(coast, got), text
 
 
-def capacity_text(e: DevelopmentEvaluation, cap: CoastCapacity, torque: float) -> str:
+def _largest(e: DevelopmentEvaluation, between: tuple[float, float] | None) -> float:
+    """``e``'s largest LTE p-p [µrad]: over the range where ``between`` (range_peak's) is
+    finite, else at its own torques."""
+    own = float(np.nanmax(e.metrics["lte_peak_to_peak"]))
+    if between is None or not math.isfinite(between[0]):
+        return own
+    return max(own, float(between[0]))
+
+
+def capacity_text(e: DevelopmentEvaluation, cap: CoastCapacity, torque: float, *,
+                  between: tuple[float, float] | None = None) -> str:
     """What the coast design ``e`` kept by :func:`checked_coast_capacity_lte` gave up at the
     coast design torque it ran at (said before :func:`coast_torque_that_holds` searches
     that torque again): its LTE p-p, its flank peak against the static
@@ -479,6 +565,9 @@ def capacity_text(e: DevelopmentEvaluation, cap: CoastCapacity, torque: float) -
         The coast capacity search's result (its last check at the coast design torque).
     torque : float — [N·m]
         The coast design torque.
+    between : (float, float), optional — [µrad], [N·m]
+        ``e``'s largest LTE p-p over ``ltca run``'s ``lte_range`` torques and its torque
+        (:func:`coast_range_peak`): the LTE said; default (or NaN) its own torques'.
 
     Returns
     -------
@@ -491,7 +580,9 @@ def capacity_text(e: DevelopmentEvaluation, cap: CoastCapacity, torque: float) -
     Notes
     -----
     Source: :func:`~contact.optimize.development_coast_flank.pitting_pressure` (the local
-    pitting safety σ_HP / (p √(K_A K_v)), ISO 10300-2 with the bearing's own peak).
+    pitting safety σ_HP / (p √(K_A K_v)), ISO 10300-2 with the bearing's own peak); the
+    LTE over ``ltca run --flank coast``'s ``lte_range`` torques (:mod:`contact.ltca.
+    lte_range`).
     """
     final = cap.final
     bound = pitting_pressure(cap)
@@ -499,7 +590,10 @@ def capacity_text(e: DevelopmentEvaluation, cap: CoastCapacity, torque: float) -
     if final is None or not (math.isfinite(bound) and peak > bound):
         return ""
     s_min = float(final.s_h_min)
-    return (f"LTE p-p {float(np.nanmax(e.metrics['lte_peak_to_peak'])):.0f} urad within "
+    lte = (f"{_largest(e, between):.0f} urad at its torques and between them"
+           if between is not None and math.isfinite(between[0]) else
+           f"{float(np.nanmax(e.metrics['lte_peak_to_peak'])):.0f} urad")
+    return (f"LTE p-p {lte} within "
             f"60 urad bought with its local pitting margin: flank peak {peak:.0f} MPa "
             f"(static strength {float(final.limit):.0f} MPa), S_H,loc "
             f"{s_min * bound / peak:.2f} at {plain_number(torque)} N m below S_Hmin {s_min:g}; the "
