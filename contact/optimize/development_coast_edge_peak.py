@@ -36,7 +36,7 @@ from typing import Any
 from contact.optimize.development_coast import CoastCapacity
 from contact.optimize.development_coast_flank import pitting_pressure, written_coast
 from contact.optimize.development_edge_peak import (
-    edge_peak_relief,
+    EDGE_PEAK,
     edge_peak_runs_on,
     edges_above,
     pitting_lost,
@@ -154,7 +154,7 @@ def checked_coast_edge_peak(best: DevelopmentEvaluation, targets: DevelopmentTar
                 gone = [*gone, f"LTE p-p {peak:.1f} urad between the torques"]
         return gone
 
-    relief = dataclasses.replace(edge_peak_relief(lost), stage=STAGE)
+    relief = dataclasses.replace(EDGE_PEAK, stage=STAGE, lost=lost)
     return checked_relief_variants(best, targets, setup, teeth, say, placed,
                                    reliefs=(relief,), eps=(math.nan, math.nan),
                                    flank="coast", key_prefix=key_prefix, tolerant=False)

@@ -44,7 +44,6 @@ local pitting bound (:func:`pitting_lost`): both written as before.
 from __future__ import annotations
 
 import dataclasses
-import functools
 import logging
 import math
 from collections.abc import Callable, Generator, Mapping
@@ -65,9 +64,8 @@ log = logging.getLogger("contact.optimize.development")
 
 __all__ = ["DEEPER_FACTOR", "DEEPER_RANGE", "EARLIER_STEP", "EDGE_GAIN_MIN", "EDGE_PEAK",
            "EDGE_WORDS", "ELLIPSE_FRACTIONS", "LEVERS", "checked_edge_peak", "deeper",
-           "earlier", "edge_excess", "edge_gain", "edge_peak_relief", "edge_peak_runs_on",
-           "edges_above", "edges_to_relieve", "halfway", "lever_designs", "lower_excess",
-           "pitting_lost"]
+           "earlier", "edge_excess", "edge_gain", "edge_peak_runs_on", "edges_above",
+           "edges_to_relieve", "lever_designs", "lower_excess", "pitting_lost"]
 
 #: the prescriptions that take the load off each edge kind (:data:`contact.ltca.edges.
 #: EDGE_KINDS`), tried in turn: the pinion's edge (its tip line on the gear flank) by the
@@ -435,54 +433,14 @@ def edge_peak_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     return any(lever_designs(k, best.values, targets) for k in edges_to_relieve(best))
 
 
-def halfway(name: str, now: float, x: float) -> float | None:
-    """The design halfway between a lever's value ``now`` and the value ``x`` its step
-    tried (:func:`lever_designs`), rounded as :func:`deeper` / :func:`earlier` round: the
-    step :data:`EDGE_PEAK` tries where ``x`` lowered the edges' excess by the peak's
-    resolution but lost a target the design met (:func:`edge_peak_relief`).
-
-    Parameters
-    ----------
-    name : str
-        A relief amount (``"tip_relief"``, ``"root_relief"``, [µm]) or start
-        (``"tip_relief_start"``, ``"relief_start"``, [1]).
-    now, x : float
-        The design's value and the step's [file units].
-
-    Returns
-    -------
-    float or None
-        None for the ellipse (its lever has two lengths of its own,
-        :data:`ELLIPSE_FRACTIONS`) or where the halfway value rounds to ``now``.
-
-    Raises
-    ------
-    Nothing.
-
-    Notes
-    -----
-    Source: the levers measured (docs/synthesis.md, "The edge-excess keep rule's minimum
-    gain"): the step that clears an edge often misses the LTE target by 1–3 µrad or the
-    local pitting bound (the spiral bevel 12x41's root relief: its gear tip cleared, LTE
-    42 µrad against 40).
-    """
-    if name not in _AMOUNTS and name not in ("tip_relief_start", "relief_start"):
-        return None
-    mid = round(0.5 * (float(now) + float(x)), 2 if name in _AMOUNTS else 4)
-    return mid if abs(mid - float(now)) > 1e-6 and abs(mid - float(x)) > 1e-6 else None
-
-
-def _edge_designs(start: DevelopmentEvaluation, targets: DevelopmentTargets,
-                  gained: Callable[[], bool] | None = None
+def _edge_designs(start: DevelopmentEvaluation, targets: DevelopmentTargets
                   ) -> Generator[Try, Sent, None]:
     # Why: an edge carries load where the flank's ease-off at the edge is less than the
     # approach the design torque gives there; the relief (or the crowning) at that edge
     # deeper or longer than the deflection keeps the edge out of the loaded pattern
     # (Litvin & Fuentes 2004, §9.4; Stadtfeld 1993, ch. 3). Each kind above the static
     # strength by more than the peak's resolution (EDGE_GAIN_MIN), worst first, from the
-    # design kept so far. ``gained()``: whether the design refused last lowered the
-    # edges' excess by that resolution (edge_peak_relief); where it did and was refused
-    # for a target it lost, the relief halfway to it is tried.
+    # design kept so far.
     best, done = start, set()
     while True:
         above = {k: p for k, p in edges_to_relieve(best).items() if k not in done}
@@ -498,20 +456,12 @@ def _edge_designs(start: DevelopmentEvaluation, targets: DevelopmentTargets,
             if abs(x - now) < 1e-6:
                 continue
             unit = " um" if name in _AMOUNTS else ""
-            step: float | None = x
-            why_half = ""
-            while step is not None:
-                change = f"{name} {step:.4g}{unit}"
-                best, why = yield Try(
-                    dict(best.values) | {name: step},
-                    f"with {change} (the {EDGE_WORDS[kind]}'s peak {peak:.0f} MPa at the "
-                    f"design torque above the static strength {static:.0f} MPa{why_half})",
-                    f"the {change} for the {EDGE_WORDS[kind]}")
-                half = halfway(name, now, step) if step == x else None
-                if (half is None or gained is None or not (why or "").startswith("it misses")
-                        or not gained()):
-                    break
-                step, why_half = half, f"; halfway to {x:.4g}{unit}, which {why[3:]}"
+            change = f"{name} {x:.4g}{unit}"
+            best, _ = yield Try(
+                dict(best.values) | {name: x},
+                f"with {change} (the {EDGE_WORDS[kind]}'s peak {peak:.0f} MPa at the design "
+                f"torque above the static strength {static:.0f} MPa)",
+                f"the {change} for the {EDGE_WORDS[kind]}")
 
 
 #: the edge-peak variant: the relief (or the crowning) of each edge above the static
@@ -520,45 +470,6 @@ def _edge_designs(start: DevelopmentEvaluation, targets: DevelopmentTargets,
 #: edge is above by as much
 EDGE_PEAK = Relief("edge peak", edge_peak_runs_on, _edge_designs, lost_first=True,
                    better=lower_excess, ends=lambda e: not edges_to_relieve(e))
-
-
-def edge_peak_relief(lost: Callable[[DevelopmentEvaluation, DevelopmentEvaluation],
-                                     list[str]]) -> Relief:
-    """:data:`EDGE_PEAK` with the step's lost targets ``lost`` and its halfway designs: a
-    lever's design that lowers the edges' excess by the peak's resolution
-    (:func:`lower_excess`) but is refused for a target it loses is followed by the design
-    halfway to it (:func:`halfway`; one more analysis).
-
-    Parameters
-    ----------
-    lost : callable (best, e) → list of str
-        The targets ``best`` met that ``e`` misses (:func:`pitting_lost`'s, or the coast
-        step's).
-
-    Returns
-    -------
-    Relief
-        The row for :func:`~contact.optimize.development_relief_lte.
-        checked_relief_variants` (a new one per call: it records its designs' gains).
-
-    Raises
-    ------
-    Nothing.
-
-    Notes
-    -----
-    The keep rule asks ``lost`` first (``lost_first``), so each design refused for a lost
-    target has had its gain recorded. Source: the levers measured (:func:`halfway`).
-    """
-    gains: list[bool] = []
-
-    def recorded(best: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:
-        gains.append(lower_excess(best, e))
-        return lost(best, e)
-
-    return dataclasses.replace(
-        EDGE_PEAK, lost=recorded,
-        tries=functools.partial(_edge_designs, gained=lambda: bool(gains) and gains[-1]))
 
 
 def pitting_lost(limit: float) -> Callable[[DevelopmentEvaluation, DevelopmentEvaluation],
@@ -651,6 +562,6 @@ def checked_edge_peak(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     """
     if not edge_peak_runs_on(best, targets):
         return best
-    relief = edge_peak_relief(pitting_lost(_pitting_limit(best, setup)))
+    relief = dataclasses.replace(EDGE_PEAK, lost=pitting_lost(_pitting_limit(best, setup)))
     return checked_relief_variants(best, targets, setup, teeth, say, placed,
                                    reliefs=(relief,), eps=(math.nan, math.nan))
