@@ -164,6 +164,7 @@ def test_the_minimum_gain_is_a_fraction_of_the_static_strength():
     assert dep.edge_gain(design(3000.0)) == pytest.approx(75.0)
     failed = DevelopmentEvaluation(0, dict(WRITTEN), None, np.inf, {}, False, "", 0.0)
     assert dep.edge_gain(failed) == np.inf
+    assert not dep.lower_excess(failed, failed)  # no metrics: never better
     two = design(2400.0, pinion_edge=2459.0, gear_tip=2461.0)
     assert dep.edges_above(two) == {"gear_tip": 2461.0, "pinion_edge": 2459.0}
     assert dep.edges_to_relieve(two) == {"gear_tip": 2461.0}
