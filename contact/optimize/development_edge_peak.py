@@ -109,11 +109,11 @@ ELLIPSE_FRACTIONS = (0.85, 0.7)
 #: gain") on the bundled default case at 50 / 250 / 500 N m and on written cases of
 #: rounds 19/19b, the peaks above 2400 MPa of edges carrying 0.2 % of the torque or more
 #: moved by up to 58 MPa between 20 and 24 or 30 roll positions and up to 40 MPa between
-#: 24 and 28 or 32 segments (16 roll positions: up to 103 MPa; an edge near the 0.05 %
-#: share floor, at 0.069 %: 249 MPa). A fall smaller than that is the sampling's, not the
-#: relief's (the 15x45's coast root relief 17.1 → 25.7 µm was kept on 3916 → 3914 MPa,
-#: lifting the coast flank peak 1465 → 1530 MPa), and an edge above the static strength
-#: by less is not resolved from it
+#: 24 and 28 or 32 segments (16 roll positions: up to 103 MPa; edges near the 0.05 %
+#: share floor, at 0.069–0.093 %: up to 279 MPa). A fall smaller than that is the
+#: sampling's, not the relief's (the 15x45's coast root relief 17.1 → 25.7 µm was kept on
+#: 3916 → 3914 MPa, lifting the coast flank peak 1465 → 1530 MPa), and an edge above the
+#: static strength by less is not resolved from it
 EDGE_GAIN_MIN = 0.025
 
 #: the relief amounts (µm) among the levers; the other levers are starts (fractions of the
