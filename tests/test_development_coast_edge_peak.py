@@ -38,17 +38,18 @@ PREFIX = ("drive bearing", "coast")
 
 
 def _nine_by_37(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
-                flank="drive", calls=None, lte_root=30.0, flank_tip=1500.0):
+                flank="drive", calls=None, lte_root=30.0, flank_tip=1500.0,
+                tip_deep=2300.0):
     """The 9x37's coast flank at its light and coast design torque: its gear tip 5156 MPa
-    with the root relief as written (40 µm), 2300 MPa at 60 µm; its pinion edge 4718 MPa
-    with the tip relief 15 µm, 2200 MPa at 22.5 µm; the design torque's LTE ``lte_root``
-    µrad with the deeper root relief (30 as written) and its flank peak ``flank_tip`` MPa
-    with the deeper tip relief (1500 as written). ``calls`` records each call's flank,
-    pinion key and misalignment."""
+    with the root relief as written (40 µm), ``tip_deep`` (2300) MPa at 60 µm; its pinion
+    edge 4718 MPa with the tip relief 15 µm, 2200 MPa at 22.5 µm; the design torque's LTE
+    ``lte_root`` µrad with the deeper root relief (30 as written) and its flank peak
+    ``flank_tip`` MPa with the deeper tip relief (1500 as written). ``calls`` records each
+    call's flank, pinion key and misalignment."""
     if calls is not None:
         calls.append((flank, tuple(pinion_key), misalignment))
     root, tip = float(case["root_relief"]), float(case["tip_relief"])
-    peaks = {"gear_tip": float(np.interp(root, [40.0, 60.0], [5156.0, 2300.0])),
+    peaks = {"gear_tip": float(np.interp(root, [40.0, 60.0], [5156.0, tip_deep])),
              "pinion_edge": float(np.interp(tip, [15.0, 22.5], [4718.0, 2200.0])),
              "gear_heel": 0.0, "gear_toe": 0.0}
     m = _metrics(lte_peak_to_peak=[20.0, float(np.interp(root, [40.0, 60.0],
@@ -101,6 +102,20 @@ def test_a_relief_that_loses_a_coast_target_is_refused(monkeypatch):
                for s in lines)
     assert got.values == COAST | {"tip_relief": 22.5}
     assert dep.edges_above(got) == {"gear_tip": 5156.0}
+
+
+def test_a_relief_that_lowers_the_peak_by_the_samplings_noise_is_refused(monkeypatch):
+    """The deeper root relief lowers the gear tip 5156 → 5154 MPa (the 15x45's coast root
+    relief 17.1 → 25.7 µm kept on 3916 → 3914 MPa before the minimum gain): 2 MPa, within
+    the edge peak's resolution (60 MPa at 2400): not kept; the pinion edge's tip relief
+    (4718 → 2200 MPa) kept."""
+    calls, targets, setup, start = _start(monkeypatch, tip_deep=5154.0)
+    got = dce.checked_coast_edge_peak(start, targets, setup, None, lambda s: None, dict,
+                                      bound=math.inf, key_prefix=PREFIX)
+    assert got.values == COAST | {"tip_relief": 22.5}
+    assert dep.edges_above(got) == {"gear_tip": 5156.0}
+    # each analysed (at its torques and between them): the refused one too
+    assert len(calls) == 4
 
 
 def test_a_relief_above_the_capacity_bound_is_refused(monkeypatch):

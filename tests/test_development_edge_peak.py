@@ -125,8 +125,60 @@ def test_a_relief_no_lower_is_refused(monkeypatch):
     assert got.values == WRITTEN | {"tip_relief_start": 0.75}
 
 
+@pytest.mark.parametrize(("peak", "kept"), [(2770.0 - 59.0, False), (2770.0 - 61.0, True)])
+def test_a_fall_within_the_peaks_resolution_is_not_kept(monkeypatch, peak, kept):
+    """The keep rule's minimum gain (:data:`~contact.optimize.development_edge_peak.
+    EDGE_GAIN_MIN`, 2.5 % of the static strength: 60 MPa at 2400 MPa, the edge peak's
+    resolution at ``ltca run``'s sampling): the deeper relief lowering the pinion edge
+    2770 → 2711 MPa (59 MPa) is refused as no better, 2770 → 2709 (61 MPa) kept; the
+    longer relief, which clears the edge, is kept either way."""
+    law = functools.partial(_ten_by_43, deep=(2770.0, peak))
+    seen, fake = seen_designs(law)
+    targets, setup, chosen = stand_in(monkeypatch, fake, [53.5, 357.0])
+    start = chosen(dict(WRITTEN))
+    assert dep.edge_gain(start) == pytest.approx(60.0)
+    seen.clear()
+    lines = []
+    got = dep.checked_edge_peak(start, targets, setup, None, lines.append, dict)
+    assert [s["tip_relief"] for s in seen] == [22.5, 22.5 if kept else 15.0]
+    assert got.values == WRITTEN | {"tip_relief": 22.5 if kept else 15.0,
+                                    "tip_relief_start": 0.75}
+    assert dep.edges_above(got) == {}
+    assert dep.lower_excess(start, got)
+
+
+def test_the_minimum_gain_is_a_fraction_of_the_static_strength():
+    """:func:`edge_gain` is :data:`EDGE_GAIN_MIN` × the static strength at the design
+    torque (a stronger material's peaks and their resolution scale with it); an edge above
+    the static strength by less than it is not one the step acts on, though ``ltca run``'s
+    attention (its criterion the static strength itself) still names it."""
+    from contact.optimize.development_result import DevelopmentEvaluation
+
+    def design(static, **peaks):
+        m = {k: np.asarray(v, float) for k, v in _peaks(**peaks).items()}
+        m["edge_static_strength"] = np.asarray([static, static])
+        return DevelopmentEvaluation(0, dict(WRITTEN), m, 0.0, {}, True, "", 0.0)
+
+    assert dep.EDGE_GAIN_MIN == 0.025
+    assert dep.edge_gain(design(2400.0)) == pytest.approx(60.0)
+    assert dep.edge_gain(design(3000.0)) == pytest.approx(75.0)
+    failed = DevelopmentEvaluation(0, dict(WRITTEN), None, np.inf, {}, False, "", 0.0)
+    assert dep.edge_gain(failed) == np.inf
+    assert not dep.lower_excess(failed, failed)  # no metrics: never better
+    two = design(2400.0, pinion_edge=2459.0, gear_tip=2461.0)
+    assert dep.edges_above(two) == {"gear_tip": 2461.0, "pinion_edge": 2459.0}
+    assert dep.edges_to_relieve(two) == {"gear_tip": 2461.0}
+    assert dep.edge_excess(two) == pytest.approx(120.0)
+    # clearing the gear tip (61 MPa of excess) is a gain, clearing the pinion edge is not
+    assert dep.lower_excess(two, design(2400.0, pinion_edge=2459.0))
+    assert not dep.lower_excess(two, design(2400.0, gear_tip=2461.0))
+    # a higher strength: the same peaks' excess and its resolution judged against it
+    assert dep.edges_to_relieve(design(2420.0, pinion_edge=2459.0, gear_tip=2461.0)) == {}
+
+
 @pytest.mark.parametrize("over", [
     _peaks(pinion_edge=2300.0),  # below the static strength
+    _peaks(pinion_edge=2459.0),  # above it by less than the peak's resolution (60 MPa)
     _peaks(),  # no edge counted
     {"drop": True},  # metrics without the edge peaks (no material, a failed analysis)
 ])

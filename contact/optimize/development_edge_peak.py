@@ -13,7 +13,8 @@ docs/own_gear_set.md, "Eight designs on the tree of the eighteenth session").
 
 The step reads the development's ``edge_peak_<kind>`` metrics at the design torque
 (:func:`~contact.optimize.development_evaluate.edge_peak_metrics`, the verdict's reading)
-and, for each kind above the static strength, worst first, tries its lever
+and, for each kind above the static strength (by more than the peak's resolution), worst
+first, tries its lever
 (:data:`LEVERS`): the pinion's tip relief for the pinion's edge (its tip on the gear
 flank), the pinion's root relief for the gear's tip edge (on the pinion's root, which
 a tip relief does not touch), a shorter contact ellipse (more lengthwise crowning) for
@@ -25,8 +26,10 @@ through the check's one relief loop
 keep rule (:func:`~contact.optimize.development_keep.kept_why`: no target the design met
 lost — asked first, the local pitting bound at the design torque among them
 (:func:`pitting_lost`) —, tolerant at ΔE/ΔP ± 0.05 mm) where its edges' excess over the
-static strength (:func:`edge_excess`) is lower; the step ends at the first design kept
-with no edge above the static strength.
+static strength (:func:`edge_excess`) is lower by at least the edge peak's resolution at
+that sampling (:func:`lower_excess`, :data:`EDGE_GAIN_MIN`: 2.5 % of the static strength);
+an edge above the static strength by less is not acted on (:func:`edges_to_relieve`), and
+the step ends at the first design kept with no edge above it by as much.
 
 Measured (``ltca synthesize`` then ``ltca run``, 2026-11-27; docs/synthesis.md, "The edge
 peak at the design torque"): the spiral bevel 15x45 Method 0 (gear tip 2731 MPa at 282.1
@@ -59,10 +62,10 @@ from geometry.core.errors import raise_if_interrupted
 
 log = logging.getLogger("contact.optimize.development")
 
-__all__ = ["DEEPER_FACTOR", "DEEPER_RANGE", "EARLIER_STEP", "EDGE_PEAK", "EDGE_WORDS",
-           "ELLIPSE_FRACTIONS", "LEVERS", "checked_edge_peak", "deeper", "earlier",
-           "edge_excess", "edge_peak_runs_on", "edges_above", "lever_designs",
-           "pitting_lost"]
+__all__ = ["DEEPER_FACTOR", "DEEPER_RANGE", "EARLIER_STEP", "EDGE_GAIN_MIN", "EDGE_PEAK",
+           "EDGE_WORDS", "ELLIPSE_FRACTIONS", "LEVERS", "checked_edge_peak", "deeper",
+           "earlier", "edge_excess", "edge_gain", "edge_peak_runs_on", "edges_above",
+           "edges_to_relieve", "lever_designs", "lower_excess", "pitting_lost"]
 
 #: the prescriptions that take the load off each edge kind (:data:`contact.ltca.edges.
 #: EDGE_KINDS`), tried in turn: the pinion's edge (its tip line on the gear flank) by the
@@ -95,6 +98,23 @@ EARLIER_STEP = 0.1
 #: the contact ellipse's lengths tried for a heel or toe edge, fractions of the design's
 #: (clipped to its range)
 ELLIPSE_FRACTIONS = (0.85, 0.7)
+
+#: [1] the least fall of the edges' summed excess over the static strength for which
+#: :data:`EDGE_PEAK` keeps a design, and the least excess of an edge it acts on, as a
+#: fraction of that strength (:func:`edge_gain`): 2.5 %, 60 MPa at the case-carburised
+#: steel's 2400 MPa — the edge peak's own resolution at ``ltca run``'s sampling (20 roll
+#: positions, 24 segments per contact curve). The peak is the largest of the edge
+#: segments' Hertzian pressures at the roll positions sampled, so it moves with the
+#: sampling: measured 2026-11-27 (docs/synthesis.md, "The edge-excess keep rule's minimum
+#: gain") on the bundled default case at 50 / 250 / 500 N m and on written cases of
+#: rounds 19/19b, the peaks above 2400 MPa of edges carrying 0.2 % of the torque or more
+#: moved by up to 58 MPa between 20 and 24 or 30 roll positions and up to 40 MPa between
+#: 24 and 28 or 32 segments (16 roll positions: up to 103 MPa; edges near the 0.05 %
+#: share floor, at 0.069–0.093 %: up to 279 MPa). A fall smaller than that is the
+#: sampling's, not the relief's (the 15x45's coast root relief 17.1 → 25.7 µm was kept on
+#: 3916 → 3914 MPa, lifting the coast flank peak 1465 → 1530 MPa), and an edge above the
+#: static strength by less is not resolved from it
+EDGE_GAIN_MIN = 0.025
 
 #: the relief amounts (µm) among the levers; the other levers are starts (fractions of the
 #: way from M) or the ellipse's length
@@ -168,6 +188,102 @@ def edge_excess(e: DevelopmentEvaluation) -> float:
         return math.inf
     static = float(np.asarray(e.metrics["edge_static_strength"], float)[-1])
     return float(sum(p - static for p in edges_above(e).values()))
+
+
+def edge_gain(e: DevelopmentEvaluation) -> float:
+    """The edge peak's resolution at the design torque [MPa]: :data:`EDGE_GAIN_MIN` × the
+    flank's static strength there — the least fall of the summed excess
+    (:func:`lower_excess`) and the least excess of an edge (:func:`edges_to_relieve`)
+    :data:`EDGE_PEAK` acts on.
+
+    Parameters
+    ----------
+    e : DevelopmentEvaluation
+        A design with ``metrics["edge_static_strength"]`` [MPa] per torque, light first.
+
+    Returns
+    -------
+    float — [MPa]
+        inf where ``e`` has no such metrics or its static strength is not finite.
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: the sampling's resolution of the edge peak, measured (:data:`EDGE_GAIN_MIN`);
+    the static strength σ_Hlim·Z_NT,stat·Z_W·Z_X of ISO 6336-2
+    (:func:`contact.study.verdicts.flank_static_strength`).
+    """
+    if e.metrics is None or "edge_static_strength" not in e.metrics:
+        return math.inf
+    static = float(np.asarray(e.metrics["edge_static_strength"], float)[-1])
+    return EDGE_GAIN_MIN * static if math.isfinite(static) else math.inf
+
+
+def edges_to_relieve(e: DevelopmentEvaluation) -> dict[str, float]:
+    """The edge kinds :data:`EDGE_PEAK` acts on: those of :func:`edges_above` whose peak
+    exceeds the static strength by at least :func:`edge_gain` (the sampling's resolution),
+    each with its peak [MPa], worst first.
+
+    Parameters
+    ----------
+    e : DevelopmentEvaluation
+        A design with the edge-peak metrics.
+
+    Returns
+    -------
+    dict str → float — [MPa]
+        Empty where no edge is above the static strength by that much: no relief could
+        lower the summed excess by :func:`edge_gain` by clearing one of them.
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    ``ltca run``'s ``edge_pressure`` attention still names the others (its criterion, the
+    static strength itself). Source: :data:`EDGE_GAIN_MIN`.
+    """
+    above = edges_above(e)
+    if not above:
+        return {}
+    static = float(np.asarray(e.metrics["edge_static_strength"], float)[-1])
+    gain = edge_gain(e)
+    return {k: p for k, p in above.items() if p - static >= gain}
+
+
+def lower_excess(best: DevelopmentEvaluation, e: DevelopmentEvaluation) -> bool:
+    """:data:`EDGE_PEAK`'s ``better``: the edges' summed excess over the static strength
+    (:func:`edge_excess`) of ``e`` is below ``best``'s by at least :func:`edge_gain` of
+    ``best`` (the sampling's resolution, :data:`EDGE_GAIN_MIN`).
+
+    Parameters
+    ----------
+    best : DevelopmentEvaluation
+        The design kept so far (the edge-peak metrics).
+    e : DevelopmentEvaluation
+        The step's design.
+
+    Returns
+    -------
+    bool
+        False where either has no metrics (inf excess or resolution).
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    A design that lowers one edge and lifts another by as much is no better, nor one that
+    lowers the sum by less than the peak's resolution (the 15x45's coast root relief kept
+    on 3916 → 3914 MPa before). Source: :data:`EDGE_GAIN_MIN`.
+    """
+    old = edge_excess(best)
+    return math.isfinite(old) and edge_excess(e) <= old - edge_gain(best)
 
 
 def deeper(values: Mapping[str, float], name: str, targets: DevelopmentTargets
@@ -317,7 +433,7 @@ def edge_peak_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     """
     if not best.checked_full:
         return False
-    return any(lever_designs(k, best.values, targets) for k in edges_above(best))
+    return any(lever_designs(k, best.values, targets) for k in edges_to_relieve(best))
 
 
 def _edge_designs(start: DevelopmentEvaluation, targets: DevelopmentTargets
@@ -326,17 +442,18 @@ def _edge_designs(start: DevelopmentEvaluation, targets: DevelopmentTargets
     # approach the design torque gives there; the relief (or the crowning) at that edge
     # deeper or longer than the deflection keeps the edge out of the loaded pattern
     # (Litvin & Fuentes 2004, §9.4; Stadtfeld 1993, ch. 3). Each kind above the static
-    # strength, worst first, from the design kept so far.
+    # strength by more than the peak's resolution (EDGE_GAIN_MIN), worst first, from the
+    # design kept so far.
     best, done = start, set()
     while True:
-        above = {k: p for k, p in edges_above(best).items() if k not in done}
+        above = {k: p for k, p in edges_to_relieve(best).items() if k not in done}
         if not above:
             return
         kind, peak = next(iter(above.items()))
         done.add(kind)
         static = float(np.asarray(best.metrics["edge_static_strength"], float)[-1])
         for name, x in lever_designs(kind, best.values, targets):
-            if kind not in edges_above(best):  # cleared by the design kept
+            if kind not in edges_to_relieve(best):  # cleared by the design kept
                 break
             now = float(best.values[name])
             if abs(x - now) < 1e-6:
@@ -351,11 +468,11 @@ def _edge_designs(start: DevelopmentEvaluation, targets: DevelopmentTargets
 
 
 #: the edge-peak variant: the relief (or the crowning) of each edge above the static
-#: strength at the design torque, kept where the edges' excess falls; ends where no edge
-#: is above
+#: strength at the design torque by more than the peak's resolution, kept where the
+#: edges' excess falls by at least that resolution (:func:`lower_excess`); ends where no
+#: edge is above by as much
 EDGE_PEAK = Relief("edge peak", edge_peak_runs_on, _edge_designs, lost_first=True,
-                   better=lambda best, e: edge_excess(e) < edge_excess(best),
-                   ends=lambda e: not edges_above(e))
+                   better=lower_excess, ends=lambda e: not edges_to_relieve(e))
 
 
 def pitting_lost(limit: float) -> Callable[[DevelopmentEvaluation, DevelopmentEvaluation],
