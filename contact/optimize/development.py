@@ -923,7 +923,9 @@ def _both_flanks_built(case: Case, wanted: bool, built: list[Case],
     (:func:`contact.optimize.development_root.decided_case`), each member's built as a
     check's own build would be (no earlier coefficients kept: the same numbers as before),
     and none of the case's own level, which no check reads (issue 75: the face-hobbed
-    11x46's re-syntheses built coarse10 models nothing read, docs/performance.md).
+    11x46's coast re-synthesis had its coarse10 models kept and written for nothing, and
+    `ltca run` of its case built the default drive model again: 11 s of CPU against 5,
+    docs/performance.md).
 
     Returns whether the case's FE model changed: True where a member's coefficients are
     neither the last built case's (the same cache key) nor kept from them, or where
