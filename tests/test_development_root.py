@@ -363,6 +363,40 @@ def test_a_root_limited_coast_torque_is_decided_on_the_default_model(monkeypatch
     assert "fe_level" not in setup
 
 
+def test_a_rewritten_case_builds_only_the_level_its_checks_read(monkeypatch):
+    """``development._both_flanks_built`` after a root-limited torque moved the checks to
+    the default model (``setup["fe_level"]``, :func:`~contact.optimize.development_root.
+    refined_for_root`): each re-synthesis's models are built on that level only, none on
+    the case's own coarse10 that no check reads (issue 75), and without an earlier
+    design's coefficients (``earlier`` None: a check's own build, the same numbers as
+    before); before any such move the case's own level as before."""
+    from development_stand_ins import counted_builds
+
+    from contact.optimize import development as dev
+
+    builds = counted_builds(monkeypatch)
+    handed = []
+    record = dr.both_flanks_built  # the stand-in: the level recorded, nothing built
+
+    def build(case, earlier=None, say=None):
+        handed.append(earlier)
+        return record(case, earlier, say)
+
+    monkeypatch.setattr(dr, "both_flanks_built", build)
+    case, built, say = _coarse_case(), [], lambda line: None
+    assert dev._both_flanks_built(case, True, built, say, {"torques": [15.0, 100.0]})
+    assert builds == ["coarse10"] and built == [case] and handed == [None]
+    setup = {"torques": [15.0, 100.0], "fe_level": "default"}
+    # the same members as the last case built: its FE model is unchanged
+    assert not dev._both_flanks_built(case, True, built, say, setup)
+    assert builds == ["coarse10", "default"] and handed == [None, None] and built == [case]
+    assert dev._both_flanks_built(case, False, built, say, setup)  # root stress off
+    assert builds == ["coarse10", "default"]
+    # no setup (or no level moved): the case's own level, the earlier case handed over
+    assert not dev._both_flanks_built(case, True, built, say)
+    assert builds == ["coarse10", "default", "coarse10"] and handed[-1] is case
+
+
 def _basic():
     from geometry.synthesis.basic_design import load_basic
 

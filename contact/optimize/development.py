@@ -502,7 +502,7 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     built: list[Case] = []  # the case whose FE models were built last (_both_flanks_built)
     given = (basic.options.design_torque is not None
              or basic.rating.get("design_torque") is not None)
-    _both_flanks_built(case, root_stress and coast.best is not None, built, say)
+    _both_flanks_built(case, root_stress and coast.best is not None, built, say, setup)
     if root_stress and not given:
         # the FE root stress and the local pitting safety of the written case at the
         # design torque (ltca run's FE model, cached: ltca run reads it), the torque
@@ -522,7 +522,8 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                 targets, setup, teeth, ceiling, root_text, say,
                 functools.partial(synthesize, progress=synthesis_progress, memo=memo),
                 functools.partial(_both_flanks_built, wanted=root_stress
-                                  and coast.best is not None, built=built, say=say))
+                                  and coast.best is not None, built=built, say=say,
+                                  setup=setup))
         _outclassed(setup, outclassed_below)
         if root_text and setup.get("pitting_tried") and "pitting" in setup["source"]:
             # a torque cut for the local pitting capacity says what was tried before it
@@ -549,7 +550,7 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
         if again is not None:  # the coast flank developed again at its own design torque
             coast, developed = again, again.basic
             case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
-            _both_flanks_built(case, root_stress, built, say)
+            _both_flanks_built(case, root_stress, built, say, setup)
             first = coast_cap
             coast, second = coast_flank_capacity(case, basic, coast, targets, setup,
                                                  first.torque, root_stress, searched,
@@ -572,7 +573,7 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                 held = (coast, developed, case, report)
                 coast, developed = relieved, relieved.basic
                 case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
-                _both_flanks_built(case, root_stress, built, say)
+                _both_flanks_built(case, root_stress, built, say, setup)
                 coast, again_cap = coast_flank_capacity(case, basic, coast, targets, setup,
                                                         coast_cap.start, root_stress,
                                                         searched, say)
@@ -588,7 +589,7 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                     say("development: the lighter coast tip relief carries no more; the "
                         "coast design kept")
                     coast, developed, case, report = held
-                    _both_flanks_built(case, root_stress, built, say)
+                    _both_flanks_built(case, root_stress, built, say, setup)
             # the coast LTE steps again where its torque was lowered after them
             level = flank_option_values(
                 pre_coast.options.flank(coast_flank.coast_side(developed))).get(TE_NAME)
@@ -598,7 +599,7 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
             if lte is not None:  # written, and analysed as `ltca run --flank coast` does
                 coast, developed = lte, lte.basic
                 case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
-                _both_flanks_built(case, root_stress, built, say)
+                _both_flanks_built(case, root_stress, built, say, setup)
                 coast, _ = coast_flank_capacity(case, basic, coast, targets, setup,
                                                 float(coast.torques[1]), root_stress,
                                                 False, say)
@@ -613,12 +614,12 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
             coast = within[0]
             developed = coast.basic
             case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
-            _both_flanks_built(case, root_stress, built, say)
+            _both_flanks_built(case, root_stress, built, say, setup)
             holds = coast_torque_that_holds(case, basic, coast, coast_cap, targets, setup,
                                             root_stress, say)
             if holds is None:  # no torque that holds with it: the design before the step
                 coast, developed, case, report = held
-                _both_flanks_built(case, root_stress, built, say)
+                _both_flanks_built(case, root_stress, built, say, setup)
             else:
                 coast, coast_cap = holds
         # an edge above the static strength at the coast design torque: its relief
@@ -627,7 +628,8 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
             (coast, developed, case, report), best, targets, setup, teeth, memo, say,
             coast_cap, basic, root_stress, functools.partial(
                 synthesize, progress=synthesis_progress, memo=memo),
-            functools.partial(_both_flanks_built, wanted=root_stress, built=built, say=say))
+            functools.partial(_both_flanks_built, wanted=root_stress, built=built, say=say,
+                              setup=setup))
     coast_seconds += time.process_time() - c_cap
     # a root-limited torque decided on the default FE model: the case written names it
     # (ltca run reads the model the torque was decided with)
@@ -918,7 +920,8 @@ def step_after_cut(before: DevelopmentEvaluation, cut: DevelopmentEvaluation,
 
 
 def _both_flanks_built(case: Case, wanted: bool, built: list[Case],
-                       say: Callable[[str], None]) -> bool:
+                       say: Callable[[str], None],
+                       setup: dict[str, Any] | None = None) -> bool:
     """Where ``wanted`` (root stress on, both flanks checked), both members' FE models of
     the case about to be checked, built once for both flanks
     (:func:`contact.optimize.development_root.both_flanks_built`): each re-synthesis after
@@ -930,6 +933,16 @@ def _both_flanks_built(case: Case, wanted: bool, built: list[Case],
     whole depth of the last built one's keeps that one's coefficients (said through
     ``say``; ``built`` holds the last case built, updated here).
 
+    ``setup`` (the development's state): where a root check moved the development to
+    another FE level (:func:`contact.optimize.development_root.refined_for_root`), the
+    models built are those of that level, the ones every root check after reads
+    (:func:`contact.optimize.development_root.decided_case`), each member's built as a
+    check's own build would be (no earlier coefficients kept: the same numbers as before),
+    and none of the case's own level, which no check reads (issue 75: the face-hobbed
+    11x46's coast re-synthesis had its coarse10 models kept and written for nothing, and
+    `ltca run` of its case built the default drive model again: 11 s of CPU against 5,
+    docs/performance.md).
+
     Returns whether the case's FE model changed: True where a member's coefficients are
     neither the last built case's (the same cache key) nor kept from them, or where
     nothing was built here (not ``wanted``, or no case before: unknown)."""
@@ -937,10 +950,14 @@ def _both_flanks_built(case: Case, wanted: bool, built: list[Case],
         return True
     from contact.compliance.fe import cache_key
     from contact.compliance.fe.options import case_fe_options
-    from contact.optimize.development_root import both_flanks_built
+    from contact.optimize.development_root import both_flanks_built, decided_case
 
     earlier = built[-1] if built else None
-    kept = both_flanks_built(case, earlier, say)
+    checked = decided_case(case, setup) if setup is not None else case
+    # the level the checks read: built there without keeping an earlier design's
+    # coefficients (a check's own build), the case's own level not at all
+    kept = (both_flanks_built(case, earlier, say) if checked is case
+            else both_flanks_built(checked, None, say))
     built[:] = [case]
     if earlier is None:
         return True
@@ -952,4 +969,3 @@ def _both_flanks_built(case: Case, wanted: bool, built: list[Case],
     except Exception as exc:  # unknown: taken as changed (the root capacity taken again)
         raise_if_interrupted(exc)
         return True
-
