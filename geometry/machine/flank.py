@@ -147,7 +147,8 @@ def projection_fractions(corners: np.ndarray, axial, radius, *, tol: float = 1e-
     axial, radius : arrays (...) — [mm]
         z and ρ of the points (with per-point corners: shape (P,)).
     tol : float — [1]
-        Stop when every point's Newton step |Δu| + |Δv| is below this.
+        Stop when every point's Newton step |Δu| + |Δv| is below this (a NaN point's
+        step is NaN: it does not keep the loop going).
     max_iter : int
         Cap on the Newton steps.
 
@@ -192,7 +193,9 @@ def projection_fractions(corners: np.ndarray, axial, radius, *, tol: float = 1e-
         dv = (uz * rr - ur * rz) / det
         u -= du
         v -= dv
-        if np.all(np.abs(du) + np.abs(dv) < tol):
+        # a NaN point ("no point") has NaN steps: it does not hold the others' loop to
+        # max_iter (each point's u, v are those of a batch without it)
+        if not np.any(np.abs(du) + np.abs(dv) >= tol):
             break
     return u, v
 
