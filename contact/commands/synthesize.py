@@ -518,7 +518,8 @@ def first_lines(basic, development, record, shown: str) -> list[str]:
                 f"the verdict's {LTE_LIMIT:g} urad; not written",
                 f"  the remedied design, developed and written: LTE p-p "
                 f"{', '.join(lte_parts(development))} (light/design), {within} the "
-                f"verdict's {LTE_LIMIT:g} urad (ltca run judges it between its torques too)"]
+                f"verdict's {LTE_LIMIT:g} urad (ltca run judges it between its torques too)",
+                *_developed_lines(applied)]
     if record is None or worst <= LTE_LIMIT:
         return []
     before = contact_ratios_of(basic.design)
@@ -544,6 +545,20 @@ def first_lines(basic, development, record, shown: str) -> list[str]:
                     f"case's {record.reference_ute:.0f}); its LTE is its own development's, "
                     f"not estimated: ltca synthesize {shown} --apply-remedy applies it and "
                     "writes that development"]
+
+
+def _developed_lines(applied) -> list[str]:
+    """Where ``--apply-remedy`` developed more than one remedy (the first's drive LTE above
+    the verdict's limit over ``ltca run``'s torques,
+    :func:`contact.optimize.development_remedy_next.next_remedies`): each remedy developed
+    with its numbers, and why the one written was kept; empty otherwise."""
+    from contact.optimize.development_remedy_next import developed_text
+    from contact.study.verdicts import LTE_LIMIT
+
+    said = developed_text(tuple(getattr(applied, "developed", ())), LTE_LIMIT)
+    if not said:
+        return []
+    return [f"  {said}", f"  {applied.kept_why}"]
 
 
 def _with_record(case, record):
