@@ -274,9 +274,14 @@ def test_user_design_synthesised_developed_run_and_rated(basic, tmp_path, capsys
 #: after the development judged the drive LTE between its torques (branch remedy79): b2 27
 #: -> 32.6 mm, ε_vβ 1.00 -> 1.25, drive LTE 45.1 / 58.2 urad at 104.8 / 699.2 N m and 63.3
 #: urad between them at 501.1 N m (ATTENTION; no design the development tried kept 60
-#: there), coast 43.4 / 45.2 urad at 104.8 / 260.3 N m and at most 47.1 between
+#: there), coast 43.4 / 45.2 urad at 104.8 / 260.3 N m and at most 47.1 between. Since
+#: the next checked remedy is developed where the first misses 60 urad between the torques
+#: (contact.optimize.development_remedy_next; measured 2026-11-27, branch remedynext80):
+#: the 15x31's beta_m 40 -> 46.3 deg is kept (ε_vα 0.98), drive LTE 41.6 / 57.8 urad at
+#: 77.2 / 514.8 N m and 49.0 / 56.3 urad between them (ATTENTION 3); the 15x28's beta_m
+#: 43.9 deg developed to 40.8 / 71.7 urad and was not kept (b2 written as before)
 REMEDIED = {"spiral_bevel_15x28_s110": ("b2", 28.0, 36.5, 62.4),
-            "hypoid_15x31_a10": ("b2", 27.0, 32.6, 63.3)}
+            "hypoid_15x31_a10": ("beta_m", 40.0, 46.3, 56.3)}
 
 
 @pytest.mark.slow

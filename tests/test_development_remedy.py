@@ -12,11 +12,13 @@ contact ratios and the remedies' values are the real file's."""
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import math
 import types
 from pathlib import Path
 
+import numpy as np
 import pytest
 from development_stand_ins import checked, metrics
 
@@ -58,7 +60,7 @@ def _result(basic, lte, coast_lte=(52.0, 78.0)):
                              targets, 1.0, coast=coast, coast_torques=(91.8, 445.5))
 
 
-def _stand_in_checks(monkeypatch, measured):
+def _stand_in_checks(monkeypatch, measured, written=WRITTEN):
     """The remedies' syntheses and the written case's unloaded TE replaced by
     ``measured`` (field -> (ute, span, valid) or a failure message); returns the designs
     each check was given."""
@@ -72,7 +74,7 @@ def _stand_in_checks(monkeypatch, measured):
         return remedy_check.ChangeCheck(change, *m, "", 0.5)
 
     monkeypatch.setattr(remedy_check, "check_change", check)
-    monkeypatch.setattr(remedy_check, "unloaded_te_pp", lambda case: WRITTEN)
+    monkeypatch.setattr(remedy_check, "unloaded_te_pp", lambda case: written)
     return seen
 
 
@@ -222,3 +224,193 @@ def test_apply_remedy_argument(tmp_path, capsys):
                  str(out)]) == 2
     assert "no contact-ratio remedy to apply" in capsys.readouterr().err
     assert not out.exists()
+
+
+# --- the next checked remedy (contact.optimize.development_remedy_next) -------------------
+
+#: the 15x28's first remedy developed (b2 36.5 mm; measured 2026-11-27, branch
+#: remedynext80, and the same in session 19): drive LTE p-p 19.8 / 45.1 urad at its torques
+#: and 62.4 urad between them (ltca run's lte_range), its check's record
+FIRST_RANGE = ((123.6, 240.4, 298.8, 357.2, 590.7, 824.3),
+               (19.8, 32.2, 47.6, 62.4, 59.4, 45.1))
+#: the hypoid 15x31 at a = 0.056 d_e2 (benchmarks/data/unseen_designs, ε_vβ 1.00), measured
+#: 2026-11-27 (branch remedynext80): its checks (unloaded TE p-p [µrad] at the written
+#: prescriptions; the written case's 40), its first remedy's development (b2 32.6 mm:
+#: 44.8 / 59.0 urad at 107.3 / 716 N m, 63.3 urad at 513.1 N m between, ltca run's
+#: lte_range) and its next's (beta_m 46.3 deg, ε_vα 0.98: 41.5 / 58.1 urad at 77.2 / 514.8
+#: N m, 49.0 / 56.3 urad at 223.1 / 368.9 N m between)
+HYPOID = UNSEEN / "hypoid_15x31_a10.toml"
+HYPOID_CHECKS = {"b2": (32.0, 60.0, 0.7), "beta_m": (60.0, 70.0, 0.7)}
+HYPOID_FIRST = ((107.3, 310.2, 360.9, 411.6, 513.1, 716.0),
+                (44.8, 53.3, 59.1, 61.6, 63.3, 59.0))
+
+
+def _judged(result, found):
+    """``result`` whose check recorded its chosen design's LTE over ltca run's torques
+    (``found``: torques [N m], LTE p-p [urad]), as the development's ``lte_range``."""
+    t, y = found
+    i = max(range(len(y)), key=lambda k: y[k])
+    return dataclasses.replace(result, torque=(t[0], t[-1]), lte_range={
+        "torques": t, "lte": y, "peak": y[i], "at": t[i], "values": dict(result.best.values)})
+
+
+def _next_run(basic, developments):
+    """A stand-in development per basic design: the design as given, then each remedy by
+    its field (``developments``: field -> result maker or an exception); returns (run, the
+    basic data each development was given)."""
+    given: list = []
+
+    def run(b):
+        given.append(b)
+        if len(given) == 1:
+            return _result(b, (86.0, 93.0))
+        field = "b2" if b.design.b2 != basic.design.b2 else "beta_m"
+        made = developments[field]
+        if isinstance(made, Exception):
+            raise made
+        return made(b)
+
+    return run, given
+
+
+def test_next_remedy_developed_where_the_first_misses_the_lte_between_its_torques(
+        monkeypatch):
+    """The hypoid 15x31: its first remedy (b2 32.6 mm) developed keeps 44.8 / 59.0 urad at
+    its torques and reaches 63.3 urad between them; the next checked remedy (beta_m 46.3
+    deg, ranked after: ε_vα 0.98) is developed, its range judged by range_lte on the
+    stand-in analysis (its check left no record) and kept, its largest LTE over the range
+    58.1 urad within 60 and no target the first met lost; synthesize's first lines say
+    both remedies with their numbers and why the one written was kept; the table records
+    both."""
+    from development_stand_ins import seen_designs
+
+    from contact.commands.synthesize import first_lines
+    from contact.optimize import development_remedy_next as nxt
+
+    basic = load_basic(HYPOID)
+    _stand_in_checks(monkeypatch, HYPOID_CHECKS, (40.0, 60.0, 0.7))
+
+    def law(case, torques, misalignment, **kw):  # the beta_m design's LTE between
+        return {"lte_peak_to_peak": np.asarray([{223.1: 49.0, 368.9: 56.3}[round(t, 1)]
+                                                for t in torques])}, {}
+
+    seen, fake = seen_designs(law)
+    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
+
+    def spiral(b):
+        r = _result(b, (41.5, 58.1))
+        return dataclasses.replace(r, torque=(77.2, 514.8),
+                                   best=dataclasses.replace(r.best, case={"beta_m": 46.3}))
+
+    run, given = _next_run(basic, {"b2": lambda b: _judged(_result(b, (44.8, 59.0)),
+                                                           HYPOID_FIRST),
+                                   "beta_m": spiral})
+    said: list[str] = []
+    result = developed_with_remedy(run, basic, said.append)
+    assert len(given) == 3  # the design as given, b2, beta_m: one more development
+    assert [b.design.b2 for b in given] == [27.0, 32.6, 27.0]
+    assert math.degrees(given[2].design.beta_m) == pytest.approx(46.3, abs=1e-9)
+    applied = result.remedy
+    assert applied.check.change.field == "beta_m" and applied.basic is given[2]
+    assert result.best.metrics["lte_peak_to_peak"][1] == 58.1
+    # the b2 design's range was its check's record; the beta_m design analysed once at
+    # the two torques between (77.2, 223.1, 368.9, 514.8 N m), no crossing to bisect
+    assert seen == [{"beta_m": 46.3}]
+    first, second = applied.developed
+    assert (first.peak, first.at, second.peak, second.at) == (63.3, 513.1, 58.1, 514.8)
+    assert first.why.startswith("the next, mean spiral angle beta_m 40 -> 46.3 deg, kept")
+    assert second.why == ""
+    assert applied.kept_why == (
+        "kept mean spiral angle beta_m 40 -> 46.3 deg: its drive LTE p-p over ltca run's "
+        "torques 58.1 urad at 514.8 N m, within 60 urad, where gear face width b2 27 -> "
+        "32.6 mm's was 63.3 urad at 513.1 N m; no target the first met lost (the pattern's "
+        "length aside)")
+    assert any("above 60 urad between its torques; the next checked remedy, mean spiral "
+               "angle beta_m 40 -> 46.3 deg, developed" in line for line in said)
+    lines = first_lines(applied.basic, result, None, "x.toml")
+    assert lines[0].startswith("applied remedy (--apply-remedy): mean spiral angle beta_m "
+                               "40 -> 46.3 deg")
+    assert lines[3] == (
+        "  remedies developed in the check's order: gear face width b2 27 -> 32.6 mm: drive "
+        "LTE p-p 44.8/59.0 urad at 107.3/716 N m, 63.3 urad at 513.1 N m over ltca run's "
+        "torques (above 60), 1 s CPU; mean spiral angle beta_m 40 -> 46.3 deg: drive LTE p-p "
+        "41.5/58.1 urad at 77.2/514.8 N m, 58.1 urad at 514.8 N m over ltca run's torques "
+        "(within 60), 1 s CPU")
+    assert lines[4] == "  " + applied.kept_why
+    table = json.loads(json.dumps(applied_table(applied)))
+    assert [(r["field"], r["range_peak_urad"]) for r in table["developed"]] == [
+        ("b2", 63.3), ("beta_m", 58.1)]
+    assert table["kept_why"] == applied.kept_why
+    assert nxt.NEXT_REMEDIES == 1
+
+
+def test_next_remedy_not_kept_where_it_scores_no_better(monkeypatch):
+    """The 15x28: the next remedy's development (beta_m 43.9 deg, measured: 40.8 / 71.7
+    urad at 76.4 / 509.7 N m) reaches a higher LTE over the range than the first's 62.4
+    urad: the first is kept and written, the reason said in numbers; its development
+    failing instead, the first is kept too, the failure said."""
+    from contact.commands.synthesize import first_lines
+
+    basic = load_basic(FIFTEEN)
+    _stand_in_checks(monkeypatch, MEASURED)
+    first = lambda b: _judged(_result(b, (19.8, 45.1)), FIRST_RANGE)  # noqa: E731
+    worse = ((76.4, 509.7), (40.8, 71.7))
+    run, given = _next_run(basic, {
+        "b2": first, "beta_m": lambda b: _judged(_result(b, (40.8, 71.7)), worse)})
+    result = developed_with_remedy(run, basic)
+    assert len(given) == 3 and result.remedy.check.change.field == "b2"
+    assert result.remedy.basic is given[1]
+    assert result.best.metrics["lte_peak_to_peak"][1] == 45.1
+    assert result.remedy.kept_why == (
+        "kept gear face width b2 28 -> 36.5 mm (its drive LTE p-p over ltca run's torques "
+        "62.4 urad at 357.2 N m, above 60 urad): the next, mean spiral angle beta_m 35 -> "
+        "43.9 deg (71.7 urad at 509.7 N m), not kept: it scores no better (its drive LTE "
+        "p-p over the range 71.7 urad against 62.4)")
+    lines = first_lines(result.remedy.basic, result, None, "x.toml")
+    assert lines[0].startswith("applied remedy (--apply-remedy): gear face width b2 28 -> "
+                               "36.5 mm") and lines[4] == "  " + result.remedy.kept_why
+
+    run, given = _next_run(basic, {"b2": first,
+                                   "beta_m": InputError("design.beta_m: no solution")})
+    result = developed_with_remedy(run, basic)
+    assert len(given) == 3 and result.remedy.check.change.field == "b2"
+    assert result.remedy.kept_why.endswith("not kept: its development failed "
+                                           "(design.beta_m: no solution)")
+
+
+def test_next_remedy_within_the_limit_not_kept_where_it_loses_a_met_target(monkeypatch):
+    """The next remedy keeps the limit over the range (53 urad) but its edge share at the
+    design torque misses the target the first met (8 % against 4 %): not kept, the
+    check's keep rule (development_keep.kept_why) says which target."""
+    basic = load_basic(FIFTEEN)
+    _stand_in_checks(monkeypatch, MEASURED)
+
+    def edged(b):
+        r = _judged(_result(b, (34.0, 53.0)), ((89.4, 509.7), (34.0, 53.0)))
+        m = metrics(lte_peak_to_peak=[34.0, 53.0], edge_load_share=[0.0, 0.08])
+        return dataclasses.replace(r, best=checked(dict(r.best.values), m,
+                                                   DevelopmentTargets(), 0.6))
+
+    run, given = _next_run(basic, {
+        "b2": lambda b: _judged(_result(b, (19.8, 45.1)), FIRST_RANGE), "beta_m": edged})
+    result = developed_with_remedy(run, basic)
+    assert len(given) == 3 and result.remedy.check.change.field == "b2"
+    assert result.remedy.kept_why.endswith("not kept: it misses edge")
+
+
+def test_no_next_remedy_where_the_first_keeps_the_limit_between_its_torques(monkeypatch):
+    """The first remedy's development keeps 60 urad over ltca run's torques (the FH 9x37
+    at Sigma 85 deg's b2 30.3 mm, every criterion met): nothing more is developed, the
+    first lines and the table are those of one remedy."""
+    from contact.commands.synthesize import first_lines
+
+    basic = load_basic(FIFTEEN)
+    _stand_in_checks(monkeypatch, MEASURED)
+    run, given = _next_run(basic, {"b2": lambda b: _judged(_result(b, (19.8, 45.1)),
+                                                           ((123.6, 824.3), (19.8, 45.1))),
+                                   "beta_m": InputError("never developed")})
+    result = developed_with_remedy(run, basic)
+    assert len(given) == 2 and result.remedy.check.change.field == "b2"
+    assert len(result.remedy.developed) == 1 and result.remedy.kept_why == ""
+    assert len(first_lines(result.remedy.basic, result, None, "x.toml")) == 3
+    assert "developed" not in applied_table(result.remedy)

@@ -62,7 +62,9 @@ def register(sub) -> None:
                         "pressure angle alpha_dD) to the basic data and write the remedied "
                         "design's development, the change recorded in its source (default: "
                         "the basic data as given, the remedy only offered; about twice the "
-                        "CPU; contact.optimize.development_remedy)")
+                        "CPU, three times where the first remedy's drive LTE exceeds 60 "
+                        "urad between the torques and the next checked remedy is developed "
+                        "too; contact.optimize.development_remedy)")
     # on a fresh numba cache only the envelope's kernels earn their compile back within
     # one synthesis (~10 s of compiling against ~14 s saved); the iso-lines', the shell's
     # and the block pivoting's (~17 s) do not: NumPy until cached (issue 75)
@@ -524,7 +526,8 @@ def first_lines(basic, development, record, shown: str) -> list[str]:
                 f"the verdict's {LTE_LIMIT:g} urad; not written",
                 f"  the remedied design, developed and written: LTE p-p "
                 f"{', '.join(lte_parts(development))} (light/design), {within} the "
-                f"verdict's {LTE_LIMIT:g} urad (ltca run judges it between its torques too)"]
+                f"verdict's {LTE_LIMIT:g} urad (ltca run judges it between its torques too)",
+                *_developed_lines(applied)]
     if record is None or worst <= LTE_LIMIT:
         return []
     before = contact_ratios_of(basic.design)
@@ -550,6 +553,20 @@ def first_lines(basic, development, record, shown: str) -> list[str]:
                     f"case's {record.reference_ute:.0f}); its LTE is its own development's, "
                     f"not estimated: ltca synthesize {shown} --apply-remedy applies it and "
                     "writes that development"]
+
+
+def _developed_lines(applied) -> list[str]:
+    """Where ``--apply-remedy`` developed more than one remedy (the first's drive LTE above
+    the verdict's limit over ``ltca run``'s torques,
+    :func:`contact.optimize.development_remedy_next.next_remedies`): each remedy developed
+    with its numbers, and why the one written was kept; empty otherwise."""
+    from contact.optimize.development_remedy_next import developed_text
+    from contact.study.verdicts import LTE_LIMIT
+
+    said = developed_text(tuple(getattr(applied, "developed", ())), LTE_LIMIT)
+    if not said:
+        return []
+    return [f"  {said}", f"  {applied.kept_why}"]
 
 
 def _with_record(case, record):

@@ -298,7 +298,8 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
         α_dD where ε_vα < 1) and return the remedied design's development, its
         ``remedy`` saying what changed
         (:func:`contact.optimize.development_remedy.developed_with_remedy`; about twice
-        the CPU).
+        the CPU, three times where the first remedy's drive LTE exceeds the verdict's
+        limit between the torques and the next checked remedy is developed too).
 
     Returns
     -------

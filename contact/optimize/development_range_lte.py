@@ -27,8 +27,8 @@ over the range keeps the limit, as the long bearing buys the LTE with it). The r
 
 Public names
 ------------
-RANGE_KEY, STAGE, ELLIPSE_STEPS, range_lte, range_peak, range_better, range_record,
-recorded_range, checked_range_lte
+RANGE_KEY, STAGE, ELLIPSE_STEPS, range_lte, range_peak, range_better, peak_better,
+range_record, recorded_range, checked_range_lte
 """
 
 from __future__ import annotations
@@ -58,8 +58,8 @@ from geometry.case import Case
 from geometry.core.errors import raise_if_interrupted
 from geometry.core.text import plain_number
 
-__all__ = ["ELLIPSE_STEPS", "RANGE_KEY", "STAGE", "checked_range_lte", "range_better",
-           "range_lte", "range_peak", "range_record", "recorded_range"]
+__all__ = ["ELLIPSE_STEPS", "RANGE_KEY", "STAGE", "checked_range_lte", "peak_better",
+           "range_better", "range_lte", "range_peak", "range_record", "recorded_range"]
 
 log = logging.getLogger("contact.optimize.development")
 
@@ -266,15 +266,52 @@ def range_better(setup: Mapping[str, Any], teeth: KeptTeeth | None,
     def better(best: DevelopmentEvaluation, e: DevelopmentEvaluation) -> bool:
         old, _ = range_peak(range_lte(best, setup, teeth, flank=flank, key_prefix=key_prefix))
         new, _ = range_peak(range_lte(e, setup, teeth, flank=flank, key_prefix=key_prefix))
-        if not math.isfinite(new):
-            return False
-        if math.isfinite(old) and old > cap:
-            return new < old - _SAME_PEAK
-        if new > cap:
-            return False
-        return ranks_better(best, e)
+        return peak_better(old, new, best, e, cap)
 
     return better
+
+
+def peak_better(old: float, new: float, best: DevelopmentEvaluation,
+                e: DevelopmentEvaluation, limit: float) -> bool:
+    """:func:`range_better`'s rule on two largest LTE p-p over the range already judged,
+    each at its own design's torques (``ltca synthesize --apply-remedy`` compares the
+    developments of two remedied basic designs, whose design torques differ:
+    :mod:`contact.optimize.development_remedy_next`).
+
+    Parameters
+    ----------
+    old, new : float — [µrad]
+        The largest LTE p-p over the range of ``best`` and ``e`` (:func:`range_peak`; NaN:
+        not judged).
+    best, e : DevelopmentEvaluation
+        The design kept so far and the other, both scored (their ``full``).
+    limit : float — [µrad]
+        The verdict's LTE limit.
+
+    Returns
+    -------
+    bool
+        True where ``new`` is lower than ``old`` by more than 0.05 µrad and ``old`` is
+        above ``limit``; where both are within it, where ``e`` ranks better by the check's
+        rank (:func:`~contact.optimize.development_keep.ranks_better`); never where
+        ``new`` is above ``limit`` and ``old`` within, or ``new`` is not finite.
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: ``ltca run``'s ``lte_range`` verdict (issue 71, "LTE p-p ≤ 60 µrad at every
+    torque"); the rule :func:`range_better` applies to a check step's variants.
+    """
+    if not math.isfinite(new):
+        return False
+    if math.isfinite(old) and old > limit:
+        return new < old - _SAME_PEAK
+    if new > limit:
+        return False
+    return ranks_better(best, e)
 
 
 def range_record(setup: Mapping[str, Any]) -> dict[str, Any] | None:

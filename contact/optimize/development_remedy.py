@@ -25,7 +25,10 @@ change that passed its check, on request:
   ``source``, which the case's ``source`` cites first;
 * :func:`developed_with_remedy` — the development of the basic data as given (the one
   whose written case the check needs), the check, and the development of the remedied
-  basic data, returned with :class:`AppliedRemedy` as its ``remedy``.
+  basic data, returned with :class:`AppliedRemedy` as its ``remedy``; where that
+  development's drive LTE exceeds the verdict's limit between its torques, the next
+  checked remedy developed too and the better kept
+  (:func:`~contact.optimize.development_remedy_next.next_remedies`).
 
 Public names
 ------------
@@ -82,6 +85,14 @@ class AppliedRemedy(NamedTuple):
         The developed LTE p-p of the design as given (:func:`lte_parts`).
     given_worst : float — [µrad]
         Its largest LTE p-p, drive or coast, light or design torque.
+    developed : tuple of contact.optimize.development_remedy_next.RemedyDeveloped
+        Every remedy developed, in the check's order, each judged over ``ltca run``'s
+        torques (:func:`~contact.optimize.development_remedy_next.next_remedies`: the next
+        one developed where the one before misses the drive LTE limit there); empty where
+        not recorded.
+    kept_why : str
+        Why the remedy applied was kept over the others developed, in numbers (empty
+        where one alone was developed).
     """
 
     check: Any
@@ -92,6 +103,8 @@ class AppliedRemedy(NamedTuple):
     ratios_after: tuple[float, float]
     given_lte: str
     given_worst: float
+    developed: tuple = ()
+    kept_why: str = ""
 
 
 def ratio_changes(design) -> list:
@@ -377,11 +390,17 @@ def developed_with_remedy(run: Callable[[Any], Any], basic,
     Notes
     -----
     Two developments (about twice ``ltca synthesize``'s CPU) and one synthesis without
-    tip planes per change checked (0.5-1 s each). The change reaches its ratio's limit on
+    tip planes per change checked (0.5-1 s each); where the remedied development's drive
+    LTE p-p is above the verdict's limit over ``ltca run``'s torques, the next checked
+    remedy developed too (:func:`~contact.optimize.development_remedy_next.next_remedies`,
+    at most :data:`~contact.optimize.development_remedy_next.NEXT_REMEDIES` more full
+    developments) and the better kept, each remedy developed recorded in the result's
+    :class:`AppliedRemedy`. The change reaches its ratio's limit on
     ISO 10300-1's virtual gears (ISO 23509 blank); its LTE is the remedied design's own
     development, never estimated (docs/own_gear_set.md, "The overlap change is a trial").
     """
-    from contact.optimize.remedy_check import unloaded_te_pp
+    from contact.optimize.development_remedy_next import next_remedies
+    from contact.optimize.remedy_check import ranked_changes, unloaded_te_pp
     from contact.study.verdicts import LTE_LIMIT
     from geometry.core.errors import InputError, ModelUnavailableError
 
@@ -410,15 +429,29 @@ def developed_with_remedy(run: Callable[[Any], Any], basic,
             f"written prescriptions ({_refused_text(record)}); nothing written: the design "
             "as given is developed and written without apply_remedy (ltca synthesize "
             "without --apply-remedy), its note says why each change is refused")
-    remedied = remedied_basic(basic, chosen.change)
-    old = file_value(basic.design, chosen.change.field)
-    new = file_value(remedied.design, chosen.change.field)
-    said(f"apply_remedy: {change_text(chosen.change.field, old, new)} applied; the remedied "
-         "design developed")
-    second = run(remedied)
-    applied = AppliedRemedy(chosen, record, remedied, old, before,
-                            contact_ratios_of(remedied.design),
-                            ", ".join(lte_parts(first)), worst_lte(first))
+    given: dict[int, Any] = {}  # the remedied basic data each development was given
+
+    def remedied(check):
+        given[id(check)] = remedied_basic(basic, check.change)
+        return given[id(check)]
+
+    def text(check) -> str:
+        return change_text(check.change.field, file_value(basic.design, check.change.field),
+                           file_value(remedied_basic(basic, check.change).design,
+                                      check.change.field))
+
+    said(f"apply_remedy: {text(chosen)} applied; the remedied design developed")
+    second = run(remedied(chosen))
+    # where that development misses the drive LTE limit over `ltca run`'s torques, the next
+    # checked remedy developed and the better kept (development_remedy_next)
+    passed, _ = ranked_changes(record.checks, record.reference_ute, record.limit)
+    chosen, second, developed, why = next_remedies(
+        (chosen, second), [c for c in passed if c is not chosen],
+        lambda check: run(remedied(check)), text, LTE_LIMIT, said)
+    kept = given[id(chosen)]
+    applied = AppliedRemedy(chosen, record, kept, file_value(basic.design, chosen.change.field),
+                            before, contact_ratios_of(kept.design),
+                            ", ".join(lte_parts(first)), worst_lte(first), developed, why)
     return dataclasses.replace(second, remedy=applied)
 
 
@@ -435,7 +468,10 @@ def applied_table(applied: AppliedRemedy) -> dict[str, Any]:
     dict
         ``note``, ``field``, ``before``, ``after`` [file unit], ``text`` (the note's
         phrase), the contact ratios before and after, the design as given's LTE p-p
-        (``given_lte``, ``given_worst_lte_urad``) and ``checks``: every change checked
+        (``given_lte``, ``given_worst_lte_urad``), where more than one remedy was
+        developed each of them (``developed``: torques, LTE p-p, its peak over ``ltca
+        run``'s torques, CPU, why not kept) and why the applied one was kept
+        (``kept_why``), and ``checks``: every change checked
         (:func:`~contact.optimize.remedy_check.remedy_record`).
     """
     from contact.optimize.remedy_check import remedy_record
@@ -454,4 +490,17 @@ def applied_table(applied: AppliedRemedy) -> dict[str, Any]:
             "text": change.text,
             **{k: round(float(v), 3) for k, v in ratios.items() if math.isfinite(v)},
             "given_lte": applied.given_lte,
+            **({"developed": [_developed_row(d) for d in applied.developed],
+                "kept_why": applied.kept_why} if len(applied.developed) > 1 else {}),
             "checks": remedy_record(applied.record)}
+
+
+def _developed_row(d) -> dict[str, Any]:
+    """One remedy developed (:class:`~contact.optimize.development_remedy_next.
+    RemedyDeveloped`) as a TOML-safe row (a value not measured left out)."""
+    numbers = {"light_torque": d.torques[0], "design_torque": d.torques[1],
+               "lte_light_urad": d.lte[0], "lte_design_urad": d.lte[1],
+               "range_peak_urad": d.peak, "range_peak_at": d.at, "cpu_s": d.seconds}
+    return {"text": d.text, "field": d.field,
+            **{k: round(float(v), 3) for k, v in numbers.items() if math.isfinite(v)},
+            "why_not_kept": d.why}
