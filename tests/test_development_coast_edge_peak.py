@@ -165,7 +165,10 @@ def test_a_relief_past_60_urad_between_the_torques_is_refused(monkeypatch):
     it clears the edge and misses no other target; the pinion edge's tip relief is then
     tried on the design as written (35 µrad between) and kept. Where the design kept is
     above 60 µrad between the torques itself (65), the same relief is not refused on that
-    account: kept, then the tip relief on it."""
+    account where it lowers it (61): kept, then the tip relief on it; where it raises it
+    (70, as the FH 20×24 Σ 100° remedied's tip relief back to 15 µm went 80.7 → 94.4) it is
+    refused (said with both numbers), and the tip relief, which leaves it at 65 (the same
+    peak, not above the kept design's), is kept."""
     seen, fake = seen_designs(_between({40.0: (35.0, 32.0), 60.0: (61.0, 40.0)}))
     targets, setup, chosen = stand_in(monkeypatch, fake, TORQUES)
     start = dataclasses.replace(chosen(dict(COAST)), case=dict(COAST))
@@ -191,6 +194,18 @@ def test_a_relief_past_60_urad_between_the_torques_is_refused(monkeypatch):
                                       bound=math.inf, key_prefix=PREFIX)
     assert not any("between the torques" in s for s in lines), lines
     assert got.values == COAST | {"root_relief": 60.0, "tip_relief": 22.5}
+    # the design kept above the limit between the torques, the relief worse there: refused
+    seen, fake = seen_designs(_between({40.0: (65.0, 32.0), 60.0: (70.0, 40.0)}))
+    targets, setup, chosen = stand_in(monkeypatch, fake, TORQUES)
+    start = dataclasses.replace(chosen(dict(COAST)), case=dict(COAST))
+    lines.clear()
+    got = dce.checked_coast_edge_peak(start, targets, setup, None, lines.append, dict,
+                                      bound=math.inf, key_prefix=PREFIX)
+    assert any("not kept: the root_relief 60 um for the gear tip misses LTE p-p 70.0 urad "
+               "between the torques (the design kept 65.0)" in s for s in lines), lines
+    assert sum("between the torques" in s for s in lines) == 1, lines
+    assert got.values == COAST | {"tip_relief": 22.5}
+    assert dep.edges_above(got) == {"gear_tip": 5156.0}
 
 
 def _check(torque, pressure=1500.0, pitting=1.2, root=2.0):

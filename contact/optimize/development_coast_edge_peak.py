@@ -42,7 +42,7 @@ from contact.optimize.development_edge_peak import (
     pitting_lost,
 )
 from contact.optimize.development_evaluate import KeptTeeth
-from contact.optimize.development_range_lte import range_lte, range_peak
+from contact.optimize.development_range_lte import SAME_PEAK, range_lte, range_peak
 from contact.optimize.development_relief_lte import checked_relief_variants
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import DevelopmentTargets
@@ -104,7 +104,11 @@ def checked_coast_edge_peak(best: DevelopmentEvaluation, targets: DevelopmentTar
     (:data:`~contact.optimize.development_edge_peak.EDGE_PEAK`, stage :data:`STAGE`)
     through :func:`~contact.optimize.development_relief_lte.checked_relief_variants` on the
     coast flank (module docstring). At most two designs per edge kind above the static
-    strength.
+    strength. A variant whose coast LTE p-p between the torques (``ltca run --flank
+    coast``'s ``lte_range``, :func:`~contact.optimize.development_range_lte.range_lte`) is
+    above :data:`~contact.study.verdicts.LTE_LIMIT` is not kept where the design it would
+    replace is within it there, nor where it is above the replaced design's by more than
+    :data:`~contact.optimize.development_range_lte.SAME_PEAK` (said with both numbers).
 
     Parameters
     ----------
@@ -144,7 +148,10 @@ def checked_coast_edge_peak(best: DevelopmentEvaluation, targets: DevelopmentTar
     def lost(kept: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:
         # a relief variant judged on its coast LTE between the torques too, as ltca run
         # --flank coast's lte_range step judges it: the e-axle 11x39 Σ 80°'s gear-toe
-        # variant (ellipse 0.425) held 55/56 urad at its two torques and 60.6 between
+        # variant (ellipse 0.425) held 55/56 urad at its two torques and 60.6 between.
+        # Above 60 there it is refused where the design kept was within 60, or where it
+        # is above the kept design's by more than SAME_PEAK (the LTE's stated round-off):
+        # the FH 20x24 Σ 100° remedied's tip relief back to 15 um went 80.7 -> 94.4 urad
         gone = pitting(kept, e)
         peak = range_peak(range_lte(e, setup, teeth, flank="coast", key_prefix=key_prefix))[0]
         if peak > LTE_LIMIT:
@@ -152,6 +159,9 @@ def checked_coast_edge_peak(best: DevelopmentEvaluation, targets: DevelopmentTar
                                        key_prefix=key_prefix))[0]
             if not was > LTE_LIMIT:
                 gone = [*gone, f"LTE p-p {peak:.1f} urad between the torques"]
+            elif peak > was + SAME_PEAK:
+                gone = [*gone, f"LTE p-p {peak:.1f} urad between the torques (the design "
+                               f"kept {was:.1f})"]
         return gone
 
     relief = dataclasses.replace(EDGE_PEAK, stage=STAGE, lost=lost)

@@ -27,8 +27,8 @@ over the range keeps the limit, as the long bearing buys the LTE with it). The r
 
 Public names
 ------------
-RANGE_KEY, STAGE, ELLIPSE_STEPS, range_lte, range_peak, range_better, peak_better,
-range_record, recorded_range, checked_range_lte
+RANGE_KEY, STAGE, ELLIPSE_STEPS, SAME_PEAK, range_lte, range_peak, range_better,
+peak_better, range_record, recorded_range, checked_range_lte
 """
 
 from __future__ import annotations
@@ -58,8 +58,9 @@ from geometry.case import Case
 from geometry.core.errors import raise_if_interrupted
 from geometry.core.text import plain_number
 
-__all__ = ["ELLIPSE_STEPS", "RANGE_KEY", "STAGE", "checked_range_lte", "peak_better",
-           "range_better", "range_lte", "range_peak", "range_record", "recorded_range"]
+__all__ = ["ELLIPSE_STEPS", "RANGE_KEY", "SAME_PEAK", "STAGE", "checked_range_lte",
+           "peak_better", "range_better", "range_lte", "range_peak", "range_record",
+           "recorded_range"]
 
 log = logging.getLogger("contact.optimize.development")
 
@@ -72,8 +73,8 @@ RANGE_KEY = "lte_range"
 _MEMO = "lte_range_memo"
 
 #: two LTE peaks closer than this [µrad] are one (a variant judged on its peak must lower
-#: it by more)
-_SAME_PEAK = 0.05
+#: it by more; half the 0.1 µrad the development's lines state an LTE to)
+SAME_PEAK = 0.05
 
 #: the check stage of the step's longer ellipses (:attr:`DevelopmentEvaluation.stage`)
 STAGE = "range lte"
@@ -308,7 +309,7 @@ def peak_better(old: float, new: float, best: DevelopmentEvaluation,
     if not math.isfinite(new):
         return False
     if math.isfinite(old) and old > limit:
-        return new < old - _SAME_PEAK
+        return new < old - SAME_PEAK
     if new > limit:
         return False
     return ranks_better(best, e)
