@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import dataclasses
 import logging
+import math
 import os
 from collections.abc import Mapping
 
@@ -43,8 +44,12 @@ from geometry.core.text import plain_number
 from geometry.pair.assembly import Misalignment
 
 __all__ = [
+    "LIGHT_LOAD",
     "MISALIGNMENT_ATTRS",
+    "case_torques",
+    "coast_flank_torques",
     "flank_torques",
+    "floor_torque",
     "misalignment_attrs",
     "operating_conditions",
     "resolve_deviations",
@@ -315,6 +320,124 @@ def _warn_switches(**given) -> None:
                       "chain')", DeprecationWarning, stacklevel=4)
 
 
+#: the light torque's share of the design torque [1]: the pattern is developed and judged
+#: at 10–20 % of the design torque, as on a roll tester under light brake load (the
+#: development's default ``DevelopmentTargets.light_load``; issue 71: no edge contact at
+#: 15 % of the design torque, on each flank at its own design torque)
+LIGHT_LOAD = 0.15
+
+
+def floor_torque(torque: float) -> float:
+    """A development's torque rounded down for the case it writes: to 0.1 N·m from
+    1 N·m up, to four significant digits from 1000 N·m up, below 1 N·m to two
+    significant digits.
+
+    Rounded down because the design torque is the rating's capacity by default, at which
+    S_H = S_H,min exactly (rounded up it would fail the rating by round-off). The
+    earlier ``f"{floor(10 t) / 10:.4g}"`` rounded 5769.55 up to 5770 N·m; the
+    relative rounding below 1 N·m keeps a small gear's torques (a module-1.6 spiral bevel
+    carries ~2 N·m, its light torque 0.3 N·m, a capacity step 0.05 N·m) above zero: the
+    absolute 0.1 N·m alone made them 0 and the analysis refused them.
+
+    Parameters
+    ----------
+    torque : float — [N·m], finite and > 0
+
+    Returns
+    -------
+    float — [N·m], in (0, torque]
+
+    Raises
+    ------
+    ValueError
+        ``torque`` not finite or not > 0.
+
+    Notes
+    -----
+    Source: this project's rounding rule (no standard prescribes one); from 1000 N·m up the
+    same 4-digit floor as :func:`contact.load_capacity.iso10300.capacity.floor_capacity`.
+    """
+    t = float(torque)
+    if not (math.isfinite(t) and t > 0):
+        raise ValueError(f"torque: must be finite and > 0 [N m], got {torque!r}")
+    e = math.floor(math.log10(t))
+    step = max(-1, e - 3) if t >= 1.0 else e - 1  # decimal exponent of the kept last digit
+    n = math.floor(t / 10.0 ** step * (1.0 + 1e-12))
+    while n > 1 and float(f"{n}e{step}") > t:
+        n -= 1
+    return float(f"{n}e{step}")
+
+
+def case_torques(light_load: float, torque: float) -> list[float]:
+    """The development's (light, design) torques [N·m] as the case it writes runs them:
+    ``light_load`` × ``torque`` and ``torque``, each rounded down by
+    :func:`floor_torque`, so that the development scores its designs at the very torques
+    ``ltca run`` analyses the case at (before, the light torque was scored unrounded:
+    40.02 N·m where the case ran at 40.0, issue 71).
+
+    Parameters
+    ----------
+    light_load : float — [1], the light torque as a fraction of the design torque, > 0
+    torque : float — [N·m], the design torque, finite and > 0
+
+    Returns
+    -------
+    list[float] — [N·m], [light, design], each in (0, its unrounded value]
+
+    Raises
+    ------
+    ValueError
+        A torque not finite or not > 0 (:func:`floor_torque`).
+
+    Notes
+    -----
+    Source: this project's rounding rule (:func:`floor_torque`).
+    """
+    return [floor_torque(float(light_load) * float(torque)), floor_torque(torque)]
+
+
+def coast_flank_torques(torques, coast: float, light_load: float = LIGHT_LOAD
+                        ) -> tuple[float, ...]:
+    """The coast flank's torques [N·m] from the drive side's ``torques`` and the coast
+    side's own design torque ``coast``: each torque above ``coast`` replaced by it (repeats
+    dropped, the order kept); where no torque is left below ``coast`` (the coast design
+    torque at or below the drive's light torque) the coast side's own light torque,
+    ``light_load`` × ``coast`` rounded down as the drive's is (:func:`case_torques`), is
+    put before it — so that the coast flank is judged at a light torque too, never at its
+    design torque alone (issue 71: no edge contact at 15 % of the design torque; the FH
+    spiral bevel 16x16 at Σ 60°, coast design torque 52.4 N·m under a drive light torque
+    of 65.2 N·m, had been analysed at 52.4 N·m only; docs/own_gear_set.md, "Round 20b").
+
+    Parameters
+    ----------
+    torques : sequence of float — [N·m], the drive side's torques (light first), > 0
+    coast : float — [N·m], the coast side's design torque, finite and > 0
+    light_load : float — [1], the light torque's share of the design torque, > 0;
+        default :data:`LIGHT_LOAD`
+
+    Returns
+    -------
+    tuple of float — [N·m]
+        As given where none is above ``coast``.
+
+    Raises
+    ------
+    ValueError
+        ``coast`` or its light torque not finite or not > 0 (:func:`floor_torque`).
+
+    Notes
+    -----
+    Source: this project's light-torque rule (:data:`LIGHT_LOAD`, :func:`case_torques`),
+    the coast side's design torque of ``ltca synthesize`` (docs/rating.md).
+    """
+    c = float(coast)
+    limited = tuple(dict.fromkeys(min(float(t), c) for t in torques))
+    if limited and min(limited) >= c:
+        light = case_torques(light_load, c)[0]
+        limited = tuple(dict.fromkeys((light, c)))
+    return limited
+
+
 def flank_torques(case: Case, flank: str | None = None) -> tuple[tuple[float, ...], str]:
     """The pinion torques [N·m] an analysis of ``flank`` runs at by default, and why.
 
@@ -326,7 +449,10 @@ def flank_torques(case: Case, flank: str | None = None) -> tuple[tuple[float, ..
     synthesize`` writes; docs/rating.md): on the coast flank a torque above it is then
     replaced by it (repeats dropped), so that the coast flank is analysed at the same light
     torque as the drive flank — the one its development judged — and at its own design
-    torque, never above it (issue 71: each flank checked at its own design torque).
+    torque, never above it (issue 71: each flank checked at its own design torque); where
+    the coast design torque is at or below the drive's light torque, at the coast side's own
+    light torque (:data:`LIGHT_LOAD` × it) and its design torque
+    (:func:`coast_flank_torques`).
 
     Parameters
     ----------
@@ -350,12 +476,15 @@ def flank_torques(case: Case, flank: str | None = None) -> tuple[tuple[float, ..
     if (coast is None or design is None or not 0.0 < float(coast) < float(design)
             or max(torques) <= float(coast)):
         return torques, ""
-    limited = tuple(dict.fromkeys(min(t, float(coast)) for t in torques))
-    above = [f"{t:g}" for t in torques if t > float(coast)]
+    limited = coast_flank_torques(torques, float(coast))
+    above = [plain_number(t) for t in torques if t > float(coast)]
+    light = [plain_number(t) for t in limited if t not in torques and t < float(coast)]
     return limited, (f"the case's [operating] torque{'s' if len(above) > 1 else ''} "
                      f"{', '.join(above)} N m limited to its [rating] coast_design_torque "
                      f"{plain_number(coast)} N m (the coast side's own design torque, below the "
-                     f"design torque {plain_number(design)} N m)")
+                     f"design torque {plain_number(design)} N m)"
+                     + (f", its light torque {light[0]} N m ({LIGHT_LOAD:g} x it, none of the "
+                        "case's torques being below it)" if light else ""))
 
 
 def _datatree(groups: dict[str, xr.Dataset]) -> xr.DataTree:

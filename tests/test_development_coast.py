@@ -198,13 +198,17 @@ def test_ltca_run_says_it_limits_the_coast_torques(tmp_path, capsys):
     assert list(tree["/ltca"]["torque"].values) == [50.0, 80.45]
 
 
-def test_a_coast_design_torque_at_or_below_the_light_torque_is_scored_at_its_one_torque():
-    """Where the coast flank holds only at or below the light torque, ``ltca run --flank
-    coast`` (:func:`contact.pipeline.flank_torques`) analyses that one torque, and the
-    development's coast check scores it as both its light and its design torque (a spiral
-    bevel 19x23 whose Formate coast flank held only below the light torque ended `ltca
-    synthesize` with ``IndexError: index 1 is out of bounds``, issue 71's unseen designs).
-    The bundled case's coast flank at 30 N·m under a light torque of 45 N·m."""
+def test_a_coast_design_torque_at_or_below_the_light_torque_gets_its_own_light_torque():
+    """Where the coast design torque is at or below the drive's light torque, ``ltca run
+    --flank coast`` (:func:`contact.pipeline.flank_torques`) analyses the coast side's own
+    light torque, 15 % of its design torque rounded down as the drive's
+    (:func:`contact.pipeline.case_torques`), and its design torque; the development's coast
+    check scores the same two (issue 71: no edge contact at 15 % of the design torque; the
+    FH spiral bevel 16x16 at Σ 60°, coast 52.4 N·m under a drive light torque of 65.2 N·m,
+    had been analysed at 52.4 N·m alone, docs/own_gear_set.md "Round 20b"; before, a
+    spiral bevel 19x23 whose coast flank held only below the light torque ended ``ltca
+    synthesize`` with an ``IndexError``). The bundled case's coast flank at 30 N·m under a
+    light torque of 45 N·m: 4.5 and 30 N·m."""
     from types import SimpleNamespace
 
     import numpy as np
@@ -212,19 +216,55 @@ def test_a_coast_design_torque_at_or_below_the_light_torque_is_scored_at_its_one
     from contact.catalogue import bundled_case_path
     from contact.optimize.development_coast_flank import _coast_check
     from contact.optimize.development_targets import DevelopmentTargets, development_score
+    from contact.pipeline import LIGHT_LOAD, case_torques, flank_torques
     from geometry.case import load_case
 
     case = load_case(bundled_case_path())
     check = _coast_check(case, SimpleNamespace(operating={}), {"torques": (45.0, 300.0)},
                          30.0, root_stress=False)
     metrics, grid, torques = check.result
-    assert torques == (30.0,) and check.torque == 30.0
-    for name, value in metrics.items():  # the one analysis, as light and as design torque
+    assert torques == (4.5, 30.0) == tuple(case_torques(LIGHT_LOAD, 30.0))
+    assert check.torque == 30.0 and check.light_torque == 4.5
+    for name, value in metrics.items():  # two analyses: light and design torque
         assert len(value) == 2, name
-        np.testing.assert_array_equal(value[0], value[1])
-    objective, shortfalls, _ = development_score(metrics, DevelopmentTargets(), grid[:4],
-                                                 pressure_limit=grid[4])
-    assert np.isfinite(objective) and "edge" in shortfalls
+    assert metrics["lte_peak_to_peak"][0] != metrics["lte_peak_to_peak"][1]
+    objective = development_score(metrics, DevelopmentTargets(), grid[:4],
+                                  pressure_limit=grid[4])[0]
+    assert np.isfinite(objective)
+    # the case as written for that check: ltca run --flank coast names the light torque
+    written = dataclasses.replace(case, operating=dataclasses.replace(
+        case.operating, torque=(45.0, 300.0)), extra=MappingProxyType(dict(case.extra) | {
+            "rating": {"design_torque": 300.0, "coast_design_torque": 30.0}}))
+    got, why = flank_torques(written, "coast")
+    assert got == (4.5, 30.0)
+    assert why.endswith("limited to its [rating] coast_design_torque 30 N m (the coast "
+                        "side's own design torque, below the design torque 300 N m), its "
+                        "light torque 4.5 N m (0.15 x it, none of the case's torques being "
+                        "below it)")
+    # at the light torque exactly: the same; the drive flank keeps the case's torques
+    at = dataclasses.replace(written, extra=MappingProxyType(dict(case.extra) | {
+        "rating": {"design_torque": 300.0, "coast_design_torque": 45.0}}))
+    assert flank_torques(at, "coast")[0] == (6.7, 45.0)
+    assert flank_torques(at, "drive") == ((45.0, 300.0), "")
+
+
+def test_the_coast_torques_are_one_rule():
+    """:func:`contact.pipeline.coast_flank_torques` on numbers: above the drive's light
+    torque the coast design torque replaces only the torques above it (the case's light
+    torque kept, nothing added: as before); at or below it the coast side's own light
+    torque (15 %, rounded down) comes first; one torque given gets a light torque too; the
+    development's default light share is the same constant."""
+    from contact.optimize.development_targets import DevelopmentTargets
+    from contact.pipeline import LIGHT_LOAD, coast_flank_torques
+
+    assert coast_flank_torques((65.2, 435.1), 52.4) == (7.8, 52.4)  # the FH 16x16 Σ 60°
+    assert coast_flank_torques((45.0, 300.0), 150.0) == (45.0, 150.0)
+    assert coast_flank_torques((50.0, 250.0, 500.0), 80.45) == (50.0, 80.45)
+    assert coast_flank_torques((45.0, 300.0), 300.0) == (45.0, 300.0)
+    assert coast_flank_torques((45.0, 300.0), 400.0) == (45.0, 300.0)
+    assert coast_flank_torques((300.0,), 150.0) == (22.5, 150.0)
+    assert coast_flank_torques((45.0, 300.0), 30.0, light_load=0.2) == (6.0, 30.0)
+    assert DevelopmentTargets().light_load == LIGHT_LOAD == 0.15
 
 
 def _coast_metrics(**over):

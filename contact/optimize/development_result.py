@@ -28,6 +28,7 @@ import numpy as np
 
 from contact.ltca.plausibility import LTE_SPREAD_LIMIT
 from contact.optimize.development_targets import DevelopmentTargets
+from contact.pipeline import case_torques, floor_torque  # the coast's light torque's rule
 from geometry.case import Case
 from geometry.core.text import plain_number
 from geometry.synthesis.basic_design import FLANK_OPTION_UNITS, BasicDesign
@@ -635,75 +636,6 @@ TOLERANCE_KEYS = ("toe", "heel", "edge", "plastic")
 
 #: margin below the flank's static strength that :func:`_static_capacity` aims at [1]
 STATIC_MARGIN = 0.99
-
-
-def floor_torque(torque: float) -> float:
-    """A development's torque rounded down for the case it writes: to 0.1 N·m from
-    1 N·m up, to four significant digits from 1000 N·m up, below 1 N·m to two
-    significant digits.
-
-    Rounded down because the design torque is the rating's capacity by default, at which
-    S_H = S_H,min exactly (rounded up it would fail the rating by round-off). The
-    earlier ``f"{floor(10 t) / 10:.4g}"`` rounded 5769.55 up to 5770 N·m; the
-    relative rounding below 1 N·m keeps a small gear's torques (a module-1.6 spiral bevel
-    carries ~2 N·m, its light torque 0.3 N·m, a capacity step 0.05 N·m) above zero: the
-    absolute 0.1 N·m alone made them 0 and the analysis refused them.
-
-    Parameters
-    ----------
-    torque : float — [N·m], finite and > 0
-
-    Returns
-    -------
-    float — [N·m], in (0, torque]
-
-    Raises
-    ------
-    ValueError
-        ``torque`` not finite or not > 0.
-
-    Notes
-    -----
-    Source: this project's rounding rule (no standard prescribes one); from 1000 N·m up the
-    same 4-digit floor as :func:`contact.load_capacity.iso10300.capacity.floor_capacity`.
-    """
-    t = float(torque)
-    if not (math.isfinite(t) and t > 0):
-        raise ValueError(f"torque: must be finite and > 0 [N m], got {torque!r}")
-    e = math.floor(math.log10(t))
-    step = max(-1, e - 3) if t >= 1.0 else e - 1  # decimal exponent of the kept last digit
-    n = math.floor(t / 10.0 ** step * (1.0 + 1e-12))
-    while n > 1 and float(f"{n}e{step}") > t:
-        n -= 1
-    return float(f"{n}e{step}")
-
-
-def case_torques(light_load: float, torque: float) -> list[float]:
-    """The development's (light, design) torques [N·m] as the case it writes runs them:
-    ``light_load`` × ``torque`` and ``torque``, each rounded down by
-    :func:`floor_torque`, so that the development scores its designs at the very torques
-    ``ltca run`` analyses the case at (before, the light torque was scored unrounded:
-    40.02 N·m where the case ran at 40.0, issue 71).
-
-    Parameters
-    ----------
-    light_load : float — [1], the light torque as a fraction of the design torque, > 0
-    torque : float — [N·m], the design torque, finite and > 0
-
-    Returns
-    -------
-    list[float] — [N·m], [light, design], each in (0, its unrounded value]
-
-    Raises
-    ------
-    ValueError
-        A torque not finite or not > 0 (:func:`floor_torque`).
-
-    Notes
-    -----
-    Source: this project's rounding rule (:func:`floor_torque`).
-    """
-    return [floor_torque(float(light_load) * float(torque)), floor_torque(torque)]
 
 
 #: the outcomes of the coast flank's development (``DevelopmentResult.coast_status``)

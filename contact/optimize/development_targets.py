@@ -26,6 +26,7 @@ from typing import Any
 import numpy as np
 
 from contact.ltca.plausibility import LTE_SPREAD_LIMIT, quiet_transfer
+from contact.pipeline import LIGHT_LOAD
 from geometry.case import Case
 from geometry.core.errors import InputError
 from geometry.core.validation import known_fields, real
@@ -210,9 +211,10 @@ class DevelopmentTargets:
     Parameters
     ----------
     light_load : float — [1]
-        Light-load torque as a fraction of the design torque, in (0, 0.5]; default 0.15
-        (the pattern is developed at 10–20 % of the design torque, as on a roll tester
-        under light brake load).
+        Light-load torque as a fraction of the design torque, in (0, 0.5]; default 0.15,
+        :data:`contact.pipeline.LIGHT_LOAD`, also the coast flank's light torque where its
+        design torque is at or below the drive's light torque (the pattern is developed at
+        10–20 % of the design torque, as on a roll tester under light brake load).
     pattern_length : float — [1]
         Lengthwise extent of the light-load pattern, fraction of the face width, in
         (0.1, 0.9); default 0.5: "about half the face width", the pattern the V-H check's
@@ -297,7 +299,7 @@ class DevelopmentTargets:
         (``development.<field>``) and the accepted range.
     """
 
-    light_load: float = 0.15
+    light_load: float = LIGHT_LOAD
     pattern_length: float = 0.5
     pattern_length_tolerance: float = 0.1
     pattern_centre_u: float = 0.45
