@@ -890,6 +890,13 @@ def test_a_user_design_torque_above_the_coast_capacity_gets_a_coast_design_torqu
     assert ("at 300 N m flank peak pressure 2500 MPa above the static strength 2400 MPa; "
             "plastic segments carry 1 % of the torque") in text
     assert coast_flank.coast_capacity_said(basic, cap) == cap.reason  # none given
+    # a given torque as the case runs it (floor_torque): the round-20 19x57's 2865.6 N m
+    # read "2866" here, above the "design torque: 2865 N m" the case runs
+    odd = dataclasses.replace(user, options=dataclasses.replace(user.options,
+                                                                design_torque=2865.6))
+    assert coast_flank.coast_capacity_said(odd, cap).startswith(
+        "the drive's design torque 2865 N m ([synthesis] design_torque) is not the coast "
+        "flank's: ")
 
     # the development's result writes it as [rating] coast_design_torque
     m = _metrics()

@@ -162,9 +162,10 @@ def coast_capacity_said(basic: BasicDesign, cap: CoastCapacity | None) -> str:
     (:func:`coast_flank_capacity`) found, in numbers: its reason, preceded — where the
     basic file gives a design torque (the drive's) and the search lowered the coast design
     torque — by "the drive's design torque Y N m ([synthesis] design_torque) is not the
-    coast flank's: " (the reason then gives what the torque the search started at does to
-    the coast flank: its peak against the static strength, its plastic share); empty where
-    ``cap`` is None."""
+    coast flank's: " (Y as the case runs it, rounded down by
+    :func:`~contact.optimize.development_result.floor_torque`; the reason then gives what
+    the torque the search started at does to the coast flank: its peak against the static
+    strength, its plastic share); empty where ``cap`` is None."""
     if cap is None:
         return ""
     given = ("[synthesis] design_torque", basic.options.design_torque)
@@ -172,7 +173,9 @@ def coast_capacity_said(basic: BasicDesign, cap: CoastCapacity | None) -> str:
         given = ("[rating] design_torque", basic.rating.get("design_torque"))
     if given[1] is None or not cap.lowered:
         return cap.reason
-    return (f"the drive's design torque {plain_number(float(given[1]))} N m ({given[0]}) "
+    # as the case runs it (floor_torque): the 19x57's given 2865.6 read "2866" (round 20)
+    return (f"the drive's design torque {plain_number(floor_torque(float(given[1])))} N m "
+            f"({given[0]}) "
             f"is not the coast flank's: {cap.reason}")
 
 
