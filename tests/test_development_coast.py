@@ -930,6 +930,13 @@ def test_a_user_design_torque_above_the_coast_capacity_gets_a_coast_design_torqu
     assert ("at 300 N m flank peak pressure 2500 MPa above the static strength 2400 MPa; "
             "plastic segments carry 1 % of the torque") in text
     assert coast_flank.coast_capacity_said(basic, cap) == cap.reason  # none given
+    # a given torque as the case runs it (floor_torque): the round-20 19x57's 2865.6 N m
+    # read "2866" here, above the "design torque: 2865 N m" the case runs
+    odd = dataclasses.replace(user, options=dataclasses.replace(user.options,
+                                                                design_torque=2865.6))
+    assert coast_flank.coast_capacity_said(odd, cap).startswith(
+        "the drive's design torque 2865 N m ([synthesis] design_torque) is not the coast "
+        "flank's: ")
 
     # the development's result writes it as [rating] coast_design_torque
     m = _metrics()
@@ -947,3 +954,49 @@ def test_a_user_design_torque_above_the_coast_capacity_gets_a_coast_design_torqu
     assert out.extra["rating"]["design_torque"] == 300.0  # the drive's, as given
     assert "the drive's design torque 300 N m" in out.extra["rating"]["source"]
 
+
+
+def test_the_coast_search_names_the_torque_it_starts_at():
+    """The coast capacity search's reason says what its first torque is (round 20 of
+    issue 71: "at 466.1 N m …" did not say 466.1 N·m was the coast side's ISO capacity):
+    named where the caller gives it, the number alone where not."""
+    analyse, _ = _flank(3000.0)
+    named = coast_capacity(analyse, 300.0, start_name="its ISO 10300 capacity")
+    assert ("(ltca run --flank coast's analysis): at its ISO 10300 capacity 300 N m flank "
+            "peak pressure 3000 MPa above the static strength 2400 MPa") in named.reason
+    analyse, _ = _flank(3000.0)
+    plain = coast_capacity(analyse, 300.0)
+    assert "(ltca run --flank coast's analysis): at 300 N m flank peak" in plain.reason
+    assert plain.reason.replace("at 300 N m", "at its ISO 10300 capacity 300 N m") == (
+        named.reason)
+
+
+def test_coast_start_is_the_coast_sides_iso_capacity_where_that_is_lower():
+    """:func:`coast_start` on the industrial hypoid 11x43 (m_et 12) written without its
+    coast design torque: at the drive's 15830 N·m, the coast side's own ISO 10300 capacity,
+    computed here with ``side = "coast"`` (14862.1 N·m) rounded down to 4 digits, named
+    "its ISO 10300 capacity"; at 10000 N·m (below it) the design torque; a basic file's
+    ``[rating] coast_design_torque`` named as such."""
+    from pathlib import Path
+
+    from contact.load_capacity.iso10300.capacity import capacity_torque
+    from contact.optimize import development_coast_flank as coast_flank
+    from geometry.case import load_case
+    from geometry.synthesis.basic_design import load_basic
+
+    root = Path(__file__).parents[1]
+    case = load_case(root / "tests" / "data" / "industrial_hypoid_11x43_m12_case.toml")
+    basic = load_basic(root / "benchmarks" / "data" / "unseen_designs"
+                       / "industrial_hypoid_11x43_m12.toml")
+    rating = {k: v for k, v in case.extra["rating"].items() if k != "coast_design_torque"}
+    case = dataclasses.replace(case, extra=MappingProxyType(dict(case.extra)
+                                                            | {"rating": rating}))
+    iso = capacity_torque(case, rating={**rating, "side": "coast"})
+    assert iso < 15830.0
+    assert coast_flank.coast_start(case, basic, 15830.0) == (
+        math.floor(iso / 10.0) * 10.0, "its ISO 10300 capacity")
+    assert coast_flank.coast_start(case, basic, 10000.0) == (10000.0, "the design torque")
+    own = dataclasses.replace(basic, rating=MappingProxyType(
+        dict(basic.rating) | {"coast_design_torque": 12000.0}))
+    assert coast_flank.coast_start(case, own, 15830.0) == (
+        12000.0, "its [rating] coast_design_torque")

@@ -113,3 +113,36 @@ def test_the_default_run_says_its_torques_and_hours_in_plain_digits(default_run_
     assert hours and not any("e+0" in r.split("cycles, ")[1] for r in hours)
     assert any("pinion load cycles, 1070 h at 1500 rpm" in r for r in hours)
     assert lte_between_line(tree["ltca"]).endswith(" urad at 116.7 / 183.3 N m")
+
+
+@pytest.mark.parametrize(("given", "runs"), [
+    (2865.6, "2865"),  # the round-20 19x57: 4 digits rounded read "2866"
+    (99.96, "99.9"),  # 0.1 N m floor; 4 digits read "99.96", above it
+    (99.996, "99.9"),  # 4 digits read "100"
+    (3184.0, "3184"),  # nothing to round: the given torque, no aside
+])
+def test_the_printed_design_torque_is_the_one_the_case_runs(given, runs):
+    """``ltca synthesize``'s "design torque:" line prints the torque the development
+    analysed and writes as the case's operating design torque (``case_torques``, rounded
+    down by ``floor_torque``), not the given one rounded to nearest: round 20 of issue 71,
+    the 19x57 given 2865.6 N m printed "2866 N m" and ran at 2865. The given torque is
+    named where the rounding lowered it; without the development (no operating torque
+    written from it) the line prints the ``[rating] design_torque`` written, unrounded."""
+    from contact.commands.synthesize import _design_torque_line
+    from contact.optimize.development_result import case_torques
+
+    why = "[synthesis] design_torque of the basic file"
+    written = case_torques(0.15, given)  # DevelopmentResult.torque, as recorded() writes it
+    line = _design_torque_line(given, why, SimpleNamespace(torque=tuple(written)))
+    number = line.removeprefix("  design torque: ").split(" N m")[0]
+    assert number == runs
+    assert float(number) == written[1]
+    aside = f" ({given:g} N m given, rounded down: the torque the case runs)"
+    assert line == (f"  design torque: {runs} N m, {why}"
+                    + (aside if written[1] < given else ""))
+    # --no-development: the given torque is the [rating] design_torque written, as given
+    plain = _design_torque_line(given, why, None)
+    assert plain == f"  design torque: {given:g} N m, {why}"
+    assert float(plain.split()[2]) == given
+    assert _design_torque_line(math.nan, "none: no rating", None) == (
+        "  design torque: none: no rating")

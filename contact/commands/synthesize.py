@@ -680,6 +680,24 @@ def _above_capacity_note(case, torque: float) -> str | None:
             "load cycles as [rating] load_cycles, rates it for what it is")
 
 
+def _design_torque_line(torque: float, why: str, development) -> str:
+    """The printed "design torque:" line: the torque the case written runs and ``ltca run``
+    analyses, as written, and where it comes from (``why``). Where the development ran,
+    its design torque (``development.torque[1]``, :func:`contact.optimize.
+    development_result.floor_torque` of the given one: the case's operating torque), the
+    given ``torque`` named where that rounding lowered it; else ``torque``, the ``[rating]
+    design_torque`` written. Eight significant figures: the written value, not rounded
+    (four rounded the 19x57's given 2865.6 N m up to "2866 N m" while the development and
+    ``ltca run`` analysed 2865, issue 71 round 20)."""
+    if not math.isfinite(torque):
+        return "  design torque: " + why
+    if development is not None and float(development.torque[1]) < torque:
+        why += (f" ({plain_number(torque, 8)} N m given, rounded down: the torque the case "
+                "runs)")
+        torque = float(development.torque[1])
+    return f"  design torque: {plain_number(torque, 8)} N m, {why}"
+
+
 def _given_torque_note(case, torque: float, development) -> str | None:
     """The note on a design torque the basic file gives: above the pair's ISO 10300
     capacity (:func:`_above_capacity_note`), else above the developed bearing's
@@ -933,8 +951,7 @@ def _run_synthesize(args: argparse.Namespace) -> int:
         print(f"  pinion {flank}: r_p {fs.tools.blade.point_radius:.3f} mm, R_a "
               f"{s.ratio_of_roll:.5f}, S_r {s.radial_setting:.3f} mm, E_m "
               f"{s.blank_offset:.3f} mm, curvature residual {fs.tools.shape_error:.1e} 1/mm")
-    print("  design torque: " + (f"{plain_number(torque)} N m, {torque_why}"
-                                  if math.isfinite(torque) else torque_why))
+    print(_design_torque_line(torque, torque_why, development))
     if math.isfinite(coast_torque):
         print(f"  coast design torque: {plain_number(coast_torque)} N m, {coast_why}")
     given = torque_why.startswith(("[synthesis] design_torque", "[rating] design_torque"))

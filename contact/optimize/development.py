@@ -148,6 +148,7 @@ from contact.optimize.development_coast_flank import (  # noqa: F401
     coast_capacity_said,
     coast_flank_capacity,
     coast_rated_torque,
+    coast_start,
     coast_torque_searched,
 )
 from contact.optimize.development_edge_peak import checked_edge_peak
@@ -542,12 +543,12 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     c_cap = time.process_time()
     coast_cap = None
     if coast.best is not None:
-        start = min(setup["torques"][1], coast_rated_torque(case, basic, setup["torques"][1]))
+        start, start_name = coast_start(case, basic, setup["torques"][1])
         # searched with a design torque given too: that torque is the drive's, and a
         # coast flank that cannot carry it gets its own (coast_torque_searched)
         searched = coast_torque_searched(basic)
         coast, coast_cap = coast_flank_capacity(case, basic, coast, targets, setup, start,
-                                                root_stress, searched, say)
+                                                root_stress, searched, say, start_name)
         again = coast_at_its_torque(pre_coast, best, targets, setup, teeth, memo, say, make,
                                     coast, coast_cap, coast_setup["torques"][1])
         if again is not None:  # the coast flank developed again at its own design torque
@@ -579,7 +580,7 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                 _both_flanks_built(case, root_stress, built, say, setup)
                 coast, again_cap = coast_flank_capacity(case, basic, coast, targets, setup,
                                                         coast_cap.start, root_stress,
-                                                        searched, say)
+                                                        searched, say, start_name)
                 if (again_cap is not None and again_cap.holds
                         and again_cap.torque > coast_cap.torque):
                     say(f"development: coast design torque {plain_number(coast_cap.torque)} -> "

@@ -249,7 +249,7 @@ def coast_torque_step(check: CoastCheck, previous: CoastCheck | None = None,
 def coast_capacity(analyse: Callable[[float], CoastCheck], start: float,
                    say: Callable[[str], None] = lambda line: None,
                    n_steps: int = COAST_STEPS, n_refine: int = REFINE_STEPS,
-                   closeness: float = CLOSENESS) -> CoastCapacity:
+                   closeness: float = CLOSENESS, start_name: str = "") -> CoastCapacity:
     """The coast flank's design torque: ``start`` where the coast flank holds there, else
     the largest torque found below it where it holds, each torque tried analysed.
 
@@ -278,6 +278,10 @@ def coast_capacity(analyse: Callable[[float], CoastCheck], start: float,
         Most steps down (default :data:`COAST_STEPS`) and up (:data:`REFINE_STEPS`).
     closeness : float — [1]
         The bracket's ratio below which the search ends (default :data:`CLOSENESS`).
+    start_name : str, optional
+        What ``start`` is, named before it in the reason ("at its ISO 10300 capacity
+        466.1 N m …"; the round-20 reason read "at 466.1 N m …", the number unexplained);
+        default none.
 
     Returns
     -------
@@ -340,7 +344,8 @@ def coast_capacity(analyse: Callable[[float], CoastCheck], start: float,
     now = "; ".join(_within(last)) if holds else "; ".join(last.failures.values())
     n = len(checks) - 1
     reason = (f"the coast flank's capacity at its developed bearing (ltca run --flank "
-              f"coast's analysis): at {plain_number(start)} N m "
+              f"coast's analysis): at {start_name + ' ' if start_name else ''}"
+              f"{plain_number(start)} N m "
               f"{'; '.join(first.failures.values())}; "
               f"{n} torque{'s' if n != 1 else ''} below checked, the largest that holds "
               f"{plain_number(last.torque)} N m, where {'still ' if not holds else ''}{now}"

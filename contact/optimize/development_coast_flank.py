@@ -103,6 +103,44 @@ def coast_rated_torque(case: Case | None, basic: BasicDesign, design: float) -> 
     return float(value) if math.isfinite(value) and value < design else design
 
 
+def coast_start(case: Case | None, basic: BasicDesign, design: float) -> tuple[float, str]:
+    """The coast design torque the coast flank is first analysed at, and what it is: the
+    smaller of the design torque ``design`` and the coast side's rated torque
+    (:func:`coast_rated_torque`), named so that the search's reason says what the number is
+    (round 20 of issue 71: "at 466.1 N m …" did not say it was the coast side's ISO
+    capacity).
+
+    Parameters
+    ----------
+    case : geometry.case.Case or None
+        The synthesised case (its rating gives the coast side's ISO capacity).
+    basic : BasicDesign
+        Its ``[rating] coast_design_torque``, if given.
+    design : float — [N·m]
+        The design torque (the drive's).
+
+    Returns
+    -------
+    (torque [N·m], name) — name "its [rating] coast_design_torque", "its ISO 10300
+    capacity" or "the design torque".
+
+    Raises
+    ------
+    Nothing (the rating's failure is logged: the design torque then).
+
+    Notes
+    -----
+    Source: ISO 10300-2/-3:2014 rate each side with its own flank angles
+    (:func:`contact.load_capacity.iso10300.capacity.with_coast_design_torque`).
+    """
+    rated = coast_rated_torque(case, basic, design)
+    if rated >= design:
+        return design, "the design torque"
+    if basic.rating.get("coast_design_torque") is not None:
+        return rated, "its [rating] coast_design_torque"
+    return rated, "its ISO 10300 capacity"
+
+
 def coast_torque_searched(basic: BasicDesign) -> bool:
     """Whether the coast design torque is searched down to what the coast flank's
     developed bearing carries (:func:`coast_flank_capacity` with ``lower``): everywhere
@@ -124,9 +162,10 @@ def coast_capacity_said(basic: BasicDesign, cap: CoastCapacity | None) -> str:
     (:func:`coast_flank_capacity`) found, in numbers: its reason, preceded — where the
     basic file gives a design torque (the drive's) and the search lowered the coast design
     torque — by "the drive's design torque Y N m ([synthesis] design_torque) is not the
-    coast flank's: " (the reason then gives what the torque the search started at does to
-    the coast flank: its peak against the static strength, its plastic share); empty where
-    ``cap`` is None."""
+    coast flank's: " (Y as the case runs it, rounded down by
+    :func:`~contact.optimize.development_result.floor_torque`; the reason then gives what
+    the torque the search started at does to the coast flank: its peak against the static
+    strength, its plastic share); empty where ``cap`` is None."""
     if cap is None:
         return ""
     given = ("[synthesis] design_torque", basic.options.design_torque)
@@ -134,7 +173,9 @@ def coast_capacity_said(basic: BasicDesign, cap: CoastCapacity | None) -> str:
         given = ("[rating] design_torque", basic.rating.get("design_torque"))
     if given[1] is None or not cap.lowered:
         return cap.reason
-    return (f"the drive's design torque {plain_number(float(given[1]))} N m ({given[0]}) "
+    # as the case runs it (floor_torque): the 19x57's given 2865.6 read "2866" (round 20)
+    return (f"the drive's design torque {plain_number(floor_torque(float(given[1])))} N m "
+            f"({given[0]}) "
             f"is not the coast flank's: {cap.reason}")
 
 
@@ -225,8 +266,8 @@ def light_and_design(metrics: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
 
 def coast_flank_capacity(case: Case, basic: BasicDesign, coast: _CoastOutcome,
                          targets: DevelopmentTargets, setup: dict[str, Any], start: float,
-                         root_stress: bool, lower: bool, say: Callable[[str], None]
-                         ) -> tuple[_CoastOutcome, CoastCapacity | None]:
+                         root_stress: bool, lower: bool, say: Callable[[str], None],
+                         start_name: str = "") -> tuple[_CoastOutcome, CoastCapacity | None]:
     """The written case's coast flank at its own design torque ``start`` (the smaller of
     the design torque and the coast side's rated torque), as ``ltca run --flank coast``
     analyses it (:func:`_coast_check`), and — where ``lower`` (no ``[rating]
@@ -238,7 +279,8 @@ def coast_flank_capacity(case: Case, basic: BasicDesign, coast: _CoastOutcome,
     stress on the FE level the development decides root-limited torques on
     (:func:`contact.optimize.development_root.decided_case`; a coarse level's failing root
     check taken again on the default model, :func:`~contact.optimize.development_root.
-    refined_for_root`)."""
+    refined_for_root`); ``start_name`` names what ``start`` is in the search's reason
+    (:func:`coast_start`)."""
     def analyse(torque: float) -> CoastCheck:
         check = _coast_check(decided_case(case, setup), basic, setup, torque, root_stress,
                              targets.max_plastic_share)
@@ -253,7 +295,7 @@ def coast_flank_capacity(case: Case, basic: BasicDesign, coast: _CoastOutcome,
 
     try:
         if lower:
-            cap = coast_capacity(analyse, start, say)
+            cap = coast_capacity(analyse, start, say, start_name=start_name)
             check = cap.final
         else:
             cap, check = None, analyse(start)
