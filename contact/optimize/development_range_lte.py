@@ -28,7 +28,7 @@ over the range keeps the limit, as the long bearing buys the LTE with it). The r
 Public names
 ------------
 RANGE_KEY, STAGE, ELLIPSE_STEPS, SAME_PEAK, range_lte, range_peak, range_better,
-peak_better, range_record, recorded_range, checked_range_lte
+peak_better, range_curve, range_lost, range_record, recorded_range, checked_range_lte
 """
 
 from __future__ import annotations
@@ -59,8 +59,8 @@ from geometry.core.errors import raise_if_interrupted
 from geometry.core.text import plain_number
 
 __all__ = ["ELLIPSE_STEPS", "RANGE_KEY", "SAME_PEAK", "STAGE", "checked_range_lte",
-           "peak_better", "range_better", "range_lte", "range_peak", "range_record",
-           "recorded_range"]
+           "peak_better", "range_better", "range_curve", "range_lost", "range_lte",
+           "range_peak", "range_record", "recorded_range"]
 
 log = logging.getLogger("contact.optimize.development")
 
@@ -379,9 +379,68 @@ def recorded_range(setup: Mapping[str, Any], e: DevelopmentEvaluation,
                                             "values": dict(e.values)}
 
 
-def _curve(found: tuple[tuple[float, ...], tuple[float, ...]]) -> str:
+def range_curve(found: tuple[tuple[float, ...], tuple[float, ...]]) -> str:
+    """The LTE over the range as the development's lines state it.
+
+    Parameters
+    ----------
+    found : (torques, lte) — [N·m], [µrad]
+        :func:`range_lte`'s result (not None).
+
+    Returns
+    -------
+    str
+        ``"LTE p-p a / b / … urad at t1 / t2 / … N m"`` (torques by
+        :func:`~geometry.core.text.plain_number`).
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: ``ltca run``'s ``lte_range`` line (issue 71).
+    """
     return (f"LTE p-p {' / '.join(f'{x:.0f}' for x in found[1])} urad at "
             f"{' / '.join(f'{plain_number(t)}' for t in found[0])} N m")
+
+
+def range_lost(setup: Mapping[str, Any], teeth: KeptTeeth | None, limit: float
+               ) -> Callable[[DevelopmentEvaluation, DevelopmentEvaluation], list[str]]:
+    """The ``lost`` rule of a check step judged over the range: where a variant's LTE over
+    the range keeps ``limit`` the pattern's length may be given up
+    (:func:`~contact.optimize.development_keep.lost_but_length`, the long bearing buys the
+    LTE with it), else no met target may be lost
+    (:func:`~contact.optimize.development_keep.lost_targets`).
+
+    Parameters
+    ----------
+    setup : mapping
+        The development's state (:func:`range_lte`'s).
+    teeth : KeptTeeth or None
+        The kept shell teeth.
+    limit : float — [µrad]
+        The verdict's LTE limit.
+
+    Returns
+    -------
+    callable
+        ``lost(best, e) -> list[str]`` for :func:`~contact.optimize.development_keep.kept_why`.
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: ``ltca run``'s ``lte_range`` verdict (issue 71, "LTE p-p ≤ 60 µrad at every
+    torque").
+    """
+    def lost(b: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:
+        within = range_peak(range_lte(e, setup, teeth))[0] <= limit
+        return lost_but_length(b, e) if within else lost_targets(b, e)
+
+    return lost
 
 
 def _longer_ellipse(start: DevelopmentEvaluation, targets: DevelopmentTargets,
@@ -402,11 +461,7 @@ def _longer_ellipse(start: DevelopmentEvaluation, targets: DevelopmentTargets,
     lo, hi = (float(x) for x in targets.variables["ellipse_length"])
     now = float(start.values["ellipse_length"])
     better = range_better(setup, teeth, limit)
-
-    def lost(b: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:
-        within = range_peak(range_lte(e, setup, teeth))[0] <= limit
-        return lost_but_length(b, e) if within else lost_targets(b, e)
-
+    lost = range_lost(setup, teeth, limit)
     best, tried = start, {now}
     for k in ELLIPSE_STEPS:
         x = round(float(np.clip(now + k * ELLIPSE_STEP, lo, hi)), 4)
@@ -480,7 +535,7 @@ def checked_range_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     if not peak > limit or not all(x <= limit for x in lte_ends(best)):  # NaN: not run
         return best
     say(f"  design {best.index + 1}: its drive LTE p-p {peak:.1f} urad at {plain_number(at)} N m, "
-        f"between the light and the design torque, is above {limit:g} urad ({_curve(found)};"
+        f"between the light and the design torque, is above {limit:g} urad ({range_curve(found)};"
         " ltca run's lte_range torques)")
     kept = checked_path_lte(best, targets, setup, teeth, say, placed, peak=(peak, at),
                             better=range_better(setup, teeth, limit))
@@ -491,5 +546,5 @@ def checked_range_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         if again is not None:
             recorded_range(setup, kept, again)
             say(f"  design {kept.index + 1} kept on its LTE between the torques: "
-                f"{_curve(again)}")
+                f"{range_curve(again)}")
     return kept

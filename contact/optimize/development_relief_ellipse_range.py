@@ -46,11 +46,13 @@ from typing import Any
 import numpy as np
 
 from contact.optimize.development_evaluate import KeptTeeth
-from contact.optimize.development_keep import kept_why, lost_but_length, lost_targets
+from contact.optimize.development_keep import kept_why
 from contact.optimize.development_load_lte import RELIEF_ELLIPSE_FRACTIONS, RELIEF_ELLIPSE_STEP
 from contact.optimize.development_matched_te import lte_ends
 from contact.optimize.development_range_lte import (
     range_better,
+    range_curve,
+    range_lost,
     range_lte,
     range_peak,
     recorded_range,
@@ -234,10 +236,7 @@ def checked_relief_ellipse_range(best: DevelopmentEvaluation, targets: Developme
         return best
     limit = _limit()
     better = range_better(setup, teeth, limit)
-
-    def lost(b: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:
-        within = range_peak(range_lte(e, setup, teeth))[0] <= limit
-        return lost_but_length(b, e) if within else lost_targets(b, e)
+    lost = range_lost(setup, teeth, limit)
 
     start = best
     light, design = lte_ends(start)
@@ -263,6 +262,5 @@ def checked_relief_ellipse_range(best: DevelopmentEvaluation, targets: Developme
         if found is not None:
             recorded_range(setup, best, found)
             say(f"  design {best.index + 1} kept with the shallower root relief and the "
-                f"longer ellipse: LTE p-p {' / '.join(f'{x:.0f}' for x in found[1])} urad at "
-                f"{' / '.join(plain_number(t) for t in found[0])} N m")
+                f"longer ellipse: {range_curve(found)}")
     return best
