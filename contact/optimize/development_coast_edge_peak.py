@@ -34,6 +34,7 @@ from collections.abc import Callable, Mapping
 from typing import Any
 
 from contact.optimize.development_coast import CoastCapacity
+from contact.optimize.development_coast_capacity_lte import coast_range_peak
 from contact.optimize.development_coast_flank import pitting_pressure, written_coast
 from contact.optimize.development_edge_peak import (
     EDGE_PEAK,
@@ -42,7 +43,7 @@ from contact.optimize.development_edge_peak import (
     pitting_lost,
 )
 from contact.optimize.development_evaluate import KeptTeeth
-from contact.optimize.development_range_lte import SAME_PEAK, range_lte, range_peak
+from contact.optimize.development_range_lte import SAME_PEAK
 from contact.optimize.development_relief_lte import checked_relief_variants
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import DevelopmentTargets
@@ -153,10 +154,9 @@ def checked_coast_edge_peak(best: DevelopmentEvaluation, targets: DevelopmentTar
         # is above the kept design's by more than SAME_PEAK (the LTE's stated round-off):
         # the FH 20x24 Σ 100° remedied's tip relief back to 15 um went 80.7 -> 94.4 urad
         gone = pitting(kept, e)
-        peak = range_peak(range_lte(e, setup, teeth, flank="coast", key_prefix=key_prefix))[0]
+        peak = coast_range_peak(e, setup, teeth, key_prefix)[0]
         if peak > LTE_LIMIT:
-            was = range_peak(range_lte(kept, setup, teeth, flank="coast",
-                                       key_prefix=key_prefix))[0]
+            was = coast_range_peak(kept, setup, teeth, key_prefix)[0]
             if not was > LTE_LIMIT:
                 gone = [*gone, f"LTE p-p {peak:.1f} urad between the torques"]
             elif peak > was + SAME_PEAK:
