@@ -740,3 +740,30 @@ def test_pool_of_several_rolls_equals_each_roll_assembled_alone():
         part, dpart = together.restricted(j, keep)
         np.testing.assert_array_equal(part, a[1:, 1:])
         np.testing.assert_array_equal(dpart, da[1:])
+
+
+def test_legendre_rows_in_place_equal_the_recurrence_and_legendre():
+    """The shell's face and height rows (``_legendre_rows``, formed in place, issue 75)
+    are the rows of Bonnet's recurrence written with temporaries bit for bit (the same
+    operations in the same order), and they are the Legendre polynomials and their
+    derivatives (NumPy's ``legvander`` and ``legder``, an independent evaluation) to 1e-12
+    (degree ≤ 20 on [−1, 1]: values ≤ 1, derivatives ≤ n(n + 1)/2 = 210)."""
+    from numpy.polynomial import legendre as leg
+
+    from contact.compliance.shell_tooth import _legendre_rows
+
+    t = np.r_[-1.0, np.random.default_rng(7).uniform(-1.0, 1.0, 997), 1.0, 0.0]
+    count = 21
+    p, dp = _legendre_rows(t, count)
+    ref_p, ref_dp = np.empty((count, t.size)), np.empty((count, t.size))
+    ref_p[0], ref_dp[0] = 1.0, 0.0
+    ref_p[1], ref_dp[1] = t, 1.0
+    for k in range(1, count - 1):
+        ref_p[k + 1] = ((2 * k + 1) * t * ref_p[k] - k * ref_p[k - 1]) / (k + 1)
+        ref_dp[k + 1] = ref_dp[k - 1] + (2 * k + 1) * ref_p[k]
+    np.testing.assert_array_equal(p, ref_p)
+    np.testing.assert_array_equal(dp, ref_dp)
+    eye = np.eye(count)
+    np.testing.assert_allclose(p, leg.legvander(t, count - 1).T, rtol=0, atol=1e-12)
+    d = np.stack([leg.legval(t, leg.legder(eye[n])) for n in range(count)])
+    np.testing.assert_allclose(dp, d, rtol=1e-12, atol=1e-12)

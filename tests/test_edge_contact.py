@@ -286,3 +286,26 @@ def test_pinion_edge_does_not_hang_on_the_last_bit_of_a_contour_vertex(monkeypat
     for name in ("u", "v", "position"):
         np.testing.assert_allclose(getattr(low, name), getattr(high, name), rtol=0,
                                    atol=1e-12)
+
+
+def test_edge_segments_written_after_the_curve_segments_equal_their_concatenation():
+    """``edge_segments(..., before=curves)`` writes the curve segments and the edge
+    segments into one array per field (issue 75: no (J, K, E) arrays copied again); the
+    result is ``curves.concatenate(edge_segments(...))`` bit for bit (the same values
+    copied, the same fill: NaN, length 0), so no analysis number changes."""
+    from contact.ltca.edges import edge_segments
+    from contact.ltca.segments import _curve_part_of, roll_phases
+
+    eo = _easeoff()
+    m1, _ = transitions(eo)
+    target, _, _ = roll_phases(eo, m1 + np.arange(6) * eo.pitch / 6, (-1, 0, 1, 2))
+    part = _curve_part_of(_case(), eo, target, 8, "cosine", 0.25)
+    ute_env = np.min(np.where(np.isfinite(part.ute), part.ute, np.inf), axis=1)
+    args = (_case(), eo, part.boundary, (0.5, 0.5), target, part.shift, ute_env)
+    edge = edge_segments(*args)
+    both = edge_segments(*args, before=part.found)
+    old = part.found.concatenate(edge)
+    assert np.count_nonzero(edge.length > 0) > 0  # edge segments in contact to write
+    for name, value in old.per_segment().items():
+        np.testing.assert_array_equal(getattr(both, name), value, err_msg=name)
+        assert getattr(both, name).dtype == value.dtype

@@ -491,6 +491,11 @@ def _legendre_rows(t: np.ndarray, count: int) -> tuple[np.ndarray, np.ndarray]:
     P′_{k+1} = P′_{k−1} + (2k + 1) P_k: the same functions as
     :func:`contact.compliance._basis.face_basis` (values and first derivatives),
     without its general polynomial evaluation (to round-off).
+
+    Each row is formed in place, the operations in the order of the expressions above
+    (((2k + 1) t) P_k − k P_{k−1}) / (k + 1) and P′_{k−1} + (2k + 1) P_k: the same rows bit
+    for bit as with their temporaries, ≈ 25 % less time (a study point's 6,304 load points:
+    1.12 → 0.83 ms a call of 21 rows, issue 75).
     """
     p = np.empty((count, t.size))
     dp = np.empty((count, t.size))
@@ -499,9 +504,16 @@ def _legendre_rows(t: np.ndarray, count: int) -> tuple[np.ndarray, np.ndarray]:
     if count > 1:
         p[1] = t
         dp[1] = 1.0
+    tmp = np.empty(t.size)
     for k in range(1, count - 1):
-        p[k + 1] = ((2 * k + 1) * t * p[k] - k * p[k - 1]) / (k + 1)
-        dp[k + 1] = dp[k - 1] + (2 * k + 1) * p[k]
+        row = p[k + 1]
+        np.multiply(t, 2 * k + 1, out=row)
+        np.multiply(row, p[k], out=row)
+        np.multiply(p[k - 1], k, out=tmp)
+        np.subtract(row, tmp, out=row)
+        np.divide(row, k + 1, out=row)
+        np.multiply(p[k], 2 * k + 1, out=tmp)
+        np.add(dp[k - 1], tmp, out=dp[k + 1])
     return p, dp
 
 

@@ -212,10 +212,10 @@ def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, seg
         ute = part.ute
         ute_env = np.min(np.where(np.isfinite(ute), ute, np.inf), axis=1)
         radii = tuple(np.broadcast_to(np.asarray(edges[1], dtype=float), (2,)))
-        edge = edge_segments(case, eo, bd, radii, target, part.shift, ute_env, edge_limit,
-                             fields=fields_of(eo))
+        # the curve segments, then the edge segments: written once into each field's array
+        found = edge_segments(case, eo, bd, radii, target, part.shift, ute_env, edge_limit,
+                              fields=fields_of(eo), before=found)
         edge_arm_max = float(np.max(bd.normal_arm, initial=0.0))
-        found = found.concatenate(edge)
         kind = np.r_[kind, 1 + bd.kind].astype(np.int8)
     return Segments(**found.per_segment(), kind=kind, ute=part.ute.copy(),
                     pinion_rotation=rp, gear_rotation=eo.gear_phase - rp / eo.ratio,
