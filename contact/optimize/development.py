@@ -368,7 +368,9 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
        own prescriptions with that budget (at most :data:`COAST_BEARING_DESIGNS`
        bearings), the best checked design kept where it scores better than the flank as
        synthesised. The drive flank is placed first and the coast flank against it, so the
-       drive flank's chosen design and numbers do not depend on this stage.
+       drive flank's chosen design does not depend on this stage; its numbers do (the
+       pinion tooth's shell compliance reads both flanks): they are read again on the
+       written case (:mod:`contact.optimize.development_written_drive`).
 
     The chosen design is synthesised once more with both flanks' prescriptions (the
     written case, the very design checked on either flank; the memo makes this its relief
