@@ -73,6 +73,7 @@ FlankPoint             flank points with tangents and curvature (from
                        :mod:`geometry.machine.flank_point`)
 gear_formate_tools     Formate gear blades and settings
 gear_processes         the gear processes a synthesis tries (Formate, then Generate)
+third_order_rule       whether a face-hobbed pair's gear process follows its third-order TE
 mean_point             mesh position of the gear mean point (surface of action)
 local_synthesis        pinion shape operator at M from the local-synthesis conditions
 pinion_generate_tools  pinion blade and settings that realise a shape operator at M
@@ -119,7 +120,12 @@ from geometry.synthesis.gear import (
 )
 from geometry.synthesis.local import LocalSynthesis, local_synthesis
 from geometry.synthesis.mean_point import MeanPoint, mean_point, pair_kw
-from geometry.synthesis.modified_roll import ROLL_FRACTIONS, nominal_transforms, tune_roll
+from geometry.synthesis.modified_roll import (
+    ROLL_FRACTIONS,
+    nominal_transforms,
+    third_order_te,
+    tune_roll,
+)
 from geometry.synthesis.pinion import (
     PinionTools,
     WarmTools,
@@ -131,11 +137,13 @@ from geometry.synthesis.tip_plane import tip_plane_on_root_cone
 
 __all__ = [
     "SYNTHESIS_STEPS",
+    "THIRD_ORDER_SHARE_LIMIT",
     "FlankSynthesis",
     "SynthesisReport",
     "gear_processes",
     "relief_for_profile",
     "synthesize",
+    "third_order_rule",
 ]
 
 log = logging.getLogger(__name__)
@@ -184,6 +192,10 @@ class FlankSynthesis:
     #: [1] the roll, a fraction of the pitch, at which step 6 put the TE on its parabola
     #: (modified_roll.ROLL_FRACTIONS: ±pitch/4 unless the contact leaves the flank before)
     roll_fraction: float = 0.25
+    #: [1] the TE's third-order share at ±pitch/4 before step 6
+    #: (modified_roll.third_order_te), where the synthesis measured it (the face-hobbing
+    #: gear-process rule, :func:`_synthesize_tried`); None where not measured
+    third_order: float | None = None
 
 
 @dataclass(frozen=True, eq=False)
@@ -310,9 +322,10 @@ def formate_limit_hint(basic: BasicDesign) -> str:
     -------
     str
         Empty where the gear pitch angle δ2 is at least :data:`FORMATE_PITCH_ANGLE_LIMIT`,
-        where a generated gear is tried after it (:func:`gear_processes`) or where the blank
-        cannot be made; else (a Formate gear below the limit: forced by ``gear_process =
-        "Formate"``, or face hobbed) a sentence naming δ2, the ratio and what to change.
+        where a generated gear is tried after it (:func:`gear_processes`,
+        :func:`third_order_rule`) or where the blank cannot be made; else (a Formate gear
+        below the limit forced by ``gear_process = "Formate"``) a sentence naming δ2, the
+        ratio and what to change.
 
     Notes
     -----
@@ -330,12 +343,11 @@ def formate_limit_hint(basic: BasicDesign) -> str:
     except InputError:
         return ""
     delta2 = math.degrees(pitch.delta2)
-    if delta2 >= FORMATE_PITCH_ANGLE_LIMIT or processes != ("Formate",):
+    if (delta2 >= FORMATE_PITCH_ANGLE_LIMIT or processes != ("Formate",)
+            or third_order_rule(basic)):
         return ""
     d = basic.design
-    remedy = ("a generated gear (gear_process 'Generate', face milling only) is what such a "
-              "pair needs" if d.z0 else
-              "a generated gear (gear_process 'Generate' or 'auto', the default) is what such "
+    remedy = ("a generated gear (gear_process 'Generate' or 'auto', the default) is what such "
               "a pair needs")
     return (f"the gear is Formate (non-generated) and its pitch angle is delta2 = "
             f"{delta2:.1f} deg (ratio z2/z1 = {d.z2 / d.z1:.2f}): below about "
@@ -498,6 +510,8 @@ def _synthesize_tried(basic: BasicDesign, *, progress: Callable[[str], None] | N
     key = ("gear process", basic.design,
            replace(basic.options, concave=FlankOptions(), convex=FlankOptions()))
     decided = None if memo is None else memo.get(key)
+    if decided is None and third_order_rule(basic) and not kw.get("conjugate"):
+        return _by_third_order(basic, key, progress=progress, memo=memo, **kw)
     # a generated gear's pinion on the gear's own crown gear first, on its own crown gear
     # where that has no solution (:func:`_generating_tools`)
     tries = ((decided,) if decided else tuple(
@@ -539,6 +553,98 @@ def _synthesize_tried(basic: BasicDesign, *, progress: Callable[[str], None] | N
             progress(line)
         return out
     raise AssertionError("unreachable")  # pragma: no cover
+
+
+#: the face-hobbed gear's process under ``gear_process = "auto"`` (:func:`third_order_rule`):
+#: the drive flank's third-order TE share at ±pitch/4 (modified_roll.third_order_te) above
+#: which the generated gear is synthesised too, and kept where its share is lower. Measured
+#: (docs/synthesis.md, "The face-hobbed generated gear for ratios near 1"): on the Formate
+#: gear 41 (16x16 at Σ 60°), 21 (20x24 at Σ 100°), 17 (14x17 at Σ 90°) — the designs whose
+#: drive LTE the development leaves above 60 µrad — against 7.8 (18x22), 6.9 (25x25 miter,
+#: developed to 44 µrad on its Formate gear), 2.5 (13x37 at Σ 75°) and 2.0 (11x33)
+THIRD_ORDER_SHARE_LIMIT = 10.0
+
+
+def third_order_rule(basic: BasicDesign) -> bool:
+    """Whether the synthesis of ``basic`` chooses its gear process by the third-order TE.
+
+    Parameters
+    ----------
+    basic : BasicDesign
+
+    Returns
+    -------
+    bool
+        True for a face-hobbed pair (z0 ≥ 1) with ``gear_process = "auto"`` and a gear
+        pitch angle δ2 below :data:`FORMATE_PITCH_ANGLE_LIMIT`: its synthesis measures the
+        drive flank's third-order TE share on the Formate gear and, above
+        :data:`THIRD_ORDER_SHARE_LIMIT`, synthesises the generated gear too, keeping the
+        one with the lower share (:func:`_synthesize_tried`). Near ratio 1 the pinion rolled
+        on the Formate gear's copy (a cone of angle δ2) carries a third-order TE tens of
+        times the prescribed parabola; on the generated gear's plane crown gear it does not
+        (docs/synthesis.md, "The face-hobbed generated gear for ratios near 1").
+
+    Raises
+    ------
+    InputError
+        As :meth:`BasicDesign.blank`.
+    """
+    if basic.options.gear_process != "auto" or not basic.design.z0:
+        return False
+    return math.degrees(basic.blank().pitch.delta2) < FORMATE_PITCH_ANGLE_LIMIT
+
+
+def _by_third_order(basic: BasicDesign, key: tuple, *,
+                    progress: Callable[[str], None] | None, memo: dict | None,
+                    **kw: Any) -> tuple[Case, SynthesisReport]:
+    """:func:`_synthesize_tried` under :func:`third_order_rule`: the Formate gear, and the
+    generated gear (pinion on its crown gear) where the Formate drive flank's third-order
+    share exceeds :data:`THIRD_ORDER_SHARE_LIMIT`; the lower share kept (the Formate gear
+    where the generated gear has no solution), the source saying which and why, the memo
+    deciding for later syntheses."""
+    drive = basic.options.drive_flank
+    try:
+        first = _synthesize(basic, process="Formate", memo=memo, progress=progress,
+                            third_order=True, **kw)
+    except ReliefError:
+        raise  # the caller's to raise (`ltca synthesize` raises the relief), as for milling
+    except InputError as exc:
+        log.info("synthesis: the Formate face-hobbed gear has no solution (%s); trying the "
+                 "generated gear", exc)
+        first, share = None, math.inf
+    else:
+        share = first[1].flanks[drive].third_order
+    chosen, text = first, ""
+    if share > THIRD_ORDER_SHARE_LIMIT:
+        try:
+            second = _synthesize(basic, process="Generate", memo=memo, progress=progress,
+                                 third_order=True, **kw)
+        except InputError as exc:
+            if first is None:
+                raise
+            log.info("synthesis: the generated face-hobbed gear has no solution (%s)", exc)
+            text = (f"the Formate gear's drive flank carries a third-order TE {share:.3g} "
+                    f"times its parabola at +/-pitch/4 (limit {THIRD_ORDER_SHARE_LIMIT:g}); "
+                    f"the generated gear has no solution ({exc}); kept the Formate gear")
+        else:
+            gen = second[1].flanks[drive].third_order
+            if first is None or gen < share:
+                chosen = second
+            text = (("the Formate gear has no solution" if first is None else
+                     f"the Formate gear's drive flank carries a third-order TE {share:.3g} "
+                     f"times its parabola at +/-pitch/4 (limit {THIRD_ORDER_SHARE_LIMIT:g})")
+                    + f", the generated gear's {gen:.3g}; kept the "
+                    + ("generated" if chosen is second else "Formate") + " gear")
+    assert chosen is not None
+    case, report = chosen
+    process = report.gear.settings.process
+    if memo is not None:
+        memo[key] = (process, "gear")
+    if text:
+        case = replace(case, source=f"{case.source} Gear process (auto, face hobbing): {text} "
+                       "(docs/synthesis.md, \"The face-hobbed generated gear for ratios near "
+                       "1\").")
+    return case, report
 
 
 def tried_text(err: BaseException) -> str:
@@ -588,10 +694,13 @@ def _synthesize(basic: BasicDesign, *, process: str, conjugate: bool = False,
                 progress: Callable[[str], None] | None = None,
                 memo: dict | None = None,
                 tip_planes: bool = True,
-                pinion_crown: str = "gear") -> tuple[Case, SynthesisReport]:
+                pinion_crown: str = "gear",
+                third_order: bool = False) -> tuple[Case, SynthesisReport]:
     """The body of :func:`synthesize` (its parameters, returns and steps) with the gear
     process ``"Formate"`` or ``"Generate"``; ``pinion_crown`` (a generated gear's, one of
-    :data:`PINION_CROWNS`): the pinion generated on the gear's crown gear or its own."""
+    :data:`PINION_CROWNS`): the pinion generated on the gear's crown gear or its own;
+    ``third_order``: each flank's third-order TE share measured
+    (:attr:`FlankSynthesis.third_order`)."""
     say = progress if progress is not None else (lambda _step: None)
     opt = basic.options
     # the memo's entries of this design: every input but the pinion flanks' prescriptions
@@ -622,7 +731,8 @@ def _synthesize(basic: BasicDesign, *, process: str, conjugate: bool = False,
     pinion_hand = design.hand
     gear_hand = "right" if pinion_hand == "left" else "left"
     pair = _PairData(geom, gear, blank(geom.pinion), blank(geom.gear), pinion_hand,
-                     gear_hand, pair_kw(design.Sigma, design.a, gear_hand), pinion_crown)
+                     gear_hand, pair_kw(design.Sigma, design.a, gear_hand), pinion_crown,
+                     third_order)
     flanks: dict[str, FlankSynthesis] = {}
     ref_gear_rotation = None
     for pf in (drive, coast):
@@ -653,6 +763,7 @@ class _PairData(NamedTuple):
     gear_hand: str
     kw: dict[str, Any]
     pinion_crown: str = "gear"  # a generated gear's: the pinion on "gear" or "own" crown gear
+    third_order: bool = False  # measure each flank's third-order TE share (step 6's start)
 
 
 def _synthesize_flank(pair: _PairData, pf: str, fo: FlankOptions,
@@ -834,6 +945,10 @@ def _unrelieved_flank(pair: _PairData, pf: str, fo: FlankOptions,
 
     start = np.array([pl[2], math.hypot(pl[0], pl[1]), zg, pg, mp.gear_rotation])
     rate = np.array([*rates(vp, pl), *rates(vg, gl), mp.gear_sense * z1 / geom.gear.z])
+    kw = dict(phi_p0=mp.pinion_rotation + hand_sign * tools.blank_phase,
+              pinion_sense=mp.pinion_sense, gear_sense=mp.gear_sense, ratio=z1 / geom.gear.z)
+    third = (third_order_te(tools, tooth_pair, start, rate, a21=a21, pitch=2 * math.pi / z1,
+                            **kw).share if pair.third_order else None)
     say(f"pinion {pf}: modified roll (6D, 24E)")
     # at ±pitch/4, nearer M where the contact cannot be followed that far (the first
     # roll's error where none can)
@@ -841,13 +956,12 @@ def _unrelieved_flank(pair: _PairData, pf: str, fo: FlankOptions,
     for fraction in ROLL_FRACTIONS:
         try:
             tuned = tune_roll(tools, tooth_pair, start, rate, a21=a21, pitch=2 * math.pi / z1,
-                              phi_p0=mp.pinion_rotation + hand_sign * tools.blank_phase,
-                              pinion_sense=mp.pinion_sense, gear_sense=mp.gear_sense,
-                              ratio=z1 / geom.gear.z, fraction=fraction)
+                              fraction=fraction, **kw)
         except InputError as err:
             first = first or err
             continue
-        return FlankSynthesis(pf, fo, a21, mp, ls, tuned, roll_fraction=fraction)
+        return FlankSynthesis(pf, fo, a21, mp, ls, tuned, roll_fraction=fraction,
+                              third_order=third)
     assert first is not None
     raise InputError(f"{first}, on the pinion {pf} flank, nor nearer M (+/-pitch/6, "
                      f"+/-pitch/8); {_spiral_angles(pair.geom)}") from first
@@ -905,7 +1019,8 @@ def _generating_tools(pair: _PairData, pf: str, gblade: Blade, gp: FlankPoint,
     generated = gs.process == "Generate"
     # a generated gear: the gear's cutter where it generates M (roll q_M)
     q_m = float(gp.params[2]) if generated else 0.0
-    cg, ug = cutter_pose(gs, q_m, float(gp.params[1]) if z0 else 0.0)
+    theta_m = float(gp.params[1]) if z0 else 0.0
+    cg, ug = cutter_pose(gs, q_m, theta_m)
     if pair.gear_hand == "left":
         cg, ug = _MIRROR @ cg, _MIRROR @ ug
     cg = mir @ rot.T @ (tg[:3, :3] @ cg + tg[:3, 3] - tp[:3, 3])
@@ -927,7 +1042,8 @@ def _generating_tools(pair: _PairData, pf: str, gblade: Blade, gp: FlankPoint,
         # Sigma 60 deg, 0-31 um now; where its synthesis has no solution, the own crown
         # gear below, :func:`_synthesize_tried`; docs/synthesis.md, "The generated gear's
         # pinion on the gear's crown gear".)
-        cpg, cag = cradle_pose(gs, q_m)
+        # face hobbing: the work indexed by κ2 θ_M too (the spin that cuts M)
+        cpg, cag = cradle_pose(gs, q_m, theta_m)
         if pair.gear_hand == "left":
             cpg, cag = _MIRROR @ cpg, _MIRROR @ cag
         cradle_point = mir @ rot.T @ (tg[:3, :3] @ cpg + tg[:3, 3] - tp[:3, 3])
