@@ -136,7 +136,9 @@ from geometry.synthesis.pinion import (
 from geometry.synthesis.tip_plane import tip_plane_on_root_cone
 
 __all__ = [
+    "RULE_TEXT_MARKER",
     "SYNTHESIS_STEPS",
+    "THIRD_ORDER_GAIN",
     "THIRD_ORDER_SHARE_LIMIT",
     "FlankSynthesis",
     "SynthesisReport",
@@ -512,6 +514,11 @@ def _synthesize_tried(basic: BasicDesign, *, progress: Callable[[str], None] | N
     decided = None if memo is None else memo.get(key)
     if decided is None and third_order_rule(basic) and not kw.get("conjugate"):
         return _by_third_order(basic, key, progress=progress, memo=memo, **kw)
+    if decided is not None and memo is not None and ("rule text", *key) in memo:
+        # the rule's choice, said in every case of the series (a development writes its last)
+        case, report = _synthesize(basic, process=decided[0], memo=memo, progress=progress,
+                                   **kw)
+        return _with_rule_text(case, memo[("rule text", *key)]), report
     # a generated gear's pinion on the gear's own crown gear first, on its own crown gear
     # where that has no solution (:func:`_generating_tools`)
     tries = ((decided,) if decided else tuple(
@@ -564,6 +571,13 @@ def _synthesize_tried(basic: BasicDesign, *, progress: Callable[[str], None] | N
 #: developed to 44 µrad on its Formate gear), 2.5 (13x37 at Σ 75°) and 2.0 (11x33)
 THIRD_ORDER_SHARE_LIMIT = 10.0
 
+#: the generated gear is kept where its drive flank's share is below this fraction of the
+#: Formate gear's: where it removes most of the third order (21 → 3.7 on the 20x24 at
+#: Σ 100°, 17 → 1.6 on the 14x17 at Σ 90°), not where it leaves most of it (41 → 32 on the
+#: 16x16 at Σ 60°, whose generated pinion's ratios of roll move 2 → 1.08 / 3.49 and whose
+#: developed coast flank is far from conjugate: ease-off valid over 29 % of its grid)
+THIRD_ORDER_GAIN = 0.5
+
 
 def third_order_rule(basic: BasicDesign) -> bool:
     """Whether the synthesis of ``basic`` chooses its gear process by the third-order TE.
@@ -578,8 +592,9 @@ def third_order_rule(basic: BasicDesign) -> bool:
         True for a face-hobbed pair (z0 ≥ 1) with ``gear_process = "auto"`` and a gear
         pitch angle δ2 below :data:`FORMATE_PITCH_ANGLE_LIMIT`: its synthesis measures the
         drive flank's third-order TE share on the Formate gear and, above
-        :data:`THIRD_ORDER_SHARE_LIMIT`, synthesises the generated gear too, keeping the
-        one with the lower share (:func:`_synthesize_tried`). Near ratio 1 the pinion rolled
+        :data:`THIRD_ORDER_SHARE_LIMIT`, synthesises the generated gear too, keeping it
+        where its share is below :data:`THIRD_ORDER_GAIN` of the Formate gear's
+        (:func:`_synthesize_tried`). Near ratio 1 the pinion rolled
         on the Formate gear's copy (a cone of angle δ2) carries a third-order TE tens of
         times the prescribed parabola; on the generated gear's plane crown gear it does not
         (docs/synthesis.md, "The face-hobbed generated gear for ratios near 1").
@@ -599,9 +614,10 @@ def _by_third_order(basic: BasicDesign, key: tuple, *,
                     **kw: Any) -> tuple[Case, SynthesisReport]:
     """:func:`_synthesize_tried` under :func:`third_order_rule`: the Formate gear, and the
     generated gear (pinion on its crown gear) where the Formate drive flank's third-order
-    share exceeds :data:`THIRD_ORDER_SHARE_LIMIT`; the lower share kept (the Formate gear
-    where the generated gear has no solution), the source saying which and why, the memo
-    deciding for later syntheses."""
+    share exceeds :data:`THIRD_ORDER_SHARE_LIMIT`; the generated gear kept where its share
+    is below :data:`THIRD_ORDER_GAIN` of the Formate's (the Formate gear where the
+    generated gear has no solution), the source saying which and why, the memo deciding
+    (and keeping the text) for later syntheses."""
     drive = basic.options.drive_flank
     try:
         first = _synthesize(basic, process="Formate", memo=memo, progress=progress,
@@ -628,23 +644,35 @@ def _by_third_order(basic: BasicDesign, key: tuple, *,
                     f"the generated gear has no solution ({exc}); kept the Formate gear")
         else:
             gen = second[1].flanks[drive].third_order
-            if first is None or gen < share:
+            if first is None or gen < THIRD_ORDER_GAIN * share:
                 chosen = second
             text = (("the Formate gear has no solution" if first is None else
                      f"the Formate gear's drive flank carries a third-order TE {share:.3g} "
                      f"times its parabola at +/-pitch/4 (limit {THIRD_ORDER_SHARE_LIMIT:g})")
-                    + f", the generated gear's {gen:.3g}; kept the "
-                    + ("generated" if chosen is second else "Formate") + " gear")
+                    + f", the generated gear's {gen:.3g}"
+                    + ("" if first is None else
+                       f" ({'below' if chosen is second else 'not below'} "
+                       f"{THIRD_ORDER_GAIN:g} of it)")
+                    + "; kept the " + ("generated" if chosen is second else "Formate")
+                    + " gear")
     assert chosen is not None
     case, report = chosen
     process = report.gear.settings.process
     if memo is not None:
         memo[key] = (process, "gear")
-    if text:
-        case = replace(case, source=f"{case.source} Gear process (auto, face hobbing): {text} "
-                       "(docs/synthesis.md, \"The face-hobbed generated gear for ratios near "
-                       "1\").")
-    return case, report
+        if text:
+            memo[("rule text", *key)] = text
+    return (_with_rule_text(case, text) if text else case), report
+
+
+#: the marker of :func:`_by_third_order`'s sentence in a case's ``source``
+RULE_TEXT_MARKER = "Gear process (auto, face hobbing): "
+
+
+def _with_rule_text(case: Case, text: str) -> Case:
+    """``case`` with the face-hobbing gear-process rule's ``text`` ending its source."""
+    return replace(case, source=f"{case.source} {RULE_TEXT_MARKER}{text} (docs/synthesis.md, "
+                   "\"The face-hobbed generated gear for ratios near 1\").")
 
 
 def tried_text(err: BaseException) -> str:
