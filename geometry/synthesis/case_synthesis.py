@@ -196,7 +196,8 @@ class FlankSynthesis:
     roll_fraction: float = 0.25
     #: [1] the TE's third-order share at ±pitch/4 before step 6
     #: (modified_roll.third_order_te), where the synthesis measured it (the face-hobbing
-    #: gear-process rule, :func:`_synthesize_tried`); None where not measured
+    #: gear-process rule's measure at the default prescriptions, :func:`_drive_third_order`);
+    #: None where not measured
     third_order: float | None = None
 
 
@@ -563,13 +564,16 @@ def _synthesize_tried(basic: BasicDesign, *, progress: Callable[[str], None] | N
 
 
 #: the face-hobbed gear's process under ``gear_process = "auto"`` (:func:`third_order_rule`):
-#: the drive flank's third-order TE share at ±pitch/4 (modified_roll.third_order_te) above
-#: which the generated gear is synthesised too, and kept where its share is lower. Measured
-#: (docs/synthesis.md, "The face-hobbed generated gear for ratios near 1"): on the Formate
-#: gear 41 (16x16 at Σ 60°), 21 (20x24 at Σ 100°), 17 (14x17 at Σ 90°) — the designs whose
-#: drive LTE the development leaves above 60 µrad — against 7.8 (18x22), 6.9 (25x25 miter,
-#: developed to 44 µrad on its Formate gear), 2.5 (13x37 at Σ 75°) and 2.0 (11x33)
-THIRD_ORDER_SHARE_LIMIT = 10.0
+#: the drive flank's third-order TE share at ±pitch/4 (modified_roll.third_order_te, at the
+#: default prescriptions) above which the generated gear's share is measured too, and the
+#: generated gear kept where it is below :data:`THIRD_ORDER_GAIN` of the Formate's.
+#: Measured (docs/synthesis.md, "The face-hobbed generated gear for ratios near 1"; `ltca
+#: synthesize` + `ltca run` + `--flank coast`): every design above 5 was better with its
+#: generated gear — the 14x17 at Σ 90° (17.2 → 1.6; design torque 198 → 549 N m), the
+#: 18x22 at Σ 90° (7.8 → 0.57; drive LTE 66/64 → 36/39 µrad, every target met) and the
+#: 25x25 miter at β_m 37° (6.9 → 0.64; 770 → 1026 N m, LTE 37/58 → 25/33 µrad); below it
+#: the 13x37 at Σ 75° (2.5) and the 11x33 (2.0) keep their Formate gears
+THIRD_ORDER_SHARE_LIMIT = 5.0
 
 #: the generated gear is kept where its drive flank's share is below this fraction of the
 #: Formate gear's: where it removes most of the third order (21 → 3.7 on the 20x24 at
@@ -612,54 +616,56 @@ def third_order_rule(basic: BasicDesign) -> bool:
 def _by_third_order(basic: BasicDesign, key: tuple, *,
                     progress: Callable[[str], None] | None, memo: dict | None,
                     **kw: Any) -> tuple[Case, SynthesisReport]:
-    """:func:`_synthesize_tried` under :func:`third_order_rule`: the Formate gear, and the
-    generated gear (pinion on its crown gear) where the Formate drive flank's third-order
-    share exceeds :data:`THIRD_ORDER_SHARE_LIMIT`; the generated gear kept where its share
-    is below :data:`THIRD_ORDER_GAIN` of the Formate's (the Formate gear where the
-    generated gear has no solution), the source saying which and why, the memo deciding
-    (and keeping the text) for later syntheses."""
-    drive = basic.options.drive_flank
+    """:func:`_synthesize_tried` under :func:`third_order_rule`: the drive flank's
+    third-order share measured on the Formate gear at the default prescriptions
+    (:func:`_drive_third_order`) and, above :data:`THIRD_ORDER_SHARE_LIMIT`, on the
+    generated gear; the generated gear synthesised where its share is below
+    :data:`THIRD_ORDER_GAIN` of the Formate's (or the Formate gear has no solution), else
+    the Formate gear (the generated gear where that has no solution). The source says
+    which and why; the memo decides (and keeps the text) for later syntheses."""
     try:
-        first = _synthesize(basic, process="Formate", memo=memo, progress=progress,
-                            third_order=True, **kw)
-    except ReliefError:
-        raise  # the caller's to raise (`ltca synthesize` raises the relief), as for milling
+        share = _drive_third_order(basic, "Formate")
     except InputError as exc:
-        log.info("synthesis: the Formate face-hobbed gear has no solution (%s); trying the "
-                 "generated gear", exc)
-        first, share = None, math.inf
-    else:
-        share = first[1].flanks[drive].third_order
-    chosen, text = first, ""
+        log.info("synthesis: the Formate face-hobbed gear's third order not measured (%s)",
+                 exc)
+        share = math.inf
+    text, process = "", "Formate"
     if share > THIRD_ORDER_SHARE_LIMIT:
+        head = ("the Formate gear has no solution at the default prescriptions"
+                if not math.isfinite(share) else
+                f"the Formate gear's drive flank carries a third-order TE {share:.3g} times "
+                f"its parabola at +/-pitch/4 at the default prescriptions (limit "
+                f"{THIRD_ORDER_SHARE_LIMIT:g})")
         try:
-            second = _synthesize(basic, process="Generate", memo=memo, progress=progress,
-                                 third_order=True, **kw)
+            gen = _drive_third_order(basic, "Generate")
         except InputError as exc:
-            if first is None:
-                raise
             log.info("synthesis: the generated face-hobbed gear has no solution (%s)", exc)
-            text = (f"the Formate gear's drive flank carries a third-order TE {share:.3g} "
-                    f"times its parabola at +/-pitch/4 (limit {THIRD_ORDER_SHARE_LIMIT:g}); "
-                    f"the generated gear has no solution ({exc}); kept the Formate gear")
+            text = f"{head}; the generated gear has no solution ({exc}); kept the Formate gear"
         else:
-            gen = second[1].flanks[drive].third_order
-            if first is None or gen < THIRD_ORDER_GAIN * share:
-                chosen = second
-            text = (("the Formate gear has no solution" if first is None else
-                     f"the Formate gear's drive flank carries a third-order TE {share:.3g} "
-                     f"times its parabola at +/-pitch/4 (limit {THIRD_ORDER_SHARE_LIMIT:g})")
-                    + f", the generated gear's {gen:.3g}"
-                    + ("" if first is None else
-                       f" ({'below' if chosen is second else 'not below'} "
+            if gen < THIRD_ORDER_GAIN * share:
+                process = "Generate"
+            text = (f"{head}, the generated gear's {gen:.3g}"
+                    + ("" if not math.isfinite(share) else
+                       f" ({'below' if process == 'Generate' else 'not below'} "
                        f"{THIRD_ORDER_GAIN:g} of it)")
-                    + "; kept the " + ("generated" if chosen is second else "Formate")
+                    + "; kept the " + ("generated" if process == "Generate" else "Formate")
                     + " gear")
-    assert chosen is not None
-    case, report = chosen
-    process = report.gear.settings.process
+    tries = (process,) if process == "Generate" else ("Formate", "Generate")
+    for k, proc in enumerate(tries):
+        try:
+            case, report = _synthesize(basic, process=proc, memo=memo, progress=progress, **kw)
+        except ReliefError:
+            raise  # the caller's to raise (`ltca synthesize` raises the relief)
+        except InputError as exc:
+            if k == len(tries) - 1:
+                raise
+            log.info("synthesis: the Formate face-hobbed gear has no solution (%s); trying "
+                     "the generated gear", exc)
+            text = f"the Formate gear has no solution ({exc}); the generated gear"
+            continue
+        break
     if memo is not None:
-        memo[key] = (process, "gear")
+        memo[key] = (proc, "gear")
         if text:
             memo[("rule text", *key)] = text
     return (_with_rule_text(case, text) if text else case), report
@@ -722,13 +728,10 @@ def _synthesize(basic: BasicDesign, *, process: str, conjugate: bool = False,
                 progress: Callable[[str], None] | None = None,
                 memo: dict | None = None,
                 tip_planes: bool = True,
-                pinion_crown: str = "gear",
-                third_order: bool = False) -> tuple[Case, SynthesisReport]:
+                pinion_crown: str = "gear") -> tuple[Case, SynthesisReport]:
     """The body of :func:`synthesize` (its parameters, returns and steps) with the gear
     process ``"Formate"`` or ``"Generate"``; ``pinion_crown`` (a generated gear's, one of
-    :data:`PINION_CROWNS`): the pinion generated on the gear's crown gear or its own;
-    ``third_order``: each flank's third-order TE share measured
-    (:attr:`FlankSynthesis.third_order`)."""
+    :data:`PINION_CROWNS`): the pinion generated on the gear's crown gear or its own."""
     say = progress if progress is not None else (lambda _step: None)
     opt = basic.options
     # the memo's entries of this design: every input but the pinion flanks' prescriptions
@@ -743,24 +746,12 @@ def _synthesize(basic: BasicDesign, *, process: str, conjugate: bool = False,
         geom = kept["blank"]
     else:
         geom = kept["blank"] = basic.blank()
-    design = geom.design
-    pitch = geom.pitch
     say(f"blanks (ISO 23509) and the {'Formate' if process == 'Formate' else 'generated'} "
         "gear")
-    rc0 = opt.cutter_radius if opt.cutter_radius is not None else design.rc0
-    alpha_d = opt.blade_angle_drive if opt.blade_angle_drive is not None else pitch.alpha_nD
-    alpha_c = opt.blade_angle_coast if opt.blade_angle_coast is not None else pitch.alpha_nC
     drive = opt.drive_flank
     coast = _OTHER[drive]
-    gear_tools = gear_generate_tools if process == "Generate" else gear_formate_tools
-    gear = gear_tools(geom, cutter_radius=rc0, blade_angle_drive=alpha_d,
-                      blade_angle_coast=alpha_c, point_width=opt.point_width,
-                      edge_radius=opt.edge_radius, drive_flank=drive, blade_groups=design.z0)
-    pinion_hand = design.hand
-    gear_hand = "right" if pinion_hand == "left" else "left"
-    pair = _PairData(geom, gear, blank(geom.pinion), blank(geom.gear), pinion_hand,
-                     gear_hand, pair_kw(design.Sigma, design.a, gear_hand), pinion_crown,
-                     third_order)
+    pair = _pair_data(basic, geom, process, pinion_crown, False)
+    gear, pinion_hand, gear_hand = pair.gear, pair.pinion_hand, pair.gear_hand
     flanks: dict[str, FlankSynthesis] = {}
     ref_gear_rotation = None
     for pf in (drive, coast):
@@ -777,6 +768,40 @@ def _synthesize(basic: BasicDesign, *, process: str, conjugate: bool = False,
     case = _assemble(basic, geom, gear, flanks, pinion_hand, gear_hand,
                      pinion_crown=pinion_crown)
     return case, SynthesisReport(geom, gear, flanks)
+
+
+def _pair_data(basic: BasicDesign, geom: BlankGeometry, process: str, pinion_crown: str,
+               third_order: bool) -> _PairData:
+    """Step 2 of the module docstring: the gear's tools of ``process`` and what each pinion
+    flank's synthesis shares (:class:`_PairData`)."""
+    opt, design, pitch = basic.options, geom.design, geom.pitch
+    rc0 = opt.cutter_radius if opt.cutter_radius is not None else design.rc0
+    alpha_d = opt.blade_angle_drive if opt.blade_angle_drive is not None else pitch.alpha_nD
+    alpha_c = opt.blade_angle_coast if opt.blade_angle_coast is not None else pitch.alpha_nC
+    gear_tools = gear_generate_tools if process == "Generate" else gear_formate_tools
+    gear = gear_tools(geom, cutter_radius=rc0, blade_angle_drive=alpha_d,
+                      blade_angle_coast=alpha_c, point_width=opt.point_width,
+                      edge_radius=opt.edge_radius, drive_flank=opt.drive_flank,
+                      blade_groups=design.z0)
+    pinion_hand = design.hand
+    gear_hand = "right" if pinion_hand == "left" else "left"
+    return _PairData(geom, gear, blank(geom.pinion), blank(geom.gear), pinion_hand,
+                     gear_hand, pair_kw(design.Sigma, design.a, gear_hand), pinion_crown,
+                     third_order)
+
+
+def _drive_third_order(basic: BasicDesign, process: str) -> float:
+    """The drive flank's third-order TE share (:func:`~geometry.synthesis.modified_roll.
+    third_order_te`) with the gear of ``process``, at the default prescriptions
+    (:class:`FlankOptions`; steps 2-6, no relief): a property of the pair, whatever
+    prescriptions the synthesis that asks is given (a development's first trial is its
+    search's start, not the defaults)."""
+    geom = basic.blank()
+    pair = _pair_data(basic, geom, process, "gear", True)
+    fs = _unrelieved_flank(pair, basic.options.drive_flank, FlankOptions(), None,
+                           conjugate=False, say=lambda _step: None)
+    assert fs.third_order is not None
+    return fs.third_order
 
 
 class _PairData(NamedTuple):
