@@ -593,22 +593,26 @@ def third_order_rule(basic: BasicDesign) -> bool:
     Returns
     -------
     bool
-        True for a face-hobbed pair (z0 ≥ 1) with ``gear_process = "auto"`` and a gear
-        pitch angle δ2 below :data:`FORMATE_PITCH_ANGLE_LIMIT`: its synthesis measures the
+        True for a face-hobbed spiral bevel pair (z0 ≥ 1, offset a = 0) with
+        ``gear_process = "auto"`` and a gear pitch angle δ2 below
+        :data:`FORMATE_PITCH_ANGLE_LIMIT`: its synthesis measures the
         drive flank's third-order TE share on the Formate gear and, above
         :data:`THIRD_ORDER_SHARE_LIMIT`, synthesises the generated gear too, keeping it
         where its share is below :data:`THIRD_ORDER_GAIN` of the Formate gear's
         (:func:`_synthesize_tried`). Near ratio 1 the pinion rolled
         on the Formate gear's copy (a cone of angle δ2) carries a third-order TE tens of
         times the prescribed parabola; on the generated gear's plane crown gear it does not
-        (docs/synthesis.md, "The face-hobbed generated gear for ratios near 1").
+        (docs/synthesis.md, "The face-hobbed generated gear for ratios near 1"). Not a
+        hypoid: its gear, pinion and crown-gear axes cannot meet in one point, the
+        generated gear's conjugacy argument (and the bundled face-hobbed hypoid 12x41 of
+        Table 4.3, δ2 58.4°, share 6.9, keeps its Formate gear and its case).
 
     Raises
     ------
     InputError
         As :meth:`BasicDesign.blank`.
     """
-    if basic.options.gear_process != "auto" or not basic.design.z0:
+    if basic.options.gear_process != "auto" or not basic.design.z0 or basic.design.a != 0.0:
         return False
     return math.degrees(basic.blank().pitch.delta2) < FORMATE_PITCH_ANGLE_LIMIT
 
