@@ -163,7 +163,7 @@ def test_the_gear_process_rule_keeps_the_generated_gear_where_it_removes_the_thi
     keeps it (3.7, below half); the 16x16 at Σ 60° (40.9) keeps its Formate gear (32.4 is
     not below half: its generated pinion's coast flank is far from conjugate); the 13x37
     at Σ 75° (δ2 57.7°, share 2.5) keeps its Formate gear without a generated gear's
-    measure; a face-milled pair is not ruled (its generated gear
+    measure; a hypoid and a face-milled pair are not ruled (its generated gear
     follows gear_processes). The shares, measured at the default prescriptions whatever
     the synthesis is given (geometry.synthesis.modified_roll.third_order_te), are this
     file's spy measure above to the 3 significant digits printed; the source says which
@@ -210,3 +210,9 @@ def test_the_gear_process_rule_keeps_the_generated_gear_where_it_removes_the_thi
     assert RULE_TEXT_MARKER not in case.source
     fm = load_basic(_UNSEEN / "spiral_bevel_16x16_s60.toml")
     assert not third_order_rule(fm)
+    # a hypoid is not ruled: the bundled FH 12x41 of Table 4.3 (δ2 58.4°, share 6.9) keeps
+    # its Formate gear and its committed case
+    hypoid = load_basic(Path(__file__).parent.parent / "cases" / "basic"
+                        / "kolivand2009_fh_12x41.toml")
+    assert hypoid.design.z0 and hypoid.design.a != 0.0
+    assert not third_order_rule(hypoid)
