@@ -346,14 +346,20 @@ def gear_process_note(development, case) -> str | None:
     The same file with ``gear_process = "Generate"`` is no better: 19.6 N m, LTE p-p
     309 urad, root stress not computed (docs/own_gear_set.md, "unseen (8)").
     """
-    from geometry.synthesis.case_synthesis import FORMATE_PITCH_ANGLE_LIMIT, RULE_TEXT_MARKER
+    from geometry.synthesis.case_synthesis import (
+        FORMATE_PITCH_ANGLE_LIMIT,
+        RULE_TEXT_END,
+        RULE_TEXT_MARKER,
+    )
 
     text = getattr(development, "gear_process_text", "") if development is not None else ""
     source = getattr(case, "source", "")
     if not text and RULE_TEXT_MARKER in source:
         # a face-hobbed pair's gear chosen by its third-order TE (issue 71, ratio 1): the
-        # synthesis's sentence, the last of the source
-        return source[source.index(RULE_TEXT_MARKER):]
+        # synthesis's sentence, up to its reference (a development's text may follow it)
+        start = source.index(RULE_TEXT_MARKER)
+        end = source.find(RULE_TEXT_END, start)
+        return source[start:] if end < 0 else source[start:end + len(RULE_TEXT_END)]
     if not text:
         return None
     gear = case.gear

@@ -136,6 +136,7 @@ from geometry.synthesis.pinion import (
 from geometry.synthesis.tip_plane import tip_plane_on_root_cone
 
 __all__ = [
+    "RULE_TEXT_END",
     "RULE_TEXT_MARKER",
     "SYNTHESIS_STEPS",
     "THIRD_ORDER_GAIN",
@@ -675,14 +676,14 @@ def _by_third_order(basic: BasicDesign, key: tuple, *,
     return (_with_rule_text(case, text) if text else case), report
 
 
-#: the marker of :func:`_by_third_order`'s sentence in a case's ``source``
+#: the start and end of :func:`_by_third_order`'s sentence in a case's ``source``
 RULE_TEXT_MARKER = "Gear process (auto, face hobbing): "
+RULE_TEXT_END = "(docs/synthesis.md, \"The face-hobbed generated gear for ratios near 1\")."
 
 
 def _with_rule_text(case: Case, text: str) -> Case:
     """``case`` with the face-hobbing gear-process rule's ``text`` ending its source."""
-    return replace(case, source=f"{case.source} {RULE_TEXT_MARKER}{text} (docs/synthesis.md, "
-                   "\"The face-hobbed generated gear for ratios near 1\").")
+    return replace(case, source=f"{case.source} {RULE_TEXT_MARKER}{text} {RULE_TEXT_END}")
 
 
 def tried_text(err: BaseException) -> str:
