@@ -30,13 +30,14 @@ from geometry.synthesis.gear import tangent_basis
 _UNSEEN = Path(__file__).parent.parent / "benchmarks" / "data" / "unseen_designs"
 
 
-def _followed(name, monkeypatch):
+def _followed(name, monkeypatch, process="Formate"):
     """Synthesis of ``name`` at the default prescriptions (tip and root relief 20 µm: the
     default 15 µm is below what the 16x16's circular pinion profile needs, which `ltca
     synthesize` raises the same way), the flanks' TE followed from M by the TCA's
     contact solve before the modified roll (step 6 spied: its pair, start and rate).
     Returns {flank: (report flank, te(h) → (TE(h), TE(−h), dx/dr central), pitch, the
-    contact's rate at M, the gear face width b2)}, the drive flank first."""
+    contact's rate at M, the gear face width b2)}, the drive flank first. ``process``: the
+    gear process (Formate, as these designs were measured; "Generate" the generated gear)."""
     spied = []
 
     def spy(tools, pair, start, rate, **kw):
@@ -46,7 +47,8 @@ def _followed(name, monkeypatch):
     monkeypatch.setattr(cs, "tune_roll", spy)
     basic = load_basic(_UNSEEN / f"{name}.toml")
     fo = FlankOptions(tip_relief=0.02, root_relief=0.02)
-    basic = replace(basic, options=replace(basic.options, concave=fo, convex=fo))
+    basic = replace(basic, options=replace(basic.options, concave=fo, convex=fo,
+                                           gear_process=process))
     _, report = cs.synthesize(basic)
     out = {}
     for fs, (_tools, pair, start, rate, kw) in zip(
@@ -125,6 +127,92 @@ def test_third_order_te_of_the_pinion_on_the_formate_gear_near_ratio_one(monkeyp
     fh = _followed("fh_spiral_bevel_16x16_s60", monkeypatch)
     fs, te, pitch, _, _ = next(iter(fh.values()))
     assert _third_order_share(te, pitch, fs.a21) > 20.0
-    fm = _followed("spiral_bevel_16x16_s60", monkeypatch)
+    fm = _followed("spiral_bevel_16x16_s60", monkeypatch, "Generate")
     fs, te, pitch, _, _ = next(iter(fm.values()))
     assert _third_order_share(te, pitch, fs.a21) < 1.0
+
+
+@pytest.mark.parametrize(("name", "formate", "generated"), [
+    ("fh_spiral_bevel_20x24_s100", 21.0, 3.7),
+    ("fh_spiral_bevel_25x25_miter_b37", 6.9, 0.64),
+    ("fh_spiral_bevel_16x16_s60", 40.9, 32.4),
+])
+def test_the_face_hobbed_generated_gear_lowers_the_third_order_te(monkeypatch, name, formate,
+                                                                  generated):
+    """The fix of issue 71's ratio-1 face hobbing: the pinion rolled on the generated gear's
+    plane crown gear (cradle axis through the pitch apex) instead of the Formate gear's copy
+    (a cone of angle δ2). The drive flank's third-order share at ±pitch/4 (the spy's
+    Richardson slope, this file's measure) falls 21 → 3.7 on the 20x24 at Σ 100°, 6.9 → 0.64
+    on the 25x25 miter, and only 41 → 32 on the 16x16 at Σ 60° (its ratio of roll moves
+    from 2 to 1.08 to make the local synthesis's curvature: docs/synthesis.md, "The
+    face-hobbed generated gear for ratios near 1"); 3 % of the measured values allowed
+    (the designs' prescriptions are the defaults; the measure's own O(h⁴) error is 1e-3)."""
+    for process, expected in (("Formate", formate), ("Generate", generated)):
+        fh = _followed(name, monkeypatch, process)
+        fs, te, pitch, _, _ = next(iter(fh.values()))
+        share = _third_order_share(te, pitch, fs.a21)
+        assert share == pytest.approx(expected, rel=0.03), process
+    assert generated < formate
+
+
+def test_the_gear_process_rule_keeps_the_generated_gear_where_it_removes_the_third_order(
+        monkeypatch):
+    """``gear_process = "auto"`` on a face-hobbed pair below δ2 63° (:func:`geometry.
+    synthesis.case_synthesis.third_order_rule`): the 20x24 at Σ 100°, whose Formate drive
+    flank carries 21 (above the limit 5), is synthesised with the generated gear too and
+    keeps it (3.7, below half); the 16x16 at Σ 60° (40.9) keeps its Formate gear (32.4 is
+    not below half: its generated pinion's coast flank is far from conjugate); the 13x37
+    at Σ 75° (δ2 57.7°, share 2.5) keeps its Formate gear without a generated gear's
+    measure; a hypoid and a face-milled pair are not ruled (its generated gear
+    follows gear_processes). The shares, measured at the default prescriptions whatever
+    the synthesis is given (geometry.synthesis.modified_roll.third_order_te), are this
+    file's spy measure above to the 3 significant digits printed; the source says which
+    gear was kept and why, and only the gear kept is synthesised whole."""
+    from geometry.synthesis.case_synthesis import (
+        RULE_TEXT_MARKER,
+        THIRD_ORDER_SHARE_LIMIT,
+        third_order_rule,
+    )
+
+    calls = []
+    real = cs._synthesize
+
+    def counted(basic, **kw):
+        calls.append(kw["process"])
+        return real(basic, **kw)
+
+    monkeypatch.setattr(cs, "_synthesize", counted)
+    fo = FlankOptions(tip_relief=0.025, root_relief=0.02)
+    for name, process, text in (
+            ("fh_spiral_bevel_20x24_s100", "Generate",
+             "carries a third-order TE 21 times its parabola at +/-pitch/4 at the default "
+             "prescriptions (limit 5), the generated gear's 3.68 (below 0.5 of it); kept "
+             "the generated gear"),
+            ("fh_spiral_bevel_16x16_s60", "Formate",
+             "carries a third-order TE 40.9 times its parabola at +/-pitch/4 at the default "
+             "prescriptions (limit 5), the generated gear's 32.4 (not below 0.5 of it); "
+             "kept the Formate gear")):
+        calls.clear()
+        basic = load_basic(_UNSEEN / f"{name}.toml")
+        basic = replace(basic, options=replace(basic.options, concave=fo, convex=fo))
+        assert third_order_rule(basic)
+        case, report = cs.synthesize(basic)
+        assert calls == [process], name  # the shares measured without a whole synthesis
+        assert report.gear.settings.process == process, name
+        assert RULE_TEXT_MARKER in case.source and text in case.source, name
+    calls.clear()
+    basic = load_basic(_UNSEEN / "fh_spiral_bevel_13x37_s75.toml")
+    assert third_order_rule(basic)
+    case, report = cs.synthesize(basic)
+    assert calls == ["Formate"]
+    assert report.gear.settings.process == "Formate"
+    assert cs._drive_third_order(basic, "Formate") < THIRD_ORDER_SHARE_LIMIT
+    assert RULE_TEXT_MARKER not in case.source
+    fm = load_basic(_UNSEEN / "spiral_bevel_16x16_s60.toml")
+    assert not third_order_rule(fm)
+    # a hypoid is not ruled: the bundled FH 12x41 of Table 4.3 (δ2 58.4°, share 6.9) keeps
+    # its Formate gear and its committed case
+    hypoid = load_basic(Path(__file__).parent.parent / "cases" / "basic"
+                        / "kolivand2009_fh_12x41.toml")
+    assert hypoid.design.z0 and hypoid.design.a != 0.0
+    assert not third_order_rule(hypoid)

@@ -272,6 +272,16 @@ def test_gear_process_note_says_which_gear_auto_kept():
     assert gear_process_note(dev, case("Generate", 45.0)) == dev.gear_process_text
     assert gear_process_note(NS(gear_process_text=""), case("Formate", 45.0)) is None
     assert gear_process_note(None, case("Formate", 45.0)) is None
+    # a face-hobbed pair's gear chosen by its third-order TE (issue 71, ratio 1): the
+    # synthesis's sentence, with or without a development
+    from geometry.synthesis.case_synthesis import RULE_TEXT_END, RULE_TEXT_MARKER
+
+    fh = NS(**vars(case("Generate", 56.2)),
+            source=f"Basic data. {RULE_TEXT_MARKER}the Formate gear's ...; kept the generated "
+                   f"gear {RULE_TEXT_END} Development bearing: design 6 of 28.")
+    for d in (None, NS(gear_process_text="")):
+        assert gear_process_note(d, fh) == (f"{RULE_TEXT_MARKER}the Formate gear's ...; kept "
+                                            f"the generated gear {RULE_TEXT_END}")
 
 
 def test_an_iso_method_not_available_names_its_basic_file_field(tmp_path):

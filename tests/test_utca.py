@@ -499,3 +499,24 @@ def test_unloaded_tca_repeated_hands_out_its_own_datasets():
     eo_c, ut_c = unloaded_tca(case, rolls_per_cycle=8)
     assert eo_b.identical(eo_c) and ut_b.identical(ut_c)
     assert eo_b is not eo_c and ut_b is not ut_c
+
+
+def test_a_flank_in_contact_at_no_roll_is_named_not_an_all_nan_error(monkeypatch):
+    """The cycle's start where no transition is found scans the reference pair's UTE; where
+    no roll of the scan meets the valid ease-off (the face-hobbed 16x16 at Σ 60°'s coast
+    flank on its generated gear, issue 71: valid over 29 % of the grid, 54 mm at its
+    largest) the error names the flank and the valid share (was numpy's "All-NaN slice
+    encountered" from `ltca run --flank coast`)."""
+    from types import SimpleNamespace
+
+    import contact.utca.datasets as ds
+    from geometry.core.errors import InputError
+
+    monkeypatch.setattr(ds, "pair_transmission_error",
+                        lambda eo, scan, **kw: np.full(len(scan), np.nan))
+    eo = SimpleNamespace(pitch=0.39, roll_angle=np.array([0.0, 2.8, np.nan]),
+                         valid=np.array([True, True, False, False]), pinion_flank="convex")
+    with pytest.raises(InputError, match=r"pinion convex flank's reference pair is in "
+                                         r"contact at no roll of 0 to 2\.8 rad.*valid over "
+                                         r"50 % of the grid"):
+        ds._cycle_start(eo, math.nan, math.nan, {})

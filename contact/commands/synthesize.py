@@ -333,7 +333,10 @@ def gear_process_note(development, case) -> str | None:
     -------
     str or None
         None where the development chose no gear process (its ``gear_process_text``
-        empty) or there was no development.
+        empty) or there was no development; a face-hobbed pair's choice by its
+        third-order TE (``case.source``'s sentence from
+        :data:`~geometry.synthesis.case_synthesis.RULE_TEXT_MARKER` on) where the
+        development chose none.
 
     Notes
     -----
@@ -343,9 +346,20 @@ def gear_process_note(development, case) -> str | None:
     The same file with ``gear_process = "Generate"`` is no better: 19.6 N m, LTE p-p
     309 urad, root stress not computed (docs/own_gear_set.md, "unseen (8)").
     """
-    from geometry.synthesis.case_synthesis import FORMATE_PITCH_ANGLE_LIMIT
+    from geometry.synthesis.case_synthesis import (
+        FORMATE_PITCH_ANGLE_LIMIT,
+        RULE_TEXT_END,
+        RULE_TEXT_MARKER,
+    )
 
     text = getattr(development, "gear_process_text", "") if development is not None else ""
+    source = getattr(case, "source", "")
+    if not text and RULE_TEXT_MARKER in source:
+        # a face-hobbed pair's gear chosen by its third-order TE (issue 71, ratio 1): the
+        # synthesis's sentence, up to its reference (a development's text may follow it)
+        start = source.index(RULE_TEXT_MARKER)
+        end = source.find(RULE_TEXT_END, start)
+        return source[start:] if end < 0 else source[start:end + len(RULE_TEXT_END)]
     if not text:
         return None
     gear = case.gear

@@ -305,6 +305,16 @@ def _cycle_start(eo: EaseOff, m1: float, m2: float, kw: dict) -> float:
         return m2 - p
     scan = np.linspace(0.0, float(np.nanmax(eo.roll_angle)), 65)
     u0 = pair_transmission_error(eo, scan, **kw)
+    if not np.isfinite(u0).any():
+        # no roll of the scan meets the flank's valid ease-off (a flank generated far from
+        # conjugate: the face-hobbed 16x16 at Σ 60°'s coast flank on its generated gear,
+        # its ease-off valid over 29 % of the grid and 54 mm at its largest): a named error,
+        # not numpy's "All-NaN slice" (issue 71)
+        raise InputError(
+            f"case: the pinion {eo.pinion_flank} flank's reference pair is in contact at no "
+            f"roll of 0 to {float(np.nanmax(eo.roll_angle)):.4g} rad (its ease-off valid over "
+            f"{100.0 * float(np.mean(eo.valid)):.0f} % of the grid): the flank is far from "
+            "conjugate to its mate; synthesise it again (other [synthesis] prescriptions)")
     start = float(scan[int(np.nanargmin(u0))]) - 0.5 * p
     log.warning("unloaded_tca: no transition between adjacent pairs found; the cycle is "
                 "centred on the reference pair's lowest UTE")

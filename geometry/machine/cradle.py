@@ -497,16 +497,21 @@ def cutter_pose(settings: MachineSettings, q=0.0, theta=0.0):
     return m[..., :3, 3], m[..., :3, 2]
 
 
-def cradle_pose(settings: MachineSettings, q=0.0) -> tuple[np.ndarray, np.ndarray]:
+def cradle_pose(settings: MachineSettings, q=0.0,
+                theta=0.0) -> tuple[np.ndarray, np.ndarray]:
     """A point of the cradle axis and its direction (towards the work) in the blank frame.
 
     Parameters
     ----------
     settings : MachineSettings
-        Face-milling settings (the cradle does not move with the cutter spin).
+        Machine settings (face milling or face hobbing).
     q : float — [rad]
         Cradle rotation from the reference position: the blank frame turns with the
         work's roll φ(q) (0 for Formate).
+    theta : float — [rad]
+        Cutter spin: in face hobbing the work also indexes by κθ, which turns the blank
+        frame about the work axis (and with it the cradle axis's image where the machine
+        root angle is not 90°); no effect in face milling (κ = 0). Default 0.
 
     Returns
     -------
@@ -523,7 +528,7 @@ def cradle_pose(settings: MachineSettings, q=0.0) -> tuple[np.ndarray, np.ndarra
     """
     if settings.process == "Formate":
         q = 0.0
-    phi = float(work_rotation(settings, np.asarray(float(q)))[0])
+    phi = float(work_rotation(settings, np.asarray(float(q)), float(theta))[0])
     xb = float(taylor_motion(settings.sliding_base, settings.helical_motion, float(q))[0])
     em = float(taylor_motion(settings.blank_offset, settings.vertical_motion, float(q))[0])
     m = (rot("z", -phi) @ trans([0.0, 0.0, -settings.machine_center_to_back])

@@ -73,6 +73,7 @@ FlankPoint             flank points with tangents and curvature (from
                        :mod:`geometry.machine.flank_point`)
 gear_formate_tools     Formate gear blades and settings
 gear_processes         the gear processes a synthesis tries (Formate, then Generate)
+third_order_rule       whether a face-hobbed pair's gear process follows its third-order TE
 mean_point             mesh position of the gear mean point (surface of action)
 local_synthesis        pinion shape operator at M from the local-synthesis conditions
 pinion_generate_tools  pinion blade and settings that realise a shape operator at M
@@ -119,7 +120,12 @@ from geometry.synthesis.gear import (
 )
 from geometry.synthesis.local import LocalSynthesis, local_synthesis
 from geometry.synthesis.mean_point import MeanPoint, mean_point, pair_kw
-from geometry.synthesis.modified_roll import ROLL_FRACTIONS, nominal_transforms, tune_roll
+from geometry.synthesis.modified_roll import (
+    ROLL_FRACTIONS,
+    nominal_transforms,
+    third_order_te,
+    tune_roll,
+)
 from geometry.synthesis.pinion import (
     PinionTools,
     WarmTools,
@@ -130,12 +136,17 @@ from geometry.synthesis.pinion import (
 from geometry.synthesis.tip_plane import tip_plane_on_root_cone
 
 __all__ = [
+    "RULE_TEXT_END",
+    "RULE_TEXT_MARKER",
     "SYNTHESIS_STEPS",
+    "THIRD_ORDER_GAIN",
+    "THIRD_ORDER_SHARE_LIMIT",
     "FlankSynthesis",
     "SynthesisReport",
     "gear_processes",
     "relief_for_profile",
     "synthesize",
+    "third_order_rule",
 ]
 
 log = logging.getLogger(__name__)
@@ -184,6 +195,11 @@ class FlankSynthesis:
     #: [1] the roll, a fraction of the pitch, at which step 6 put the TE on its parabola
     #: (modified_roll.ROLL_FRACTIONS: ±pitch/4 unless the contact leaves the flank before)
     roll_fraction: float = 0.25
+    #: [1] the TE's third-order share at ±pitch/4 before step 6
+    #: (modified_roll.third_order_te), where the synthesis measured it (the face-hobbing
+    #: gear-process rule's measure at the default prescriptions, :func:`_drive_third_order`);
+    #: None where not measured
+    third_order: float | None = None
 
 
 @dataclass(frozen=True, eq=False)
@@ -310,9 +326,10 @@ def formate_limit_hint(basic: BasicDesign) -> str:
     -------
     str
         Empty where the gear pitch angle δ2 is at least :data:`FORMATE_PITCH_ANGLE_LIMIT`,
-        where a generated gear is tried after it (:func:`gear_processes`) or where the blank
-        cannot be made; else (a Formate gear below the limit: forced by ``gear_process =
-        "Formate"``, or face hobbed) a sentence naming δ2, the ratio and what to change.
+        where a generated gear is tried after it (:func:`gear_processes`,
+        :func:`third_order_rule`) or where the blank cannot be made; else (a Formate gear
+        below the limit forced by ``gear_process = "Formate"``) a sentence naming δ2, the
+        ratio and what to change.
 
     Notes
     -----
@@ -330,12 +347,11 @@ def formate_limit_hint(basic: BasicDesign) -> str:
     except InputError:
         return ""
     delta2 = math.degrees(pitch.delta2)
-    if delta2 >= FORMATE_PITCH_ANGLE_LIMIT or processes != ("Formate",):
+    if (delta2 >= FORMATE_PITCH_ANGLE_LIMIT or processes != ("Formate",)
+            or third_order_rule(basic)):
         return ""
     d = basic.design
-    remedy = ("a generated gear (gear_process 'Generate', face milling only) is what such a "
-              "pair needs" if d.z0 else
-              "a generated gear (gear_process 'Generate' or 'auto', the default) is what such "
+    remedy = ("a generated gear (gear_process 'Generate' or 'auto', the default) is what such "
               "a pair needs")
     return (f"the gear is Formate (non-generated) and its pitch angle is delta2 = "
             f"{delta2:.1f} deg (ratio z2/z1 = {d.z2 / d.z1:.2f}): below about "
@@ -498,6 +514,13 @@ def _synthesize_tried(basic: BasicDesign, *, progress: Callable[[str], None] | N
     key = ("gear process", basic.design,
            replace(basic.options, concave=FlankOptions(), convex=FlankOptions()))
     decided = None if memo is None else memo.get(key)
+    if decided is None and third_order_rule(basic) and not kw.get("conjugate"):
+        return _by_third_order(basic, key, progress=progress, memo=memo, **kw)
+    if decided is not None and memo is not None and ("rule text", *key) in memo:
+        # the rule's choice, said in every case of the series (a development writes its last)
+        case, report = _synthesize(basic, process=decided[0], memo=memo, progress=progress,
+                                   **kw)
+        return _with_rule_text(case, memo[("rule text", *key)]), report
     # a generated gear's pinion on the gear's own crown gear first, on its own crown gear
     # where that has no solution (:func:`_generating_tools`)
     tries = ((decided,) if decided else tuple(
@@ -539,6 +562,128 @@ def _synthesize_tried(basic: BasicDesign, *, progress: Callable[[str], None] | N
             progress(line)
         return out
     raise AssertionError("unreachable")  # pragma: no cover
+
+
+#: the face-hobbed gear's process under ``gear_process = "auto"`` (:func:`third_order_rule`):
+#: the drive flank's third-order TE share at ±pitch/4 (modified_roll.third_order_te, at the
+#: default prescriptions) above which the generated gear's share is measured too, and the
+#: generated gear kept where it is below :data:`THIRD_ORDER_GAIN` of the Formate's.
+#: Measured (docs/synthesis.md, "The face-hobbed generated gear for ratios near 1"; `ltca
+#: synthesize` + `ltca run` + `--flank coast`): every design above 5 was better with its
+#: generated gear — the 14x17 at Σ 90° (17.2 → 1.6; design torque 198 → 549 N m), the
+#: 18x22 at Σ 90° (7.8 → 0.57; drive LTE 66/64 → 36/39 µrad, every target met) and the
+#: 25x25 miter at β_m 37° (6.9 → 0.64; 770 → 1026 N m, LTE 37/58 → 25/33 µrad); below it
+#: the 13x37 at Σ 75° (2.5) and the 11x33 (2.0) keep their Formate gears
+THIRD_ORDER_SHARE_LIMIT = 5.0
+
+#: the generated gear is kept where its drive flank's share is below this fraction of the
+#: Formate gear's: where it removes most of the third order (21 → 3.7 on the 20x24 at
+#: Σ 100°, 17 → 1.6 on the 14x17 at Σ 90°), not where it leaves most of it (41 → 32 on the
+#: 16x16 at Σ 60°, whose generated pinion's ratios of roll move 2 → 1.08 / 3.49 and whose
+#: developed coast flank is far from conjugate: ease-off valid over 29 % of its grid)
+THIRD_ORDER_GAIN = 0.5
+
+
+def third_order_rule(basic: BasicDesign) -> bool:
+    """Whether the synthesis of ``basic`` chooses its gear process by the third-order TE.
+
+    Parameters
+    ----------
+    basic : BasicDesign
+
+    Returns
+    -------
+    bool
+        True for a face-hobbed spiral bevel pair (z0 ≥ 1, offset a = 0) with
+        ``gear_process = "auto"`` and a gear pitch angle δ2 below
+        :data:`FORMATE_PITCH_ANGLE_LIMIT`: its synthesis measures the
+        drive flank's third-order TE share on the Formate gear and, above
+        :data:`THIRD_ORDER_SHARE_LIMIT`, synthesises the generated gear too, keeping it
+        where its share is below :data:`THIRD_ORDER_GAIN` of the Formate gear's
+        (:func:`_synthesize_tried`). Near ratio 1 the pinion rolled
+        on the Formate gear's copy (a cone of angle δ2) carries a third-order TE tens of
+        times the prescribed parabola; on the generated gear's plane crown gear it does not
+        (docs/synthesis.md, "The face-hobbed generated gear for ratios near 1"). Not a
+        hypoid: its gear, pinion and crown-gear axes cannot meet in one point, the
+        generated gear's conjugacy argument (and the bundled face-hobbed hypoid 12x41 of
+        Table 4.3, δ2 58.4°, share 6.9, keeps its Formate gear and its case).
+
+    Raises
+    ------
+    InputError
+        As :meth:`BasicDesign.blank`.
+    """
+    if basic.options.gear_process != "auto" or not basic.design.z0 or basic.design.a != 0.0:
+        return False
+    return math.degrees(basic.blank().pitch.delta2) < FORMATE_PITCH_ANGLE_LIMIT
+
+
+def _by_third_order(basic: BasicDesign, key: tuple, *,
+                    progress: Callable[[str], None] | None, memo: dict | None,
+                    **kw: Any) -> tuple[Case, SynthesisReport]:
+    """:func:`_synthesize_tried` under :func:`third_order_rule`: the drive flank's
+    third-order share measured on the Formate gear at the default prescriptions
+    (:func:`_drive_third_order`) and, above :data:`THIRD_ORDER_SHARE_LIMIT`, on the
+    generated gear; the generated gear synthesised where its share is below
+    :data:`THIRD_ORDER_GAIN` of the Formate's (or the Formate gear has no solution), else
+    the Formate gear (the generated gear where that has no solution). The source says
+    which and why; the memo decides (and keeps the text) for later syntheses."""
+    try:
+        share = _drive_third_order(basic, "Formate")
+    except InputError as exc:
+        log.info("synthesis: the Formate face-hobbed gear's third order not measured (%s)",
+                 exc)
+        share = math.inf
+    text, process = "", "Formate"
+    if share > THIRD_ORDER_SHARE_LIMIT:
+        head = ("the Formate gear has no solution at the default prescriptions"
+                if not math.isfinite(share) else
+                f"the Formate gear's drive flank carries a third-order TE {share:.3g} times "
+                f"its parabola at +/-pitch/4 at the default prescriptions (limit "
+                f"{THIRD_ORDER_SHARE_LIMIT:g})")
+        try:
+            gen = _drive_third_order(basic, "Generate")
+        except InputError as exc:
+            log.info("synthesis: the generated face-hobbed gear has no solution (%s)", exc)
+            text = f"{head}; the generated gear has no solution ({exc}); kept the Formate gear"
+        else:
+            if gen < THIRD_ORDER_GAIN * share:
+                process = "Generate"
+            text = (f"{head}, the generated gear's {gen:.3g}"
+                    + ("" if not math.isfinite(share) else
+                       f" ({'below' if process == 'Generate' else 'not below'} "
+                       f"{THIRD_ORDER_GAIN:g} of it)")
+                    + "; kept the " + ("generated" if process == "Generate" else "Formate")
+                    + " gear")
+    tries = (process,) if process == "Generate" else ("Formate", "Generate")
+    for k, proc in enumerate(tries):
+        try:
+            case, report = _synthesize(basic, process=proc, memo=memo, progress=progress, **kw)
+        except ReliefError:
+            raise  # the caller's to raise (`ltca synthesize` raises the relief)
+        except InputError as exc:
+            if k == len(tries) - 1:
+                raise
+            log.info("synthesis: the Formate face-hobbed gear has no solution (%s); trying "
+                     "the generated gear", exc)
+            text = f"the Formate gear has no solution ({exc}); the generated gear"
+            continue
+        break
+    if memo is not None:
+        memo[key] = (proc, "gear")
+        if text:
+            memo[("rule text", *key)] = text
+    return (_with_rule_text(case, text) if text else case), report
+
+
+#: the start and end of :func:`_by_third_order`'s sentence in a case's ``source``
+RULE_TEXT_MARKER = "Gear process (auto, face hobbing): "
+RULE_TEXT_END = "(docs/synthesis.md, \"The face-hobbed generated gear for ratios near 1\")."
+
+
+def _with_rule_text(case: Case, text: str) -> Case:
+    """``case`` with the face-hobbing gear-process rule's ``text`` ending its source."""
+    return replace(case, source=f"{case.source} {RULE_TEXT_MARKER}{text} {RULE_TEXT_END}")
 
 
 def tried_text(err: BaseException) -> str:
@@ -606,23 +751,12 @@ def _synthesize(basic: BasicDesign, *, process: str, conjugate: bool = False,
         geom = kept["blank"]
     else:
         geom = kept["blank"] = basic.blank()
-    design = geom.design
-    pitch = geom.pitch
     say(f"blanks (ISO 23509) and the {'Formate' if process == 'Formate' else 'generated'} "
         "gear")
-    rc0 = opt.cutter_radius if opt.cutter_radius is not None else design.rc0
-    alpha_d = opt.blade_angle_drive if opt.blade_angle_drive is not None else pitch.alpha_nD
-    alpha_c = opt.blade_angle_coast if opt.blade_angle_coast is not None else pitch.alpha_nC
     drive = opt.drive_flank
     coast = _OTHER[drive]
-    gear_tools = gear_generate_tools if process == "Generate" else gear_formate_tools
-    gear = gear_tools(geom, cutter_radius=rc0, blade_angle_drive=alpha_d,
-                      blade_angle_coast=alpha_c, point_width=opt.point_width,
-                      edge_radius=opt.edge_radius, drive_flank=drive, blade_groups=design.z0)
-    pinion_hand = design.hand
-    gear_hand = "right" if pinion_hand == "left" else "left"
-    pair = _PairData(geom, gear, blank(geom.pinion), blank(geom.gear), pinion_hand,
-                     gear_hand, pair_kw(design.Sigma, design.a, gear_hand), pinion_crown)
+    pair = _pair_data(basic, geom, process, pinion_crown, False)
+    gear, pinion_hand, gear_hand = pair.gear, pair.pinion_hand, pair.gear_hand
     flanks: dict[str, FlankSynthesis] = {}
     ref_gear_rotation = None
     for pf in (drive, coast):
@@ -641,6 +775,40 @@ def _synthesize(basic: BasicDesign, *, process: str, conjugate: bool = False,
     return case, SynthesisReport(geom, gear, flanks)
 
 
+def _pair_data(basic: BasicDesign, geom: BlankGeometry, process: str, pinion_crown: str,
+               third_order: bool) -> _PairData:
+    """Step 2 of the module docstring: the gear's tools of ``process`` and what each pinion
+    flank's synthesis shares (:class:`_PairData`)."""
+    opt, design, pitch = basic.options, geom.design, geom.pitch
+    rc0 = opt.cutter_radius if opt.cutter_radius is not None else design.rc0
+    alpha_d = opt.blade_angle_drive if opt.blade_angle_drive is not None else pitch.alpha_nD
+    alpha_c = opt.blade_angle_coast if opt.blade_angle_coast is not None else pitch.alpha_nC
+    gear_tools = gear_generate_tools if process == "Generate" else gear_formate_tools
+    gear = gear_tools(geom, cutter_radius=rc0, blade_angle_drive=alpha_d,
+                      blade_angle_coast=alpha_c, point_width=opt.point_width,
+                      edge_radius=opt.edge_radius, drive_flank=opt.drive_flank,
+                      blade_groups=design.z0)
+    pinion_hand = design.hand
+    gear_hand = "right" if pinion_hand == "left" else "left"
+    return _PairData(geom, gear, blank(geom.pinion), blank(geom.gear), pinion_hand,
+                     gear_hand, pair_kw(design.Sigma, design.a, gear_hand), pinion_crown,
+                     third_order)
+
+
+def _drive_third_order(basic: BasicDesign, process: str) -> float:
+    """The drive flank's third-order TE share (:func:`~geometry.synthesis.modified_roll.
+    third_order_te`) with the gear of ``process``, at the default prescriptions
+    (:class:`FlankOptions`; steps 2-6, no relief): a property of the pair, whatever
+    prescriptions the synthesis that asks is given (a development's first trial is its
+    search's start, not the defaults)."""
+    geom = basic.blank()
+    pair = _pair_data(basic, geom, process, "gear", True)
+    fs = _unrelieved_flank(pair, basic.options.drive_flank, FlankOptions(), None,
+                           conjugate=False, say=lambda _step: None)
+    assert fs.third_order is not None
+    return fs.third_order
+
+
 class _PairData(NamedTuple):
     """What the synthesis of each pinion flank shares: blanks, the gear's tools, hands and
     the placement keywords of :func:`geometry.pair.assembly.member_transform`."""
@@ -653,6 +821,7 @@ class _PairData(NamedTuple):
     gear_hand: str
     kw: dict[str, Any]
     pinion_crown: str = "gear"  # a generated gear's: the pinion on "gear" or "own" crown gear
+    third_order: bool = False  # measure each flank's third-order TE share (step 6's start)
 
 
 def _synthesize_flank(pair: _PairData, pf: str, fo: FlankOptions,
@@ -834,6 +1003,10 @@ def _unrelieved_flank(pair: _PairData, pf: str, fo: FlankOptions,
 
     start = np.array([pl[2], math.hypot(pl[0], pl[1]), zg, pg, mp.gear_rotation])
     rate = np.array([*rates(vp, pl), *rates(vg, gl), mp.gear_sense * z1 / geom.gear.z])
+    kw = dict(phi_p0=mp.pinion_rotation + hand_sign * tools.blank_phase,
+              pinion_sense=mp.pinion_sense, gear_sense=mp.gear_sense, ratio=z1 / geom.gear.z)
+    third = (third_order_te(tools, tooth_pair, start, rate, a21=a21, pitch=2 * math.pi / z1,
+                            **kw).share if pair.third_order else None)
     say(f"pinion {pf}: modified roll (6D, 24E)")
     # at ±pitch/4, nearer M where the contact cannot be followed that far (the first
     # roll's error where none can)
@@ -841,13 +1014,12 @@ def _unrelieved_flank(pair: _PairData, pf: str, fo: FlankOptions,
     for fraction in ROLL_FRACTIONS:
         try:
             tuned = tune_roll(tools, tooth_pair, start, rate, a21=a21, pitch=2 * math.pi / z1,
-                              phi_p0=mp.pinion_rotation + hand_sign * tools.blank_phase,
-                              pinion_sense=mp.pinion_sense, gear_sense=mp.gear_sense,
-                              ratio=z1 / geom.gear.z, fraction=fraction)
+                              fraction=fraction, **kw)
         except InputError as err:
             first = first or err
             continue
-        return FlankSynthesis(pf, fo, a21, mp, ls, tuned, roll_fraction=fraction)
+        return FlankSynthesis(pf, fo, a21, mp, ls, tuned, roll_fraction=fraction,
+                              third_order=third)
     assert first is not None
     raise InputError(f"{first}, on the pinion {pf} flank, nor nearer M (+/-pitch/6, "
                      f"+/-pitch/8); {_spiral_angles(pair.geom)}") from first
@@ -905,7 +1077,8 @@ def _generating_tools(pair: _PairData, pf: str, gblade: Blade, gp: FlankPoint,
     generated = gs.process == "Generate"
     # a generated gear: the gear's cutter where it generates M (roll q_M)
     q_m = float(gp.params[2]) if generated else 0.0
-    cg, ug = cutter_pose(gs, q_m, float(gp.params[1]) if z0 else 0.0)
+    theta_m = float(gp.params[1]) if z0 else 0.0
+    cg, ug = cutter_pose(gs, q_m, theta_m)
     if pair.gear_hand == "left":
         cg, ug = _MIRROR @ cg, _MIRROR @ ug
     cg = mir @ rot.T @ (tg[:3, :3] @ cg + tg[:3, 3] - tp[:3, 3])
@@ -927,7 +1100,8 @@ def _generating_tools(pair: _PairData, pf: str, gblade: Blade, gp: FlankPoint,
         # Sigma 60 deg, 0-31 um now; where its synthesis has no solution, the own crown
         # gear below, :func:`_synthesize_tried`; docs/synthesis.md, "The generated gear's
         # pinion on the gear's crown gear".)
-        cpg, cag = cradle_pose(gs, q_m)
+        # face hobbing: the work indexed by κ2 θ_M too (the spin that cuts M)
+        cpg, cag = cradle_pose(gs, q_m, theta_m)
         if pair.gear_hand == "left":
             cpg, cag = _MIRROR @ cpg, _MIRROR @ cag
         cradle_point = mir @ rot.T @ (tg[:3, :3] @ cpg + tg[:3, 3] - tp[:3, 3])

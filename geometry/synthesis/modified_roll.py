@@ -274,3 +274,65 @@ def tune_roll(tools: PinionTools, pair: ToothPair, start, rate, *, a21: float,
     if warm is not None:
         warm.cold += 1
     return kept(*out)
+
+
+class ThirdOrderTE(NamedTuple):
+    """Result of :func:`third_order_te`."""
+
+    c3: float  # [1/rad²] the TE's coefficient of roll³ at M
+    share: float  # [1] 2 |c3| (pitch/4) / a21: the cubic at ±pitch/4 over the parabola there
+
+
+def third_order_te(tools: PinionTools, pair: ToothPair, start, rate, *, a21: float,
+                   pitch: float, **kw) -> ThirdOrderTE:
+    """The third-order term of the TE the local synthesis leaves at M (before step 6).
+
+    Parameters
+    ----------
+    tools : PinionTools
+        The pinion's tools of step 5 (their modified roll, if any, is used as given).
+    pair : geometry.pair.conventional_tca.ToothPair
+        The pair (its pinion's machine is replaced by ``tools.settings``).
+    start, rate : array_like (5,)
+        The contact at M and its rate per unit roll, as :func:`tune_roll`.
+    a21 : float — [1/rad]
+        The prescribed TE curvature at M (> 0).
+    pitch : float — [rad]
+        The pinion's angular pitch 2π/z1.
+    **kw
+        ``phi_p0``, ``pinion_sense``, ``gear_sense``, ``ratio`` as :func:`tune_roll`.
+
+    Returns
+    -------
+    ThirdOrderTE
+        c3 [1/rad²] from the TE's odd part, slope(h) = (TE(h) − TE(−h))/(2h) = c3 h² + O(h⁴)
+        at h = pitch/64 and pitch/32, Richardson-extrapolated to h → 0; ``share`` = 2 |c3|
+        (pitch/4) / a21, the cubic's size at ±pitch/4 against the prescribed parabola
+        a21 (pitch/4)²/2 there.
+
+    Raises
+    ------
+    InputError
+        If a21 is not positive or the contact cannot be followed to ±pitch/32.
+
+    Notes
+    -----
+    Source: the measurement of ``docs/synthesis.md``, "Near ratio 1: the third-order TE of
+    the pinion generated on the Formate gear" (the 16x16 at Σ 60°: c3 −0.122 /rad², share
+    41 on the Formate gear's copy; the face-milled pair on the generated gear's crown gear
+    0.31), and ``tests/test_synthesis_ratio_one.py``, whose independent contact solve
+    (seed Eq. 2.14) gives the same numbers.
+    """
+    if not a21 > 0.0:
+        raise InputError(f"a21: must be > 0 1/rad for a third-order share, got {a21:.4g}")
+    pinion = pair.pinion._replace(machine=tools.settings)
+    followed = ToothPair(pinion, pair.gear, pair.transforms)
+    h = pitch / 64.0
+    te, _ = _te_at(followed, np.asarray(start, float), np.asarray(rate, float),
+                   rolls=(h, -h, 2.0 * h, -2.0 * h), **kw)
+
+    def over_h2(s: float) -> float:
+        return (te[s] - te[-s]) / (2.0 * s) / s**2
+
+    c3 = (4.0 * over_h2(h) - over_h2(2.0 * h)) / 3.0
+    return ThirdOrderTE(float(c3), float(2.0 * abs(c3) * 0.25 * pitch / a21))
