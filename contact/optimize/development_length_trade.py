@@ -27,8 +27,9 @@ to 0.7 / ε_vβ leaves the 27x34 where it is (0.6 at ε_vβ 1.17: its measured 6
 the torques at 0.60 is the law's margin, not a longer need), asks 0.75–0.85 of the face
 below ε_vβ 1, where the pattern is no sign-off lever (the 13x41 reaches 40 µrad only at
 0.80, its centre v missed, 0.07 from the heel), and would change the development of every
-normal-β design below ε_vβ 1.17 (the bundled 11x41 at β_m 40.5°, ε_vβ 1.13, among them).
-No other lever reaches 0.6 with the LTE kept on the 27x34 (43 designs: profile crowning,
+normal-β design below ε_vβ 1.17 (four of tests/data/designs and the bundled 11x41 at
+β_m 40.5°, ε_vβ 1.13, among them).
+No other lever reaches 0.6 with the LTE kept on the 27x34 (42 variants: profile crowning,
 path angle, TE level, mean point, blade angle, relief starts and depths; the nearest
 0.60 long, 31 / 38 µrad, tolerant, 61 µrad between). What is left to the user is the face
 contact ratio: :func:`length_trade_text` says the trade in ``ltca synthesize``'s
