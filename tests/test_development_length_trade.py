@@ -104,3 +104,19 @@ def test_no_note_where_nothing_was_traded():
     lte = _development(WRITTEN_27X34 | {"lte_peak_to_peak": [21.0, 56.0]})
     assert length_trade_text(lte, 0.83, FACE_CONTACT_RATIO_NOTE) == ""
     assert _length_trade(None, (1.36, 1.173)) == ""
+
+
+def test_the_note_names_apply_remedy_where_a_change_passed(monkeypatch):
+    # the record's first passed change is what --apply-remedy develops (measured on the
+    # 27x34: beta_m 31.7 deg, eps_vb 1.25, every drive target met, the pattern 0.60 long)
+    import contact.optimize.development_remedy as remedy
+
+    d = _development(WRITTEN_27X34)
+    record = object()
+    monkeypatch.setattr(remedy, "chosen_check", lambda r: "passed" if r is record else None)
+    said = _length_trade(d, (1.36, 1.173), record)
+    assert said.endswith("within it; ltca synthesize --apply-remedy develops the checked "
+                         "change")
+    # none passed its check (or none checked): the flag is not named
+    assert not _length_trade(d, (1.36, 1.173), object()).endswith("change")
+    assert _length_trade(d, (1.36, 1.173), None).endswith("within it")

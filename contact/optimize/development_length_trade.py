@@ -128,7 +128,8 @@ def traded_length(metrics: Mapping[str, object], missed: Mapping[str, float],
     return length if length > pattern_length + tolerance + 1e-9 else None
 
 
-def length_trade_text(development, eps_vb: float, eps_target: float) -> str:
+def length_trade_text(development, eps_vb: float, eps_target: float, *,
+                      remedy: bool = False) -> str:
     """The sentence of ``ltca synthesize``'s contact-ratio note on a drive design that
     misses its pattern length alone, too long: the length, the length the LTE needs at the
     design's face contact ratio (:func:`overlap_length`) and at the ratio's remedy, and
@@ -144,6 +145,10 @@ def length_trade_text(development, eps_vb: float, eps_target: float) -> str:
     eps_target : float — [1]
         The face contact ratio the note's remedy reaches
         (:data:`~contact.load_capacity.iso10300.face_contact.FACE_CONTACT_RATIO_MIN`).
+    remedy : bool, optional
+        Whether a contact-ratio change passed its check (the note offers it and ``ltca
+        synthesize --apply-remedy`` develops it): the sentence then names the flag.
+        Default False.
 
     Returns
     -------
@@ -151,7 +156,10 @@ def length_trade_text(development, eps_vb: float, eps_target: float) -> str:
         E.g. "the drive pattern is 0.65 of the face width long, above the target 0.5 +/-
         0.1, its one target missed: the development gave the length up for the LTE, which
         at eps_vb 1.17 needs a light-load pattern of about 0.60 of the face (length x eps_vb
-        about 0.7, ...); the target stays: at eps_vb 1.25 the LTE needs 0.56, within it";
+        about 0.7, ...); the target stays: at eps_vb 1.25 the LTE needs 0.56, within it"
+        (and "; ltca synthesize --apply-remedy develops the checked change" with
+        ``remedy``: on the 27x34 it developed β_m 31.7°, ε_vβ 1.25, every drive target met
+        with the pattern 0.60 long);
         empty where the drive design meets its length, misses another target, or its
         ε_vβ is at or above ``eps_target``.
 
@@ -179,4 +187,6 @@ def length_trade_text(development, eps_vb: float, eps_target: float) -> str:
             f"LTE, which at eps_vb {eps_vb:.2f} needs a light-load pattern of about "
             f"{need:.2f} of the face (length x eps_vb about {FACE_OVERLAP_LENGTH:g}, "
             f"measured; {_DOCS}); the target stays: at eps_vb {eps_target:g} the LTE needs "
-            f"{at_target:.2f}, within it")
+            f"{at_target:.2f}, within it"
+            + ("; ltca synthesize --apply-remedy develops the checked change" if remedy
+               else ""))
