@@ -419,7 +419,8 @@ def _lte_notes(basic, case, development, ratios) -> tuple[list[str], object]:
                       "a wider face (b2) or a larger spiral angle (beta_m) raises eps_vb, "
                       "a deeper tooth (k_d) or a smaller pressure angle (alpha_dD) eps_va")
                      + (f"; {low_overlap_lte(development, written)}"
-                        if development is not None else ""))
+                        if development is not None else "")
+                     + _length_trade(development, ratios, record))
     if misjudged is not None:
         lines.append(misjudged)
     if far is None and development is not None:
@@ -427,6 +428,22 @@ def _lte_notes(basic, case, development, ratios) -> tuple[list[str], object]:
         if said is not None:
             lines.append(said)
     return lines, record
+
+
+def _length_trade(development, ratios, record=None) -> str:
+    """"; " and :func:`contact.optimize.development_length_trade.length_trade_text` (the
+    drive pattern's length given up for the LTE on a face contact ratio below
+    :data:`FACE_CONTACT_RATIO_NOTE`; ``--apply-remedy`` named where a change of the
+    remedies' ``record`` passed its check), or "" where there is no development or nothing
+    to say."""
+    if development is None:
+        return ""
+    from contact.optimize.development_length_trade import length_trade_text
+    from contact.optimize.development_remedy import chosen_check
+
+    said = length_trade_text(development, ratios[1], FACE_CONTACT_RATIO_NOTE,
+                             remedy=record is not None and chosen_check(record) is not None)
+    return f"; {said}" if said else ""
 
 
 def _written_ute(case, development, ratios) -> tuple[float, float] | None:
