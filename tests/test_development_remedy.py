@@ -184,13 +184,24 @@ def test_first_lines_say_the_ratio_its_lte_and_the_checked_remedy(monkeypatch):
                                "at the written prescriptions (the written case's 90)")
     assert "ltca synthesize x.toml --apply-remedy" in lines[1]
     # where the written unloaded TE is what the LTE is (the 8x35 at k_d 2.16 of round 15:
-    # 609 urad, LTE 605/600 urad at a te_level of 10), no ratio remedy is offered first
-    ute = checked_record(basic, basic.design, (609.0, 859.0), 60.0)
+    # 609 urad, LTE 605/600 urad at a te_level of 10), no ratio remedy is offered first —
+    # where no check takes that unloaded TE within the limit (b2: 590 urad)
     loud = _result(basic, (605.0, 600.0))
     loud.best.values["te_level"] = 10.0
+    _stand_in_checks(monkeypatch, {"b2": (590.0, 850.0, 0.69),
+                                   "beta_m": (1300.0, 104.0, 0.79)})
+    ute = checked_record(basic, basic.design, (609.0, 859.0), 60.0)
     lines = first_lines(basic, loud, ute, "x.toml")
     assert lines[1] == ("  the drive LTE is the written flank's unloaded TE, not the contact "
                         "ratio's (the note below): no contact-ratio remedy is the lever")
+    # a check that takes it within the limit (b2: 60 urad at the same prescriptions, as the
+    # spiral bevel 21x21 of round 21, 97 -> 51 urad) is offered, not contradicted
+    _stand_in_checks(monkeypatch, MEASURED)
+    ute = checked_record(basic, basic.design, (609.0, 859.0), 60.0)
+    lines = first_lines(basic, loud, ute, "x.toml")
+    assert lines[1].startswith("  checked remedy: gear face width b2 28 -> 36.5 mm: eps_vb "
+                               "0.91 -> 1.25, eps_va 1.19 -> 1.19, unloaded TE p-p 60 urad "
+                               "at the written prescriptions (the written case's 609)")
     assert first_lines(basic, _result(basic, (30.0, 50.0), (40.0, 55.0)), record,
                        "x.toml") == []
     applied = developed_with_remedy(

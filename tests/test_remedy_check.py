@@ -211,6 +211,62 @@ def test_the_lte_diagnosis_names_the_unloaded_te_where_it_sets_the_lte():
                          "parabola left to try); " + RATIO_TRIAL_TEXT)
 
 
+def test_a_checked_remedy_that_lowers_the_unloaded_te_is_not_contradicted():
+    """lte_diagnosis with the remedies' checks (issue 71, round 21): the spiral bevel 21×21
+    at ε_vβ 0.64 (docs/own_gear_set.md, "Round 21") wrote a drive flank of unloaded TE p-p
+    97 µrad (LTE 90/90 µrad, te_level 10), and both commands said "a higher contact ratio
+    does not lower it" while the note's own check of b2 39.3 mm — one synthesis at the same
+    prescriptions, recorded in the case — measured 51 µrad. A passing check within the limit
+    makes the contact ratios the cause, said with that check's number; one that lowers it
+    but not within keeps the unloaded-TE cause and says how far; a refused check (its
+    unloaded TE above UTE_GROWTH_MAX x the written one) or none leaves the statement as it
+    was (the 8x35's 609 µrad at k_d 2.16: every check above)."""
+    from contact.commands.synthesize import reach_text
+    from contact.optimize.remedy_check import lowest_checked, lte_diagnosis
+
+    b2 = RatioChange("b2", 39.3, {"b2": 39.3}, "a gear face width b2 of 39.3 mm, above the "
+                     "usual 0.3 R_e2 = 31.8 mm (now 22)")
+    lte, written, values = [90.1, 89.7], (97.4, 85.0), {"te_level": 10.0}
+    within = _check(b2, 50.6, span=88.1)
+    assert lowest_checked([within], 97.4, 60.0) is within
+    d = lte_diagnosis(lte, 60.0, written, values, [within])
+    assert d.cause == "contact_ratios"
+    assert d.text == ("the written drive flank's unloaded TE p-p is 97 urad (ease-off 85 um), "
+                      "above the verdict's 60 urad before any load, and the remedy b2 = 39.3 "
+                      "takes it to 51 urad at the same prescriptions (checked by a "
+                      "synthesis): a higher contact ratio lowers it; " + RATIO_TRIAL_TEXT)
+    # lowered, not within: the unloaded TE still the cause, the check's number said
+    partly = _check(b2, 75.2)
+    d = lte_diagnosis(lte, 60.0, written, values, [partly])
+    assert d.cause == "unloaded_te"
+    assert ("and a higher contact ratio lowers it only to 75 urad, above 60 (the remedy b2 = "
+            "39.3, checked by a synthesis at the same prescriptions)") in d.text
+    assert "does not lower it" not in d.text
+    # no check, a refused one (above both the limit and 2 x the written), a failed one, or
+    # one no lower as printed: the statement as before
+    refused = _check(b2, UTE_GROWTH_MAX * 97.4 + 1.0)
+    for checks in ((), [refused], [_check(b2, 40.0, failed="no solution")],
+                   [_check(b2, 97.2)]):
+        assert lowest_checked(checks, 97.4, 60.0) is None
+        d = lte_diagnosis(lte, 60.0, written, values, checks)
+        assert d.cause == "unloaded_te"
+        assert "and a higher contact ratio does not lower it" in d.text
+    # the synthesize note's statement takes the checks too (the one statement)
+    dev = types.SimpleNamespace(
+        best=types.SimpleNamespace(metrics={"lte_peak_to_peak": np.array(lte)},
+                                   values=values), lte_reach=None)
+    assert reach_text(dev, 60.0, written, [within]) == ""
+    assert reach_text(dev, 60.0, written).startswith(
+        "; the written drive flank's unloaded TE p-p is 97 urad")
+    # and its first line offers the checked remedy instead of "no contact-ratio remedy is
+    # the lever" (synthesize._ute_is_the_lte reads the record's checks)
+    from contact.commands.synthesize import _ute_is_the_lte
+    from contact.optimize.remedy_check import RemedyRecord
+
+    assert not _ute_is_the_lte(dev, RemedyRecord((within,), 97.4, 85.0, 60.0))
+    assert _ute_is_the_lte(dev, RemedyRecord((refused,), 97.4, 85.0, 60.0))
+
+
 def test_the_remedies_are_synthesised_with_the_written_cases_gear_process():
     """_prescribed: the development's basic data (its prescriptions) where there is one, the
     file's own without; a gear process left to "auto" set to the written case's, so a
@@ -414,9 +470,10 @@ def test_synthesize_and_run_say_the_same_of_what_sets_the_lte():
                                        values=values),
             lte_reach={"light": 96.0, "design": 101.0, "what": "design 35", "why": "",
                        "tried": ("the TE parabola matched to the load",)})
-        diagnosis = lte_diagnosis(lte, 60.0, (ute, 94.0), values)
+        # the note and the run read the same checks (the record the case keeps)
+        diagnosis = lte_diagnosis(lte, 60.0, (ute, 94.0), values, record.checks)
         assert diagnosis.cause == cause
-        said = reach_text(dev, 60.0, (ute, 94.0))
+        said = reach_text(dev, 60.0, (ute, 94.0), record.checks)
         (line,) = overlap_lines(case, "the LTE", lte, "drive")
         assert diagnosis.text in said and diagnosis.text in line
         blamed = "that, not the contact ratios, sets its LTE"

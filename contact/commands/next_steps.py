@@ -214,7 +214,8 @@ def overlap_lines(case, what: str = "the LTE spread", lte: Sequence[float] | Non
         development = case.extra.get("development")
         prescriptions = (development.get("prescriptions")
                          if hasattr(development, "get") else None)
-        diagnosis = lte_diagnosis(lte, LTE_LIMIT, _written_ute(case, record), prescriptions)
+        diagnosis = lte_diagnosis(lte, LTE_LIMIT, _written_ute(case, record), prescriptions,
+                                  () if record is None else record.checks)
         if diagnosis.cause == "unloaded_te":
             return [f"  next, {what} is not the design's contact ratios: {diagnosis.text}; a "
                     "trial: ltca synthesize BASIC.toml with other [synthesis] prescriptions, "

@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import math
 import sys
+from collections.abc import Sequence
 from pathlib import Path
 
 from contact.commands.options import (
@@ -192,7 +193,8 @@ def _contact_ratios(case) -> tuple[float, float] | None:
     return float(ds["eps_va"]), float(ds["eps_vb"])
 
 
-def low_overlap_lte(development, written_ute: tuple[float, float] | None = None) -> str:
+def low_overlap_lte(development, written_ute: tuple[float, float] | None = None,
+                    checks: Sequence = ()) -> str:
     """What the development's bearing did for the LTE of a design whose face contact ratio
     is below :data:`FACE_CONTACT_RATIO_NOTE`, in numbers (``ltca synthesize``'s note): the
     LTE p-p of the written drive flank and, where checked, coast flank at their light and
@@ -205,6 +207,8 @@ def low_overlap_lte(development, written_ute: tuple[float, float] | None = None)
     written_ute : (float, float), optional
         The written drive flank's unloaded TE p-p [µrad] and ease-off span [µm]
         (:func:`contact.optimize.remedy_check.unloaded_te_pp`), for :func:`reach_text`.
+    checks : sequence of contact.optimize.remedy_check.ChangeCheck, optional
+        The contact-ratio remedies' checks, for :func:`reach_text`.
 
     Returns
     -------
@@ -232,11 +236,12 @@ def low_overlap_lte(development, written_ute: tuple[float, float] | None = None)
     return (f"the developed bearing's LTE p-p: {', '.join(parts)} (light/design), the "
             f"development's target {target:g} urad " + said
             + (f", above the verdict's {LTE_LIMIT:g} urad" if worst > LTE_LIMIT else "")
-            + reach_text(development, LTE_LIMIT, written_ute))
+            + reach_text(development, LTE_LIMIT, written_ute, checks))
 
 
 def reach_text(development, limit: float,
-               written_ute: tuple[float, float] | None = None) -> str:
+               written_ute: tuple[float, float] | None = None,
+               checks: Sequence = ()) -> str:
     """What the development's drive designs reached where the written drive flank's LTE
     p-p exceeds ``limit`` [µrad] (the verdict's): the least LTE p-p its check's last LTE
     step saw (``development.lte_reach``,
@@ -264,6 +269,10 @@ def reach_text(development, limit: float,
         LTE exceeds ``limit`` too (the prescriptions it names as the lever were then not
         found by the check: the FH 16x16 at Sigma 60 deg, least 509/197 urad). Also said
         where the step did not run.
+    checks : sequence of contact.optimize.remedy_check.ChangeCheck, optional
+        The contact-ratio remedies' checks: one that takes the unloaded TE within
+        ``limit`` makes the contact ratios the cause
+        (:func:`contact.optimize.remedy_check.lte_diagnosis`).
 
     Returns
     -------
@@ -298,7 +307,7 @@ def reach_text(development, limit: float,
                 f"{reach['design']:.0f} urad ({reach['what']}{why})")
     # what sets the LTE: the one statement `ltca run`'s next step makes too
     diagnosis = lte_diagnosis(lte, limit, written_ute,
-                              getattr(development.best, "values", None) or {})
+                              getattr(development.best, "values", None) or {}, checks)
     least = max(reach["light"], reach["design"]) if reach else math.nan
     if diagnosis.cause == "unloaded_te":
         # the lever it names is untried where no checked design came within the limit
@@ -409,6 +418,7 @@ def _lte_notes(basic, case, development, ratios) -> tuple[list[str], object]:
         # the sentence said from those checks
         record = checked_record(_prescribed(basic, case, development), basic.design,
                                 written, LTE_LIMIT)
+        checks = () if record is None else record.checks
         said = low_ratio_text(basic.design, FACE_CONTACT_RATIO_NOTE,
                               PROFILE_CONTACT_RATIO_NOTE,
                               judge=None if record is None else recorded_judge(record))
@@ -418,7 +428,7 @@ def _lte_notes(basic, case, development, ratios) -> tuple[list[str], object]:
                       ", the least bevel-gear design practice asks for (AGMA 2005-D03); "
                       "a wider face (b2) or a larger spiral angle (beta_m) raises eps_vb, "
                       "a deeper tooth (k_d) or a smaller pressure angle (alpha_dD) eps_va")
-                     + (f"; {low_overlap_lte(development, written)}"
+                     + (f"; {low_overlap_lte(development, written, checks)}"
                         if development is not None else "")
                      + _length_trade(development, ratios, record))
     if misjudged is not None:
@@ -848,7 +858,8 @@ def _ute_is_the_lte(development, record) -> bool:
     written = ((record.reference_ute, record.reference_span)
                if math.isfinite(record.reference_ute) else None)
     diagnosis = lte_diagnosis(development.best.metrics["lte_peak_to_peak"], LTE_LIMIT,
-                              written, getattr(development.best, "values", None) or {})
+                              written, getattr(development.best, "values", None) or {},
+                              record.checks)
     return diagnosis.cause == "unloaded_te"
 
 

@@ -65,7 +65,7 @@ log = logging.getLogger("contact.optimize.development")
 __all__ = ["DEEPER_FACTOR", "DEEPER_RANGE", "EARLIER_STEP", "EDGE_GAIN_MIN", "EDGE_PEAK",
            "EDGE_WORDS", "ELLIPSE_FRACTIONS", "LEVERS", "checked_edge_peak", "deeper",
            "earlier", "edge_excess", "edge_gain", "edge_peak_runs_on", "edges_above",
-           "edges_to_relieve", "lever_designs", "lower_excess", "pitting_lost"]
+           "edges_to_relieve", "lever_designs", "lower_excess", "lte_lost", "pitting_lost"]
 
 #: the prescriptions that take the load off each edge kind (:data:`contact.ltca.edges.
 #: EDGE_KINDS`), tried in turn: the pinion's edge (its tip line on the gear flank) by the
@@ -515,6 +515,78 @@ def pitting_lost(limit: float) -> Callable[[DevelopmentEvaluation, DevelopmentEv
     return lost
 
 
+def lte_lost(setup: Mapping[str, Any], teeth: KeptTeeth | None, limit: float,
+             floor: float = 0.0
+             ) -> Callable[[DevelopmentEvaluation, DevelopmentEvaluation], list[str]]:
+    """:data:`EDGE_PEAK`'s LTE rule on the drive flank: a relief that takes the load off an
+    edge is not bought with an LTE above the verdict's limit.
+
+    Parameters
+    ----------
+    setup : mapping
+        The development's state (``torques`` [N·m], light and design; the range analyses
+        kept in it: :func:`~contact.optimize.development_range_lte.range_lte`).
+    teeth : KeptTeeth or None
+        The kept shell teeth.
+    limit : float — [µrad]
+        The verdict's LTE p-p limit (:data:`~contact.study.verdicts.LTE_LIMIT`).
+    floor : float, optional — [µrad]
+        The LTE p-p at the two torques up to which a raised LTE is not judged over the
+        range (the development's own target ``max_lte``, to spare the range's LTCAs where
+        the bearing keeps its target at both torques; the hypoid 13x41 of round 20 whose
+        range passed 60 µrad read 22/56 µrad there, above it; default 0, always judged).
+
+    Returns
+    -------
+    callable (kept, e) → list of str
+        ``["LTE p-p <x> urad at <T> N m (the design kept <y>)"]`` where the variant ``e``'s
+        LTE p-p rises above ``limit`` and above the kept design's by more than
+        :data:`~contact.optimize.development_range_lte.SAME_PEAK`; else ``[]``. Judged
+        first on the two torques' LTE the check measured (no analysis); where the variant
+        raises it there above ``floor`` but keeps ``limit``, over ``ltca run``'s
+        ``lte_range`` torques (:func:`~contact.optimize.development_range_lte.range_lte`,
+        a few LTCAs), as the verdict judges it. A variant that does not raise the LTE at
+        the two torques above ``floor`` costs nothing.
+
+    Raises
+    ------
+    Nothing: a range not analysed (logged by ``range_lte``) is not judged.
+
+    Notes
+    -----
+    Why (issue 71, round 21, docs/own_gear_set.md "Round 21"): the drive step kept a
+    variant where no met target was lost, and an LTE target already missed is none. The
+    spiral bevel 17×38 Method 0 (ε_vβ 1.20) went from 21/62 µrad at 52.1/347.6 N·m through
+    the root relief 50 µm (gear tip 3601 → 3252 MPa; 21/71 µrad) and the tip relief 15 µm
+    (pinion edge cleared; 23/94 µrad): ``ltca run`` then judged LTE 64–94 µrad from 175 N·m
+    up. The coast flank's step has the same rule over its range
+    (:func:`~contact.optimize.development_coast_edge_peak.checked_coast_edge_peak`).
+    """
+    from contact.optimize.development_range_lte import SAME_PEAK, range_lte, range_peak
+
+    def ends(e: DevelopmentEvaluation) -> tuple[float, float]:
+        lte = np.asarray(e.metrics["lte_peak_to_peak"], float)
+        i = int(np.nanargmax(lte)) if np.any(np.isfinite(lte)) else 0
+        return float(lte[i]), float(setup["torques"][i])
+
+    def lost(kept: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:
+        (new, at), (was, _) = ends(e), ends(kept)
+        if not new > was + SAME_PEAK:  # not raised where the check measured it
+            return []
+        if not new > limit:  # raised within the limit there: judged over the range
+            if not new > floor:
+                return []
+            new, at = range_peak(range_lte(e, setup, teeth))
+            if not new > limit:
+                return []
+            was = max(was, range_peak(range_lte(kept, setup, teeth))[0])
+            if not new > was + SAME_PEAK:
+                return []
+        return [f"LTE p-p {new:.1f} urad at {at:.4g} N m (the design kept {was:.1f})"]
+
+    return lost
+
+
 def _pitting_limit(best: DevelopmentEvaluation, setup: Mapping[str, Any]) -> float:
     """[MPa] :func:`pitting_pressure_limit` of the design's case at the design torque;
     inf where it cannot be had (no case, no rating: logged)."""
@@ -565,6 +637,17 @@ def checked_edge_peak(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     """
     if not edge_peak_runs_on(best, targets):
         return best
-    relief = dataclasses.replace(EDGE_PEAK, lost=pitting_lost(_pitting_limit(best, setup)))
+    from contact.study.verdicts import LTE_LIMIT
+
+    pitting = pitting_lost(_pitting_limit(best, setup))
+    lte = lte_lost(setup, teeth, LTE_LIMIT, float(targets.max_lte))
+
+    def lost(kept: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:
+        # no met target lost, the local pitting bound kept, and then the LTE not raised
+        # above the verdict's limit for the edge (lte_lost: the 17x38 of round 21, 62 ->
+        # 94 urad; its range analysed only where nothing else refuses the variant)
+        return pitting(kept, e) or lte(kept, e)
+
+    relief = dataclasses.replace(EDGE_PEAK, lost=lost)
     return checked_relief_variants(best, targets, setup, teeth, say, placed,
                                    reliefs=(relief,), eps=(math.nan, math.nan))

@@ -44,7 +44,7 @@ Public names
 UTE_GROWTH_MAX, UTE_KEPT_SHARE, ChangeCheck, check_change, unloaded_te_pp, refusal,
 ranked_changes, checked_remedy_text, ute_sets_lte, ute_lte_text, RECORD_TABLE,
 RemedyRecord, remedy_record, read_record, recorded_judge, LteDiagnosis, RATIO_TRIAL_TEXT,
-lte_diagnosis
+lte_diagnosis, lowest_checked, ute_lowered_text
 """
 
 from __future__ import annotations
@@ -60,9 +60,9 @@ from contact.optimize.development_conjugacy import VALID_NODE_FRACTION_MIN
 
 __all__ = ["RATIO_TRIAL_TEXT", "RECORD_TABLE", "UTE_GROWTH_MAX", "UTE_KEPT_SHARE",
            "ChangeCheck", "LteDiagnosis", "RemedyRecord", "check_change",
-           "checked_remedy_text", "lte_diagnosis", "ranked_changes", "read_record",
-           "recorded_judge", "refusal", "remedy_record", "unloaded_te_pp", "ute_lte_text",
-           "ute_sets_lte"]
+           "checked_remedy_text", "lowest_checked", "lte_diagnosis", "ranked_changes",
+           "read_record", "recorded_judge", "refusal", "remedy_record", "unloaded_te_pp",
+           "ute_lowered_text", "ute_lte_text", "ute_sets_lte"]
 
 log = logging.getLogger(__name__)
 
@@ -333,8 +333,77 @@ def ute_sets_lte(ute: float, lte: Sequence[float], limit: float,
             and light >= UTE_KEPT_SHARE * ute and not on_purpose)
 
 
+def lowest_checked(checks: Sequence[ChangeCheck], reference_ute: float,
+                   limit: float) -> ChangeCheck | None:
+    """The checked remedy that lowers the written drive flank's unloaded TE the most.
+
+    Parameters
+    ----------
+    checks : sequence of ChangeCheck
+        :func:`check_change` of each contact-ratio remedy (one synthesis each at the
+        written case's prescriptions).
+    reference_ute : float — [µrad]
+        The written drive flank's unloaded TE p-p.
+    limit : float — [µrad]
+        The verdict's LTE limit (:func:`refusal`).
+
+    Returns
+    -------
+    ChangeCheck or None
+        Of the changes that pass :func:`refusal`, the one of the lowest unloaded TE p-p,
+        where that is lower than ``reference_ute`` as the printed whole µrad read; None
+        where none is (or ``reference_ute`` is not finite).
+
+    Notes
+    -----
+    Why (issue 71, round 21, docs/own_gear_set.md "Round 21"): the spiral bevel 21×21 at
+    ε_vβ 0.64 wrote a drive flank of unloaded TE p-p 97 µrad (LTE 90/90 µrad), which
+    :func:`ute_sets_lte` took for its LTE, and both commands said "a higher contact ratio
+    does not lower it" — while the note's own check of b2 39.3 mm (ε_vβ 1.25), one
+    synthesis at the same prescriptions, measured 51 µrad.
+    """
+    if not math.isfinite(reference_ute):
+        return None
+    passed, _ = ranked_changes(checks, reference_ute, limit)
+    kept = [c for c in passed if math.isfinite(c.ute)]
+    if not kept:
+        return None
+    low = min(kept, key=lambda c: c.ute)
+    return low if round(low.ute) < round(reference_ute) else None
+
+
+def ute_lowered_text(ute: float, span: float, low: ChangeCheck, limit: float) -> str:
+    """The LTE diagnosis where the written drive flank's unloaded TE exceeds ``limit`` but a
+    checked contact-ratio remedy takes it within (:func:`lte_diagnosis`).
+
+    Parameters
+    ----------
+    ute : float — [µrad]
+        The written drive flank's unloaded TE p-p.
+    span : float — [µm]
+        Its ease-off's extent (NaN: not said).
+    low : ChangeCheck
+        The remedy's check (:func:`lowest_checked`), its unloaded TE p-p within ``limit``.
+    limit : float — [µrad]
+
+    Returns
+    -------
+    str
+        E.g. "the written drive flank's unloaded TE p-p is 97 urad (ease-off 85 um), above
+        the verdict's 60 urad before any load, and the remedy b2 = 39.3 takes it to 51 urad
+        at the same prescriptions (checked by a synthesis): a higher contact ratio lowers
+        it; a higher contact ratio is the lever left, …" (the 21×21 of round 21), ending in
+        :data:`RATIO_TRIAL_TEXT`.
+    """
+    span_said = f" (ease-off {span:.0f} um)" if math.isfinite(span) else ""
+    return (f"the written drive flank's unloaded TE p-p is {ute:.0f} urad{span_said}, above "
+            f"the verdict's {limit:g} urad before any load, and {_change_said(low)} takes it "
+            f"to {low.ute:.0f} urad at the same prescriptions (checked by a synthesis): a "
+            f"higher contact ratio lowers it; {RATIO_TRIAL_TEXT}")
+
+
 def ute_lte_text(ute: float, span: float, lte: Sequence[float], limit: float,
-                 prescriptions: str = "") -> str:
+                 prescriptions: str = "", low: ChangeCheck | None = None) -> str:
     """The LTE diagnosis where :func:`ute_sets_lte`: the written case's unloaded TE sets it.
 
     Parameters
@@ -348,6 +417,10 @@ def ute_lte_text(ute: float, span: float, lte: Sequence[float], limit: float,
     prescriptions : str
         The written drive prescriptions that set that TE, as said (e.g. "path_angle
         -58.8, ellipse_length 0.25, te_level 10"); empty: not named.
+    low : ChangeCheck, optional
+        A checked contact-ratio remedy that lowers the unloaded TE, not within ``limit``
+        (:func:`lowest_checked`): said with its number instead of "a higher contact ratio
+        does not lower it"; None (default): no check lowered it.
 
     Returns
     -------
@@ -368,11 +441,26 @@ def ute_lte_text(ute: float, span: float, lte: Sequence[float], limit: float,
     return (f"the written drive flank's unloaded TE p-p is {ute:.0f} urad{span_said}, above "
             f"the verdict's {limit:g} urad before any load: that, not the contact ratios, "
             f"sets its LTE p-p {float(lte[0]):.0f}/{float(lte[-1]):.0f} urad (light/design), "
-            "and a higher contact ratio does not lower it; the unloaded TE follows the drive "
+            f"{_ratio_effect(low, limit)}; the unloaded TE follows the drive "
             f"prescriptions the development wrote{named}: other [synthesis] prescriptions "
             "(a path angle or an ellipse length of a design whose LTE the development's "
             "lines show lower) are the lever (docs/synthesis.md, 'Contact-ratio remedies "
             "checked before they are offered')")
+
+
+def _ratio_effect(low: ChangeCheck | None, limit: float) -> str:
+    """What a higher contact ratio does to the unloaded TE, as the checks measured it."""
+    if low is None:
+        return "and a higher contact ratio does not lower it"
+    return (f"and a higher contact ratio lowers it only to {low.ute:.0f} urad, above "
+            f"{limit:g} ({_change_said(low)}, checked by a synthesis at the same "
+            "prescriptions)")
+
+
+def _change_said(check: ChangeCheck) -> str:
+    """A checked change by its basic-file field and value ("the remedy b2 = 39.3"): the
+    remedy sentence before it names it in full."""
+    return f"the remedy {check.change.field} = {check.change.value:g}"
 
 
 #: the written case's informational table in which ``ltca synthesize`` records the checks
@@ -519,7 +607,8 @@ RATIO_TRIAL_TEXT = ("a higher contact ratio is the lever left, and the change th
 
 def lte_diagnosis(lte: Sequence[float], limit: float,
                   written: tuple[float, float] | None,
-                  prescriptions: Any = None) -> LteDiagnosis:
+                  prescriptions: Any = None,
+                  checks: Sequence[ChangeCheck] = ()) -> LteDiagnosis:
     """What sets the written drive flank's LTE, said the same way by ``ltca synthesize``'s
     note (:func:`contact.commands.synthesize.reach_text`) and ``ltca run``'s next step
     (:func:`contact.commands.next_steps.overlap_lines`): its unloaded TE
@@ -540,12 +629,20 @@ def lte_diagnosis(lte: Sequence[float], limit: float,
         ``[development] prescriptions``): ``te_level`` [µrad], the level prescribed on
         purpose (:func:`ute_sets_lte`), and the path angle, ellipse length and TE level
         named in the statement.
+    checks : sequence of ChangeCheck, optional
+        The contact-ratio remedies' checks (the case's :data:`RECORD_TABLE`): where one
+        that passes :func:`refusal` takes the written unloaded TE within ``limit`` at the
+        same prescriptions (:func:`lowest_checked`), the unloaded TE is not what keeps the
+        LTE above it whatever the contact ratio: the cause is the contact ratios, said
+        with that check's number (:func:`ute_lowered_text`; the 21×21 of round 21: 97 →
+        51 µrad at b2 39.3 mm). Default none.
 
     Returns
     -------
     LteDiagnosis
         ``cause`` "unloaded_te" with :func:`ute_lte_text`'s statement, or
-        "contact_ratios" with :data:`RATIO_TRIAL_TEXT`.
+        "contact_ratios" with :data:`RATIO_TRIAL_TEXT` (after :func:`ute_lowered_text`'s
+        numbers where a check lowered the unloaded TE within ``limit``).
     """
     values = prescriptions if hasattr(prescriptions, "get") else {}
     try:
@@ -553,8 +650,12 @@ def lte_diagnosis(lte: Sequence[float], limit: float,
     except (TypeError, ValueError):
         prescribed = math.nan
     if written is not None and ute_sets_lte(written[0], lte, limit, prescribed):
+        low = lowest_checked(checks, written[0], limit)
+        if low is not None and low.ute <= limit:
+            return LteDiagnosis("contact_ratios",
+                                ute_lowered_text(written[0], written[1], low, limit))
         named = ", ".join(f"{k} {float(values[k]):.3g}" for k in
                           ("path_angle", "ellipse_length", "te_level") if k in values)
         return LteDiagnosis("unloaded_te", ute_lte_text(written[0], written[1], lte, limit,
-                                                        named))
+                                                        named, low))
     return LteDiagnosis("contact_ratios", RATIO_TRIAL_TEXT)
