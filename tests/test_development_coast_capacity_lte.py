@@ -403,8 +403,8 @@ def test_a_design_above_the_limit_between_its_torques_is_not_kept(monkeypatch):
                                           lambda v: dict(v), static=_STATIC) is start
 
 
-#: the face-hobbed spiral bevel 13x31 z0 7 (round 21, every default; /tmp basic file of
-#: docs/own_gear_set.md's round-21 table): its coast flank at 44.1 / 294 N m before the
+#: the face-hobbed spiral bevel 13x31 z0 7 (benchmarks/data/unseen_designs, round 21, every
+#: default; docs/own_gear_set.md "Round 21"): its coast flank at 44.1 / 294 N m before the
 #: step (path -45°, ellipse 0.55, tip / root relief 15 / 40 µm), the longest ellipse and
 #: its lighter reliefs (toe, heel; LTE light / design [µrad]; flank peak [MPa]; edge share
 #: at 294 N m; edge peak there [MPa]), as the development's check measured them and
