@@ -601,19 +601,20 @@ def coast_at_its_torque(pre_coast: BasicDesign, drive: DevelopmentEvaluation,
                         make: Callable[[BasicDesign], Case], coast: _CoastOutcome,
                         cap: CoastCapacity | None, developed_at: float
                         ) -> _CoastOutcome | None:
-    """The coast flank developed again where its design torque is well below the torque it was
-    developed at (below :data:`COAST_REDEVELOP` × ``developed_at``, :func:`redeveloped_at`: its own
-    static, plastic, root-stress or local pitting capacity, :func:`coast_flank_capacity`, or the
-    drive's capacity cut), now at the torques ``ltca run --flank coast`` analyses (the new coast
-    design torque and its light torque, the same share of it as the drive's of the design torque:
-    :func:`contact.pipeline.coast_flank_torques`): :func:`coast_development` from the coast flank as
-    synthesised (``pre_coast`` with the drive flank of ``drive``, and the basic file's coast
-    prescriptions), with the budget ``coast_max_evaluations``, its flank peak pressure bounded by
-    what the new coast design torque allows (:func:`pitting_pressure`). Returns its outcome where
-    its chosen design ranks before the design chosen first at those torques
-    (:func:`~contact.optimize.development_keep.ranks_better`: a checked LTE ``ltca run``'s verdict
-    FAILs last, then every target met, then the objective; ``coast``'s metrics
-    :func:`coast_flank_capacity` measured there), else None.
+    """The coast flank developed again where its design torque is well below the torque it
+    was developed at (below :data:`COAST_REDEVELOP` × ``developed_at``,
+    :func:`redeveloped_at`: its own static, plastic, root-stress or local pitting capacity,
+    :func:`coast_flank_capacity`, or the drive's capacity cut), now at the torques ``ltca
+    run --flank coast`` analyses (the new coast design torque and its light torque, the same
+    share of it as the drive's of the design torque:
+    :func:`contact.pipeline.coast_flank_torques`): :func:`coast_development` from the coast
+    flank as synthesised (``pre_coast`` with the drive flank of ``drive``, and the basic
+    file's coast prescriptions), with the budget ``coast_max_evaluations``, its flank peak
+    pressure bounded by what the new coast design torque allows (:func:`pitting_pressure`).
+    Returns its outcome where its chosen design ranks before the design chosen first at
+    those torques (:func:`~contact.optimize.development_keep.ranks_better`: a checked LTE
+    ``ltca run``'s verdict FAILs last, then every target met, then the objective;
+    ``coast``'s metrics :func:`coast_flank_capacity` measured there), else None.
 
     Why: the relief that keeps a coast bearing elastic at a torque its flank cannot carry
     costs LTE at the torque it can (issue 71, the e-axle 11×39 at Σ 80°: developed at
