@@ -396,46 +396,62 @@ def case_torques(light_load: float, torque: float) -> list[float]:
     return [floor_torque(float(light_load) * float(torque)), floor_torque(torque)]
 
 
-def coast_flank_torques(torques, coast: float, light_load: float = LIGHT_LOAD
-                        ) -> tuple[float, ...]:
-    """The coast flank's torques [N·m] from the drive side's ``torques`` and the coast
-    side's own design torque ``coast``: each torque above ``coast`` replaced by it (repeats
-    dropped, the order kept); where no torque is left below ``coast`` (the coast design
-    torque at or below the drive's light torque) the coast side's own light torque,
-    ``light_load`` × ``coast`` rounded down as the drive's is (:func:`case_torques`), is
-    put before it — so that the coast flank is judged at a light torque too, never at its
-    design torque alone (issue 71: no edge contact at 15 % of the design torque; the FH
-    spiral bevel 16x16 at Σ 60°, coast design torque 52.4 N·m under a drive light torque
-    of 65.2 N·m, had been analysed at 52.4 N·m only; docs/own_gear_set.md, "Round 20b").
+def coast_flank_torques(torques, coast: float, design: float) -> tuple[float, ...]:
+    """The coast flank's torques [N·m]: the drive side's ``torques`` taken at the same
+    shares of the coast side's own design torque ``coast`` as of the design torque
+    ``design`` — each torque ``t`` below ``design`` to ``t`` × ``coast`` / ``design``
+    rounded down (:func:`floor_torque`, as the case's torques are), each at or above it to
+    ``coast`` (repeats dropped, the order kept) — where ``coast`` is below ``design`` and a
+    torque is above ``coast``; else ``torques`` as given.
+
+    A synthesised case runs at the development's light torque ``light_load`` × ``design``
+    and at ``design`` (:func:`case_torques`): its coast flank so runs at ``light_load`` ×
+    ``coast`` (rounded down once more) and at ``coast``, its pattern judged at the same
+    light share of its own design torque as the drive's — the user's ``[development]
+    light_load`` as the default :data:`LIGHT_LOAD` — wherever the coast design torque is
+    below the drive's (issue 71: no edge contact at 15 % of the design torque, on each
+    flank at its own). Before, the drive's light torque was kept wherever it was below
+    ``coast`` (a 150 N·m coast design torque judged at 45 N·m, 30 % of it, under a
+    300 N·m drive) and the coast's own light torque, always 15 %, only added where none
+    was (coastlight80). Torques the coast side carries (none above ``coast``) stand as
+    given: they are the user's, not shares of a design torque.
 
     Parameters
     ----------
-    torques : sequence of float — [N·m], the drive side's torques (light first), > 0
+    torques : sequence of float — [N·m], the drive side's torques (light first), each > 0
     coast : float — [N·m], the coast side's design torque, finite and > 0
-    light_load : float — [1], the light torque's share of the design torque, > 0;
-        default :data:`LIGHT_LOAD`
+    design : float — [N·m], the (drive side's) design torque, finite and > 0
 
     Returns
     -------
     tuple of float — [N·m]
-        As given where none is above ``coast``.
+        Each in (0, ``coast``] where scaled; ``torques`` (as floats) otherwise.
 
     Raises
     ------
     ValueError
-        ``coast`` or its light torque not finite or not > 0 (:func:`floor_torque`).
+        ``coast`` or ``design`` not finite or not > 0; a torque not finite or not > 0.
 
     Notes
     -----
-    Source: this project's light-torque rule (:data:`LIGHT_LOAD`, :func:`case_torques`),
-    the coast side's design torque of ``ltca synthesize`` (docs/rating.md).
+    Source: this project's light-torque rule (:data:`LIGHT_LOAD`, :func:`case_torques`:
+    the pattern developed and judged at 10–20 % of the design torque, each flank at its
+    own), the coast side's design torque of ``ltca synthesize`` (docs/rating.md); the
+    share ``t`` / ``design`` taken to 12 significant digits before the rounding down, so
+    that a float's round-off (22.499999999999996 for 22.5) does not lose 0.1 N·m.
     """
-    c = float(coast)
-    limited = tuple(dict.fromkeys(min(float(t), c) for t in torques))
-    if limited and min(limited) >= c:
-        light = case_torques(light_load, c)[0]
-        limited = tuple(dict.fromkeys((light, c)))
-    return limited
+    c, d = float(coast), float(design)
+    for name, value in (("coast", c), ("design", d)):
+        if not (math.isfinite(value) and value > 0):
+            raise ValueError(f"{name}: must be finite and > 0 [N m], got {value!r}")
+    given = tuple(float(t) for t in torques)
+    for t in given:
+        if not (math.isfinite(t) and t > 0):
+            raise ValueError(f"torques: each must be finite and > 0 [N m], got {t!r}")
+    if c >= d or not given or max(given) <= c:
+        return given
+    return tuple(dict.fromkeys(c if t >= d else floor_torque(float(f"{t * c / d:.12g}"))
+                               for t in given))
 
 
 def flank_torques(case: Case, flank: str | None = None) -> tuple[tuple[float, ...], str]:
@@ -446,13 +462,13 @@ def flank_torques(case: Case, flank: str | None = None) -> tuple[tuple[float, ..
     has its own design torque where the case's ``[rating]`` gives a ``coast_design_torque``
     below its ``design_torque`` (its ISO 10300 long-life capacity, or the coast flank's
     static, plastic or root-stress capacity at its developed bearing, which ``ltca
-    synthesize`` writes; docs/rating.md): on the coast flank a torque above it is then
-    replaced by it (repeats dropped), so that the coast flank is analysed at the same light
-    torque as the drive flank — the one its development judged — and at its own design
-    torque, never above it (issue 71: each flank checked at its own design torque); where
-    the coast design torque is at or below the drive's light torque, at the coast side's own
-    light torque (:data:`LIGHT_LOAD` × it) and its design torque
-    (:func:`coast_flank_torques`).
+    synthesize`` writes; docs/rating.md): where a torque of the case is above it, the coast
+    flank is analysed at the case's torques taken at the same shares of the coast design
+    torque as of the design torque (those at or above the design torque at the coast
+    design torque; :func:`coast_flank_torques`) — a synthesised case's coast flank at its
+    own light torque (the development's ``light_load`` × it, rounded down) and its own
+    design torque, never above it, as its development judged it (issue 71: each flank
+    checked at its own design torque, no edge contact at 15 % of it).
 
     Parameters
     ----------
@@ -465,8 +481,8 @@ def flank_torques(case: Case, flank: str | None = None) -> tuple[tuple[float, ..
     -------
     torques : tuple of float — [N·m]
     why : str
-        Empty where the torques are the case's own; else one sentence saying which were
-        limited and to what.
+        Empty where the torques are the case's own; else one sentence saying to which
+        torques they were taken and why.
     """
     torques = tuple(float(t) for t in case.operating.torque)
     if flank is None or flank == "drive" or flank == case.pair.drive_flank:
@@ -476,15 +492,18 @@ def flank_torques(case: Case, flank: str | None = None) -> tuple[tuple[float, ..
     if (coast is None or design is None or not 0.0 < float(coast) < float(design)
             or max(torques) <= float(coast)):
         return torques, ""
-    limited = coast_flank_torques(torques, float(coast))
-    above = [plain_number(t) for t in torques if t > float(coast)]
-    light = [plain_number(t) for t in limited if t not in torques and t < float(coast)]
-    return limited, (f"the case's [operating] torque{'s' if len(above) > 1 else ''} "
-                     f"{', '.join(above)} N m limited to its [rating] coast_design_torque "
-                     f"{plain_number(coast)} N m (the coast side's own design torque, below the "
-                     f"design torque {plain_number(design)} N m)"
-                     + (f", its light torque {light[0]} N m ({LIGHT_LOAD:g} x it, none of the "
-                        "case's torques being below it)" if light else ""))
+    limited = coast_flank_torques(torques, float(coast), float(design))
+    if limited == torques:
+        return torques, ""
+    plural = "s" if len(torques) > 1 else ""
+    return limited, (f"the case's [operating] torque{plural} "
+                     f"{', '.join(map(plain_number, torques))} N m taken at the same "
+                     f"shares of its [rating] coast_design_torque "
+                     f"{plain_number(coast)} N m (the coast side's own design torque) as of "
+                     f"the design torque {plain_number(design)} N m, rounded down: "
+                     f"{', '.join(map(plain_number, limited))} N m (none above the coast "
+                     "design torque; a light torque at the same share of each flank's "
+                     "design torque)")
 
 
 def _datatree(groups: dict[str, xr.Dataset]) -> xr.DataTree:

@@ -150,9 +150,11 @@ def test_a_root_failure_at_the_models_smallest_rounding_says_it_is_a_lower_bound
 def test_ltca_run_analyses_the_coast_flank_at_its_own_design_torque():
     """A case whose [rating] coast_design_torque (150 N·m) is below its design torque
     (300 N·m): the coast flank (by role or by its pinion flank's name) runs at the
-    [operating] torques with those above 150 N·m limited to it (repeats dropped), the drive
-    flank at them; without a coast design torque below the design torque both run at the
-    case's own."""
+    [operating] torques taken at the same shares of 150 N·m as of 300 N·m (45 → 22.5 N·m,
+    15 % of each; those at or above 300 N·m at 150 N·m), the drive flank at them; without
+    a coast design torque below the design torque both run at the case's own (issue 71:
+    before, the coast flank kept the drive's light torque 45 N·m, 30 % of its own design
+    torque)."""
     from contact.catalogue import bundled_case_path
     from contact.pipeline import flank_torques
     from geometry.case import load_case
@@ -163,13 +165,21 @@ def test_ltca_run_analyses_the_coast_flank_at_its_own_design_torque():
         extra=MappingProxyType(dict(case.extra) | {
             "rating": {"design_torque": 300.0, "coast_design_torque": 150.0}}))
     coast_flank = "convex" if case.pair.drive_flank == "concave" else "concave"
-    assert flank_torques(case, "coast")[0] == (45.0, 150.0)
-    assert flank_torques(case, coast_flank)[0] == (45.0, 150.0)
-    assert "300 N m limited to its [rating] coast_design_torque 150 N m" in flank_torques(
-        case, "coast")[1]
+    assert flank_torques(case, "coast")[0] == (22.5, 150.0)
+    assert flank_torques(case, coast_flank)[0] == (22.5, 150.0)
+    assert flank_torques(case, "coast")[1] == (
+        "the case's [operating] torques 45, 300 N m taken at the same shares of its "
+        "[rating] coast_design_torque 150 N m (the coast side's own design torque) as of "
+        "the design torque 300 N m, rounded down: 22.5, 150 N m (none above the coast "
+        "design torque; a light torque at the same share of each flank's design torque)")
+    # a case's torques below its design torque: each at its share (200/300 → 100/150)
     three = dataclasses.replace(case, operating=dataclasses.replace(
         case.operating, torque=(50.0, 200.0, 250.0)))
-    assert flank_torques(three, "coast")[0] == (50.0, 150.0)
+    assert flank_torques(three, "coast")[0] == (25.0, 100.0, 125.0)
+    # the torques the coast side carries as given: the user's, not shares
+    carried = dataclasses.replace(case, operating=dataclasses.replace(
+        case.operating, torque=(50.0, 150.0)))
+    assert flank_torques(carried, "coast") == ((50.0, 150.0), "")
     assert flank_torques(case, "drive") == ((45.0, 300.0), "")
     assert flank_torques(case, case.pair.drive_flank) == ((45.0, 300.0), "")
     same = dataclasses.replace(case, extra=MappingProxyType(
@@ -180,7 +190,8 @@ def test_ltca_run_analyses_the_coast_flank_at_its_own_design_torque():
 def test_ltca_run_says_it_limits_the_coast_torques(tmp_path, capsys):
     """``ltca run CASE --flank coast`` of a case with a coast design torque (the 5x43 hypoid
     of tests/data: [operating] 50/250/500 N·m, design 83.86, coast 80.45 N·m) analyses
-    50 and 80.45 N·m and prints why."""
+    47.9 N·m (50 × 80.45 / 83.86 = 47.97, rounded down) and 80.45 N·m and prints why
+    (before issue 71's shares, 50 and 80.45 N·m)."""
     from pathlib import Path
 
     import xarray as xr
@@ -192,10 +203,12 @@ def test_ltca_run_says_it_limits_the_coast_torques(tmp_path, capsys):
     assert main(["run", str(case), "--flank", "coast", "--no-root-stress", "--no-progress",
                  "-o", str(out)]) == 0
     text = capsys.readouterr().out
-    assert ("coast flank: the case's [operating] torques 250, 500 N m limited to its "
-            "[rating] coast_design_torque 80.45 N m") in text
+    assert ("coast flank: the case's [operating] torques 50, 250, 500 N m taken at the "
+            "same shares of its [rating] coast_design_torque 80.45 N m (the coast side's "
+            "own design torque) as of the design torque 83.86 N m, rounded down: 47.9, "
+            "80.45 N m") in text
     tree = xr.open_datatree(out)
-    assert list(tree["/ltca"]["torque"].values) == [50.0, 80.45]
+    assert list(tree["/ltca"]["torque"].values) == [47.9, 80.45]
 
 
 def test_a_coast_design_torque_at_or_below_the_light_torque_gets_its_own_light_torque():
@@ -237,10 +250,10 @@ def test_a_coast_design_torque_at_or_below_the_light_torque_gets_its_own_light_t
             "rating": {"design_torque": 300.0, "coast_design_torque": 30.0}}))
     got, why = flank_torques(written, "coast")
     assert got == (4.5, 30.0)
-    assert why.endswith("limited to its [rating] coast_design_torque 30 N m (the coast "
-                        "side's own design torque, below the design torque 300 N m), its "
-                        "light torque 4.5 N m (0.15 x it, none of the case's torques being "
-                        "below it)")
+    assert why.endswith("coast_design_torque 30 N m (the coast side's own design torque) "
+                        "as of the design torque 300 N m, rounded down: 4.5, 30 N m (none "
+                        "above the coast design torque; a light torque at the same share of "
+                        "each flank's design torque)")
     # at the light torque exactly: the same; the drive flank keeps the case's torques
     at = dataclasses.replace(written, extra=MappingProxyType(dict(case.extra) | {
         "rating": {"design_torque": 300.0, "coast_design_torque": 45.0}}))
@@ -249,22 +262,97 @@ def test_a_coast_design_torque_at_or_below_the_light_torque_gets_its_own_light_t
 
 
 def test_the_coast_torques_are_one_rule():
-    """:func:`contact.pipeline.coast_flank_torques` on numbers: above the drive's light
-    torque the coast design torque replaces only the torques above it (the case's light
-    torque kept, nothing added: as before); at or below it the coast side's own light
-    torque (15 %, rounded down) comes first; one torque given gets a light torque too; the
-    development's default light share is the same constant."""
-    from contact.optimize.development_targets import DevelopmentTargets
-    from contact.pipeline import LIGHT_LOAD, coast_flank_torques
+    """:func:`contact.pipeline.coast_flank_torques` on numbers: the drive's torques taken at
+    the same shares of the coast design torque as of the design torque, rounded down
+    (:func:`~contact.pipeline.floor_torque`), those at or above the design torque at the
+    coast design torque; as given where the coast design torque is not below the design
+    torque or carries every torque. The numbers worked by hand: 45 × 150 / 300 = 22.5;
+    65.2 × 52.4 / 435.1 = 7.852 → 7.8 (the FH 16x16 Σ 60°, as before); 90.4 × 169.4 /
+    603.3 = 25.38 → 25.3 (the FH 20x24 Σ 100° of tests/data, 90.4 before); 39 × 95.6 /
+    260.5 = 14.31 → 14.3 (the spiral bevel 18x27 of tests/data, 39 before)."""
+    from contact.pipeline import coast_flank_torques
 
-    assert coast_flank_torques((65.2, 435.1), 52.4) == (7.8, 52.4)  # the FH 16x16 Σ 60°
-    assert coast_flank_torques((45.0, 300.0), 150.0) == (45.0, 150.0)
-    assert coast_flank_torques((50.0, 250.0, 500.0), 80.45) == (50.0, 80.45)
-    assert coast_flank_torques((45.0, 300.0), 300.0) == (45.0, 300.0)
-    assert coast_flank_torques((45.0, 300.0), 400.0) == (45.0, 300.0)
-    assert coast_flank_torques((300.0,), 150.0) == (22.5, 150.0)
-    assert coast_flank_torques((45.0, 300.0), 30.0, light_load=0.2) == (6.0, 30.0)
-    assert DevelopmentTargets().light_load == LIGHT_LOAD == 0.15
+    assert coast_flank_torques((45.0, 300.0), 150.0, 300.0) == (22.5, 150.0)
+    assert coast_flank_torques((65.2, 435.1), 52.4, 435.1) == (7.8, 52.4)
+    assert coast_flank_torques((90.4, 603.3), 169.4, 603.3) == (25.3, 169.4)
+    assert coast_flank_torques((39.0, 260.5), 95.6, 260.5) == (14.3, 95.6)
+    assert coast_flank_torques((50.0, 250.0, 500.0), 80.45, 83.86) == (47.9, 80.45)
+    # repeats dropped (every torque at or above the design torque), one torque kept one
+    assert coast_flank_torques((300.0, 400.0), 150.0, 300.0) == (150.0,)
+    assert coast_flank_torques((300.0,), 150.0, 300.0) == (150.0,)
+    # as given: no coast design torque below the design torque, or none above it
+    assert coast_flank_torques((45.0, 300.0), 300.0, 300.0) == (45.0, 300.0)
+    assert coast_flank_torques((45.0, 300.0), 400.0, 300.0) == (45.0, 300.0)
+    assert coast_flank_torques((50.0, 250.0, 500.0), 14860.0, 15830.0) == (50.0, 250.0,
+                                                                           500.0)
+    # a share that float arithmetic puts a hair below its decimal: not rounded down past it
+    assert 16.4 * 225.0 / 300.0 < 12.3  # 12.299999999999999
+    assert coast_flank_torques((16.4, 300.0), 225.0, 300.0) == (12.3, 225.0)
+    for bad in (0.0, -1.0, math.nan, math.inf):
+        with pytest.raises(ValueError, match="coast: must be finite and > 0"):
+            coast_flank_torques((45.0, 300.0), bad, 300.0)
+        with pytest.raises(ValueError, match="design: must be finite and > 0"):
+            coast_flank_torques((45.0, 300.0), 150.0, bad)
+    with pytest.raises(ValueError, match="torques: each must be finite and > 0"):
+        coast_flank_torques((math.nan, 300.0), 150.0, 300.0)
+
+
+def test_the_coast_light_torque_is_the_drive_light_share_of_its_own():
+    """The development's light torque ``light_load`` × the design torque, rounded down
+    (:func:`~contact.pipeline.case_torques`), taken to the coast flank: its light torque is
+    ``light_load`` × the coast design torque within the two roundings down (never above
+    it, below it by at most the drive light torque's rounding step scaled to the coast
+    plus the coast's own step, 0.1 N·m each from 1 to 1000 N·m), for the default 15 % and
+    a user's ``[development] light_load`` 0.1 and 0.2 alike; independent of the rule's
+    code: the bound is the rounding's (issue 71: no edge contact at 15 % of the design
+    torque, on each flank at its own; before, a user's light_load reached the drive flank
+    only)."""
+    import numpy as np
+
+    from contact.pipeline import LIGHT_LOAD, case_torques, coast_flank_torques
+
+    rng = np.random.default_rng(71)
+    for light_load in (LIGHT_LOAD, 0.1, 0.2):
+        for design in rng.uniform(20.0, 900.0, 60):
+            drive = case_torques(light_load, design)
+            for share in (0.05, 0.3, 0.5, 0.9):
+                coast = share * drive[1]
+                got = coast_flank_torques(drive, coast, drive[1])
+                assert got[1] == coast
+                exact = light_load * coast
+                assert got[0] <= exact + 1e-9
+                assert got[0] >= exact - 0.1 * share - 0.1 - 1e-9
+    # the user's 0.2: 0.2 x 300 = 60 → 0.2 x 150 = 30 (was 60 with the drive's)
+    assert coast_flank_torques(case_torques(0.2, 300.0), 150.0, 300.0) == (30.0, 150.0)
+
+
+def test_the_development_coast_torques_are_those_ltca_run_analyses():
+    """The development's coast setup (:func:`~contact.optimize.development_coast_flank.
+    coast_setup`: the first coast development, its redevelopment at a lowered coast design
+    torque, the lighter coast tip relief) and the case it writes for a coast check
+    (``_as_run``), run as ``ltca run --flank coast`` runs it
+    (:func:`contact.pipeline.flank_torques`): the same torques, for the default light load
+    and a user's 0.2, at a coast design torque above, at and below the drive's light torque
+    (no LTCA: the torques only)."""
+    from types import SimpleNamespace
+
+    from contact.catalogue import bundled_case_path
+    from contact.optimize.development_coast_flank import _as_run, coast_setup
+    from contact.pipeline import case_torques, flank_torques
+    from geometry.case import load_case
+
+    case = load_case(bundled_case_path())
+    for light_load, design, coast, want in ((0.15, 300.0, 150.0, [22.5, 150.0]),
+                                            (0.2, 300.0, 150.0, [30.0, 150.0]),
+                                            (0.2, 300.0, 60.0, [12.0, 60.0]),
+                                            (0.15, 435.1, 52.4, [7.8, 52.4]),
+                                            (0.15, 300.0, 300.0, [45.0, 300.0])):
+        setup = {"torques": case_torques(light_load, design), "centre_v": 0.6}
+        got = coast_setup(setup, coast)
+        assert got["torques"] == want and got["centre_v"] == 0.6
+        assert setup["torques"] == case_torques(light_load, design)  # not changed
+        written = _as_run(case, SimpleNamespace(operating={}), setup, coast)
+        assert list(flank_torques(written, "coast")[0]) == want
 
 
 def _coast_metrics(**over):

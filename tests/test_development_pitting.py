@@ -153,9 +153,11 @@ def test_a_first_step_far_below_the_capacity_is_brought_back_up(monkeypatch):
 def test_the_coast_flank_is_developed_again_only_where_its_torque_fell_far(monkeypatch):
     """:func:`contact.optimize.development_coast_flank.coast_at_its_torque`: no new search
     where the coast design torque was not lowered or stayed above 0.9 of the torque the
-    coast flank was developed at; below it, a search at the new torques (the case's light
-    torque, the coast design torque), kept only where it scores better there than the first
-    design."""
+    coast flank was developed at; below it, a search at the new torques (the coast design
+    torque and its light torque), kept only where it scores better there than the first
+    design. Its light torque the same share of the new coast design torque as the drive's
+    of the design torque (:func:`contact.pipeline.coast_flank_torques`: 43.9 × 142.6 /
+    293.2 = 21.35 → 21.3 N m; the drive's 43.9 N m before issue 71's shares)."""
     from contact.optimize import development as dev
     from contact.optimize.development_coast import CoastCapacity
     from contact.optimize.development_result import DevelopmentEvaluation
@@ -186,7 +188,7 @@ def test_the_coast_flank_is_developed_again_only_where_its_torque_fell_far(monke
                                         lambda line: None, None, outcome, cap, developed_at)
 
     assert again(292.9) is None and again(270.0) is None and calls == []
-    assert again(142.6).basic == "again" and calls == [(43.9, 142.6)]
+    assert again(142.6).basic == "again" and calls == [(21.3, 142.6)]
     # the search's designs carry the chosen drive flank, not the one ``basic`` was made
     # from (the truck hypoid 8x39 of tests/data/designs wrote a drive flank the root-stress
     # steps had replaced: LTE 99 / 115 urad in ltca run against 23 / 31 checked)
@@ -202,6 +204,39 @@ def test_the_coast_flank_is_developed_again_only_where_its_torque_fell_far(monke
     better_first = first._replace(best=ev(0.5, met=True))
     calls.clear()
     assert again(142.6, outcome=better_first) is None and calls == []
+
+
+def test_the_coast_peak_relief_runs_at_the_coast_flank_own_torques(monkeypatch):
+    """:func:`contact.optimize.development_coast_flank.coast_peak_relief` analyses its
+    lighter tip relief at the torque the coast capacity search started at and at that
+    torque's light torque by the one rule (:func:`contact.pipeline.coast_flank_torques`,
+    as ``ltca run --flank coast`` would): 35.5 × 237.1 / 293.2 = 28.7 N m under a drive of
+    35.5 / 293.2 N m (before issue 71's shares, the drive's 35.5 N m). Stand-ins: the
+    step (``checked_coast_peak``) and the written coast (no synthesis, no LTCA)."""
+    from contact.optimize.development_coast import CoastCapacity
+    from contact.optimize.development_result import DevelopmentEvaluation
+    from contact.optimize.development_targets import DevelopmentTargets
+    from contact.pipeline import coast_flank_torques
+
+    seen = []
+
+    def step(old, targets, setup, *args, **kw):
+        seen.append(tuple(setup["torques"]))
+
+    monkeypatch.setattr("contact.optimize.development_check.checked_coast_peak", step)
+    monkeypatch.setattr(dcoast, "written_coast",
+                        lambda *a: types.SimpleNamespace(placed=None, key_prefix=()))
+    old = DevelopmentEvaluation(0, {}, {"lte_peak_to_peak": np.array([30.0, 40.0])}, 1.0,
+                                {}, False, "", 0.0, full=(1.0, {"lte": 1.0}, False),
+                                checked=True)
+    coast = dcoast._CoastOutcome("written", old, [], "developed", None, (27.1, 180.8))
+    failed = CoastCheck(237.1, 1750.0, 2400.0, pitting_safety=0.91, s_h_min=1.0)
+    held = CoastCheck(180.8, 1619.0, 2400.0, pitting_safety=1.01, s_h_min=1.0)
+    cap = CoastCapacity(180.8, 237.1, (failed, held), "", True)
+    setup = {"torques": [35.5, 293.2]}
+    assert dcoast.coast_peak_relief("developed", old, DevelopmentTargets(), setup, None, {},
+                                    lambda line: None, coast, cap) is None
+    assert seen == [(28.7, 237.1)] == [coast_flank_torques((35.5, 293.2), 237.1, 293.2)]
 
 
 def test_the_coast_flank_is_developed_again_where_the_drive_cut_its_torque(monkeypatch):

@@ -212,7 +212,6 @@ from contact.optimize.development_targets import (
     working_depth_centre,
 )
 from contact.optimize.development_written_drive import written_drive_check
-from contact.pipeline import coast_flank_torques
 from geometry.case import Case
 from geometry.core.blas import blas_threads
 from geometry.core.errors import InputError, raise_if_interrupted
@@ -496,10 +495,9 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     # coast side's ISO 10300 capacity (or the basic file's coast_design_torque)
     coast_iso = coast_rated_torque(best.case if best.case is not None else None, basic,
                                    setup["torques"][1])
-    # (the light torque the drive's, or the coast side's own where its design torque is
-    # at or below it: as `ltca run --flank coast` analyses it, flank_torques)
-    coast_setup = dict(setup, torques=list(coast_flank_torques(
-        setup["torques"], min(setup["torques"][1], coast_iso))))
+    # (its light torque the same share of it as the drive's of the design torque: as
+    # `ltca run --flank coast` analyses the case written, flank_torques)
+    coast_setup = coast_flank.coast_setup(setup, min(setup["torques"][1], coast_iso))
     coast = coast_flank.coast_development(developed, best, targets, coast_setup, teeth, memo,
                                           say, make)
     coast_seconds = time.process_time() - c_coast

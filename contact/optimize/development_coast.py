@@ -7,11 +7,12 @@ long-life capacity (``[rating] coast_design_torque``,
 drive side's, and its developed bearing may peak above the static strength, carry plastic
 edges or overstress the root below it. :func:`coast_capacity` checks the written case's
 coast flank at ``ltca run --flank coast``'s sampling and torques
-(:func:`contact.pipeline.flank_torques`: the case's light torque and the coast design
-torque) and lowers the coast design torque, one verified step at a time,
-until the flank peak pressure is within the static strength, no segment is plastic, the
-FE root stress's safety S_F,FE is at least S_Fmin and the local pitting safety at long
-life S_H,loc (:func:`contact.optimize.development_root.pitting_safety`) at least S_Hmin
+(:func:`contact.pipeline.flank_torques`: the coast design torque and its light torque, the
+same share of it as the case's of the design torque) and lowers the coast design torque,
+one verified step at a time, until the flank peak pressure is within the static strength,
+no segment is plastic, the FE root stress's safety S_F,FE is at least S_Fmin and the local
+pitting safety at long life S_H,loc
+(:func:`contact.optimize.development_root.pitting_safety`) at least S_Hmin
 (:func:`coast_torque_step`). Every
 lowering is recorded with its reason (:attr:`CoastCapacity.reason`), which the case's
 ``[rating] source`` and ``ltca synthesize`` print. Imported by
@@ -64,7 +65,7 @@ class CoastCheck:
 
     Attributes
     ----------
-    torque : float — [N·m] the coast design torque analysed (with the case's light torque)
+    torque : float — [N·m] the coast design torque analysed (with its light torque)
     pressure : float — [MPa] the LTCA's flank peak pressure at ``torque``
     limit : float — [MPa] the static strength σ_Hlim·Z_NT,static (the verdict's fail limit)
     plastic : float — [1] the largest share of the torque on plastic segments, over both

@@ -57,6 +57,7 @@ from contact.optimize.development_targets import (
     DevelopmentTargets,
     development_score,
 )
+from contact.pipeline import coast_flank_torques
 from geometry.case import Case
 from geometry.core.errors import raise_if_interrupted
 from geometry.core.text import plain_number
@@ -314,6 +315,39 @@ def coast_flank_capacity(case: Case, basic: BasicDesign, coast: _CoastOutcome,
     return coast._replace(best=best, torques=torques), cap
 
 
+def coast_setup(setup: dict[str, Any], coast: float) -> dict[str, Any]:
+    """The development's ``setup`` with the coast flank's torques for its design torque
+    ``coast``: the drive's light and design torque (``setup["torques"]``) taken at the same
+    shares of ``coast`` as of the design torque, as ``ltca run --flank coast`` analyses the
+    case written (:func:`contact.pipeline.coast_flank_torques`); a ``coast`` at or above
+    the design torque leaves them.
+
+    Parameters
+    ----------
+    setup : dict
+        The development's state; ``setup["torques"]``: [light, design] [N·m], the light
+        torque ``light_load`` × the design torque (:func:`contact.pipeline.case_torques`).
+    coast : float — [N·m], the coast design torque, finite and > 0
+
+    Returns
+    -------
+    dict
+        A copy of ``setup`` whose ``"torques"`` are the coast flank's [light, design].
+
+    Raises
+    ------
+    ValueError
+        ``coast`` not finite or not > 0 (:func:`~contact.pipeline.coast_flank_torques`).
+
+    Notes
+    -----
+    Source: issue 71 (no edge contact at 15 % of the design torque, each flank at its
+    own: the user's ``light_load`` share on the coast flank too).
+    """
+    torques = setup["torques"]
+    return dict(setup, torques=list(coast_flank_torques(torques, coast, torques[1])))
+
+
 def coast_side(basic: BasicDesign) -> str:
     """The pinion flank side of the coast flank: ``"convex"`` where the drive flank is the
     concave, else ``"concave"``.
@@ -567,20 +601,20 @@ def coast_at_its_torque(pre_coast: BasicDesign, drive: DevelopmentEvaluation,
                         make: Callable[[BasicDesign], Case], coast: _CoastOutcome,
                         cap: CoastCapacity | None, developed_at: float
                         ) -> _CoastOutcome | None:
-    """The coast flank developed again where its design torque is well below the
-    torque it was developed at (below :data:`COAST_REDEVELOP` × ``developed_at``,
-    :func:`redeveloped_at`: its own static, plastic, root-stress or local pitting
-    capacity, :func:`coast_flank_capacity`, or the drive's capacity cut), now at
-    the torques ``ltca run --flank coast`` analyses (the case's light torque and the new
-    coast design torque): :func:`coast_development` from the coast flank as synthesised
-    (``pre_coast`` with the drive flank of ``drive``, and the basic file's coast
-    prescriptions),
-    with the budget ``coast_max_evaluations``, its flank peak pressure bounded by what the
-    new coast design torque allows (:func:`pitting_pressure`). Returns its outcome where
-    its chosen design ranks before the design chosen first at those torques
-    (:func:`~contact.optimize.development_keep.ranks_better`: a checked LTE ``ltca run``'s
-    verdict FAILs last, then every target met, then the objective; ``coast``'s metrics
-    :func:`coast_flank_capacity` measured there), else None.
+    """The coast flank developed again where its design torque is well below the torque it
+    was developed at (below :data:`COAST_REDEVELOP` × ``developed_at``,
+    :func:`redeveloped_at`: its own static, plastic, root-stress or local pitting capacity,
+    :func:`coast_flank_capacity`, or the drive's capacity cut), now at the torques ``ltca
+    run --flank coast`` analyses (the new coast design torque and its light torque, the same
+    share of it as the drive's of the design torque:
+    :func:`contact.pipeline.coast_flank_torques`): :func:`coast_development` from the coast
+    flank as synthesised (``pre_coast`` with the drive flank of ``drive``, and the basic
+    file's coast prescriptions), with the budget ``coast_max_evaluations``, its flank peak
+    pressure bounded by what the new coast design torque allows (:func:`pitting_pressure`).
+    Returns its outcome where its chosen design ranks before the design chosen first at
+    those torques (:func:`~contact.optimize.development_keep.ranks_better`: a checked LTE
+    ``ltca run``'s verdict FAILs last, then every target met, then the objective;
+    ``coast``'s metrics :func:`coast_flank_capacity` measured there), else None.
 
     Why: the relief that keeps a coast bearing elastic at a torque its flank cannot carry
     costs LTE at the torque it can (issue 71, the e-axle 11×39 at Σ 80°: developed at
@@ -599,7 +633,7 @@ def coast_at_its_torque(pre_coast: BasicDesign, drive: DevelopmentEvaluation,
         return None
     say(f"development: coast flank developed again at its own design torque "
         f"{plain_number(cap.torque)} N m (it was developed at {plain_number(developed_at)} N m)")
-    redo_setup = dict(setup, torques=[setup["torques"][0], cap.torque])
+    redo_setup = coast_setup(setup, cap.torque)
     # the flank peak pressure the new coast design torque allows (its local pitting
     # safety at S_Hmin) bounds the redevelopment's: a design developed there must carry
     # the torque it is developed at
@@ -694,7 +728,8 @@ def coast_peak_relief(developed: BasicDesign, drive: DevelopmentEvaluation,
     torque: where the coast capacity search (``cap``, :func:`coast_flank_capacity`)
     lowered it for the flank's static strength or its local pitting safety at the torque
     it started at, :func:`~contact.optimize.development_check.checked_coast_peak` on the
-    written coast design (``coast.best``) at the light torque and that one, its peak
+    written coast design (``coast.best``) at that one and its light torque
+    (:func:`contact.pipeline.coast_flank_torques`), its peak
     there the search's, the targets the written design meets at its own torques kept and
     its LTE p-p within the verdict's limit (or the written design's, where above).
     ``developed``: the basic design written (both flanks' prescriptions); ``drive``: the
@@ -721,8 +756,7 @@ def coast_peak_relief(developed: BasicDesign, drive: DevelopmentEvaluation,
     say(f"development: coast flank's peak {first.pressure:.0f} MPa at {plain_number(cap.start)} N "
         f"m set its design torque {plain_number(cap.torque)} N m: a lighter tip relief")
     written = written_coast(developed, drive, memo)
-    got = checked_coast_peak(old, targets, dict(setup, torques=[setup["torques"][0],
-                                                                cap.start]),
+    got = checked_coast_peak(old, targets, coast_setup(setup, cap.start),
                              teeth, say, written.placed, peak=first.pressure, met=met,
                              lte=lte, key_prefix=written.key_prefix)
     if got is None:

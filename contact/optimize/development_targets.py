@@ -212,9 +212,10 @@ class DevelopmentTargets:
     ----------
     light_load : float — [1]
         Light-load torque as a fraction of the design torque, in (0, 0.5]; default 0.15,
-        :data:`contact.pipeline.LIGHT_LOAD`, also the coast flank's light torque where its
-        design torque is at or below the drive's light torque (the pattern is developed at
-        10–20 % of the design torque, as on a roll tester under light brake load).
+        :data:`contact.pipeline.LIGHT_LOAD`; the coast flank's light torque is the same
+        share of its own design torque (:func:`contact.pipeline.coast_flank_torques`; the
+        pattern is developed at 10–20 % of the design torque, as on a roll tester under
+        light brake load).
     pattern_length : float — [1]
         Lengthwise extent of the light-load pattern, fraction of the face width, in
         (0.1, 0.9); default 0.5: "about half the face width", the pattern the V-H check's
