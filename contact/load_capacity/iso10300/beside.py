@@ -205,7 +205,7 @@ def bin_ratings(case, torque: Any, speed: Any, flank: str | None = None
         ``contact_allowable_factor`` (Z_X Z_L Z_v Z_R Z_W Z_K Z_Hyp),
         ``contact_static_influence`` (Z_L Z_v Z_R), ``bending_allowable_factor``
         (Y_δ,relT Y_R,relT Y_X) and ``bending_static_influence`` (Y_R,relT Y_X) [1]
-        (bin, member), ``K_A_K_v`` (bin), ``S_Fmin`` and ``design_torque`` [N m] (), each
+        (bin, member), ``K_A_K_v`` (bin), ``S_Fmin`` and ``design_torque`` [N·m] (), each
         with ``units``, ``long_name`` and ``clause``, and ``""``; or
         None and the one line of :func:`analysis_rating` saying why there is no rating.
 
