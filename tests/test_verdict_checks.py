@@ -258,6 +258,12 @@ def test_duty_cycle_judges_a_bin_as_ltca_run_judges_its_torque():
     assert "S_F,FE 1.20 below S_Fmin 1.3" in fail.reason and "bin 0 (" in fail.reason
     (att,) = [f for f in found if f.severity == "attention"]
     assert "S_F,FE 1.05 below S_Fmin 1.3" in att.reason and "bin 1 (" in att.reason
+    # the next step under the FAIL: ltca run at the failing bin's torque
+    from contact.commands.next_steps import duty_cycle_lines
+
+    lines = duty_cycle_lines(ds, "x.toml", None, ["root_stress"])
+    assert "bin 0 (100 N m) has the lowest FE root safety S_F,FE 1.20" in lines[0]
+    assert lines[1] == "    ltca run x.toml --torque 100"
     # the rule itself: at the minimum no finding; NaN not judged; static always fails
     assert root_safety_severity(1.3, 1.3, 100.0, 100.0) is None
     assert root_safety_severity(float("nan"), 1.3, 100.0, 100.0) is None
