@@ -124,6 +124,12 @@ def test_bin_ratings_are_the_rating_at_each_bin():
         one = iso10300_rating(case, [t], n).isel(torque=0)
         assert iso["S_H"].values[i] == pytest.approx(one["S_H"].values, rel=1e-15)
         assert iso["S_F"].values[i] == pytest.approx(one["S_F"].values, rel=1e-15)
+        # what the duty cycle's root-stress check needs to judge a bin as ltca run does
+        assert iso["K_A_K_v"].values[i] == pytest.approx(
+            float(one["K_A"]) * float(one["K_v"]), rel=1e-15)
+        assert float(iso["S_Fmin"]) == float(one["S_Fmin"])
+        np.testing.assert_equal(float(iso["design_torque"]), float(one["design_torque"])
+                                if "design_torque" in one else np.nan)
     with pytest.raises(InputError, match=r"^speed: one per bin"):
         bin_ratings(case, [100.0, 300.0], [3000.0])
     assert bin_ratings(_case("design"), [100.0], [3000.0])[0] is None

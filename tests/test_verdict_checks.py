@@ -222,3 +222,51 @@ def test_a_variant_with_the_standards_numbers_is_not_printed_twice():
     assert same[1].endswith("(not a standard): the same numbers as the line above")
     other = _standard_lines(iso(210.0))
     assert other[1].endswith("210 degC (flash 110 K, mu_m 0.050), S_B 1.20")
+
+
+def test_duty_cycle_judges_a_bin_as_ltca_run_judges_its_torque():
+    """Issue 71: the truck hypoid 8x47 FAILed `ltca run` on the gear's S_F,FE 1.25 < 1.3
+    at its design torque while `ltca duty-cycle` at the same torque said nothing (its S_F
+    against 1). The same numbers as test_root_stress_against_sigma_fp_by_hand, now as
+    duty-cycle bins (S_F,FE = σ_FP / (FE peak · K_A K_v), long life): bin 0 at the design
+    torque 100 N·m, pinion S_F,FE 824.67/687.5 = 1.20 — fail in both; bin 1 at 150 N·m,
+    pinion 824.67/787.5 = 1.05 — attention in both; the gears at 1.50 and 4.40 of bin
+    0 / a bin 1 gear above 1.3 — no finding. The duty cycle's findings come from the same
+    rule (root_safety_severity) as the run's; the severities are compared, not copied."""
+    from contact.study.verdict_checks import root_safety_severity
+
+    fp = 425 * 2 * 1.0 * 0.99 * 0.98 * 1.0
+    torques = [100.0, 150.0]
+    root = [[500.0, 400.0], [600.0, 250.0]]
+    k_v = [1.1, 1.05]
+    rt = _rating(torques, [fp, fp], 1.25, k_v, 100.0)
+    run = {(f.severity, f.reason.split(" at ")[0].split()[-1], f.reason.split(" at ")[1]
+            .split(":")[0]) for f in _found(verdict(_tree({"/ltca": _ltca(torques, root),
+                                                          "/rating": rt})), "root_stress")}
+    assert run == {("fail", "pinion", "100 N·m"), ("attention", "pinion", "150 N·m")}
+    safety = root_stress_safety(np.asarray(root), rt)  # (bin, member), the bins' S_F,FE
+    ds = xr.Dataset(
+        {"contact_safety_factor": ("member", [2.0, 2.0]),
+         "root_stress_safety": (("bin", "member"), safety),
+         "bending_safety_min": 1.3, "rating_design_torque": 100.0,
+         "torque": ("bin", torques)},
+        coords={"bin": [0, 1], "member": ["pinion", "gear"]})
+    found = _found(verdict(ds), "root_stress")
+    assert sorted((f.severity, f.reason.split(":")[0]) for f in found) == [
+        ("attention", "pinion"), ("fail", "pinion")]
+    (fail,) = [f for f in found if f.severity == "fail"]
+    assert "S_F,FE 1.20 below S_Fmin 1.3" in fail.reason and "bin 0 (" in fail.reason
+    (att,) = [f for f in found if f.severity == "attention"]
+    assert "S_F,FE 1.05 below S_Fmin 1.3" in att.reason and "bin 1 (" in att.reason
+    # the next step under the FAIL: ltca run at the failing bin's torque
+    from contact.commands.next_steps import duty_cycle_lines
+
+    lines = duty_cycle_lines(ds, "x.toml", None, ["root_stress"])
+    assert "bin 0 (100 N m) has the lowest FE root safety S_F,FE 1.20" in lines[0]
+    assert lines[1] == "    ltca run x.toml --torque 100"
+    # the rule itself: at the minimum no finding; NaN not judged; static always fails
+    assert root_safety_severity(1.3, 1.3, 100.0, 100.0) is None
+    assert root_safety_severity(float("nan"), 1.3, 100.0, 100.0) is None
+    assert root_safety_severity(1.29, 1.3, 100.0, float("nan")) == "fail"
+    assert root_safety_severity(1.29, 1.3, 150.0, 100.0, long_life=False) == "fail"
+    assert root_safety_severity(0.3, 1.3, 150.0, 100.0, above_static=True) == "fail"

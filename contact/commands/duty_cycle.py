@@ -223,7 +223,11 @@ def run(args: argparse.Namespace) -> int:
         if "root_life" in ds:
             line += (f"; root damage {float(ds['root_damage_max'][k]):.3g}, bending life "
                      f"{_fmt(float(ds['root_life'][k]), '.4g')} h, S_F = "
-                     f"{float(ds['bending_safety_factor'][k]):.2f}")
+                     f"{float(ds['bending_safety_factor'][k]):.2f} (life factor 1, "
+                     "against 1)")
+        if "root_stress_safety" in ds:  # ltca run's quantity and minimum (issue 71)
+            line += (f"; S_F,FE {float(ds['root_stress_safety'][:, k].min()):.2f} against "
+                     f"S_Fmin {float(ds['bending_safety_min']):g} as ltca run judges it")
         print(line)
     if "root_life" not in ds:
         print(f"bending side {ds.attrs['bending']}")

@@ -317,7 +317,21 @@ def duty_cycle_lines(ds, shown: str, flank: str | None,
     torque = np.asarray(ds["torque"].values, float)
     flag = f" --flank {flank}" if flank else ""
     worst, why = None, ""
-    if "flank_damage" in ds and "damage" in ds:
+    if ("root_stress" in fail_checks and "damage" not in fail_checks
+            and "root_stress_safety" in ds):  # the bin ltca run fails on its root (issue 71)
+        from contact.study.verdict_checks import root_safety_severity
+
+        safety = np.asarray(ds["root_stress_safety"].transpose("bin", "member").values, float)
+        design = (float(ds["rating_design_torque"]) if "rating_design_torque" in ds
+                  else np.nan)
+        failed = [b for b in range(safety.shape[0]) if any(
+            root_safety_severity(float(x), float(ds["bending_safety_min"]),
+                                 float(torque[b]), design) == "fail" for x in safety[b])]
+        worst = min(failed or range(safety.shape[0]), key=lambda b: np.nanmin(safety[b]))
+        why = (f"bin {worst} ({plain_number(torque[worst])} N m) has the lowest FE root "
+               f"safety S_F,FE {np.nanmin(safety[worst]):.2f}, below S_Fmin "
+               f"{float(ds['bending_safety_min']):g} as ltca run judges it")
+    elif "flank_damage" in ds and "damage" in ds:
         k = int(np.argmax(ds["damage"].values))
         fd = np.nan_to_num(np.asarray(ds["flank_damage"].isel(member=k).values, float))
         if fd.size and fd.sum() > 0:

@@ -527,6 +527,15 @@ def _iso_rating(shared: DutyInputs, ds: xr.Dataset, members: list[str],
             + " / peak tensile fillet stress of the bin (life factor 1)")
     if iso is None:
         return out, why
+    if "local_bending_safety" in out and {"K_A_K_v", "S_Fmin"} <= set(iso.variables):
+        # ltca run's S_F,FE of the bin (its K_A K_v on the peak fillet stress), judged as
+        # ltca run judges it (contact.study.verdict_checks.root_safety_severity, issue 71)
+        out["root_stress_safety"] = data_var(
+            bm, out["local_bending_safety"][1] / iso["K_A_K_v"].values[:, None], "1",
+            "S_F,FE of ltca run's root_stress check at the bin: the rating's sigma_FP/Y_NT "
+            "/ (peak tensile fillet stress x K_A K_v of the bin), long life")
+        out["bending_safety_min"] = iso["S_Fmin"].variable
+        out["rating_design_torque"] = iso["design_torque"].variable
     for name, var in (("iso_contact_stress", "sigma_H"), ("iso_root_stress", "sigma_F"),
                       ("iso_contact_safety", "S_H"), ("iso_bending_safety", "S_F")):
         out[name] = iso[var].variable

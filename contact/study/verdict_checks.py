@@ -57,8 +57,8 @@ import xarray as xr
 
 from geometry.core.text import plain_number
 
-__all__ = ["CHECKS", "analysis_checks", "has_iso_rating", "member_names", "root_stress_safety",
-           "unchecked_reason"]
+__all__ = ["CHECKS", "analysis_checks", "has_iso_rating", "member_names",
+           "root_safety_severity", "root_stress_safety", "unchecked_reason"]
 
 #: the checks of this module, in the order they are listed after contact.study.verdicts'
 CHECKS = ("root_stress", "scuffing_standard")
@@ -106,6 +106,50 @@ def _static_factor(lt: xr.Dataset, j: int) -> float:
         return float(sn_curves(str(mat), _GRADE)["bending"].static_life_factor)
     except Exception:  # a material the tables lack: no static distinction
         return float("nan")
+
+
+def root_safety_severity(safety: float, minimum: float, torque: float, design_torque: float,
+                         *, long_life: bool = True, above_static: bool = False) -> str | None:
+    """The judgement of a root safety S_F,FE, one rule for ``ltca run`` and ``ltca
+    duty-cycle`` (issue 71: the same design at the same torque, the same verdict).
+
+    Parameters
+    ----------
+    safety : float — [1]
+        S_F,FE = σ_FP / (σ_FE,max · K_A · K_v) (:func:`root_stress_safety`; in the duty
+        cycle a bin's, at long life).
+    minimum : float — [1]
+        The rating's S_F,min (the case's ``[rating] min_safety_bending``, default 1.3).
+    torque, design_torque : float — [N·m]
+        The pinion torque judged and the rating's ``design_torque`` (NaN: every torque is
+        a design torque).
+    long_life : bool
+        The permissible stress is at long life (Y_NT of the rating's knee or beyond).
+    above_static : bool
+        σ_FE,max · K_A · K_v exceeds the static strength (the bending S–N curve's static
+        end): no life at any count of cycles.
+
+    Returns
+    -------
+    {"fail", "attention"} or None
+        None at or above the minimum (or a NaN safety: the caller says it is not checked);
+        "fail" below it at the design torque or under, or above the static strength;
+        "attention" below it above the design torque at long life — a load of finite life
+        whose damage ``ltca duty-cycle`` counts.
+
+    Notes
+    -----
+    Source: ISO 10300-3:2014 cl. 6 (S_F ≥ S_F,min), the verdict's rule for a rated torque
+    above the design torque (docs/verdicts.md); docs/duty_cycle.md ("The duty cycle's root
+    safety against S_F,min").
+    """
+    if not (np.isfinite(safety) and safety < minimum):
+        return None
+    if above_static:
+        return "fail"
+    if long_life and torque > design_torque:
+        return "attention"
+    return "fail"
 
 
 def root_stress_safety(root_stress_max: np.ndarray, rt: xr.Dataset) -> np.ndarray:
@@ -175,22 +219,25 @@ def _root_stress(lt: xr.Dataset, rt: xr.Dataset | None) -> list:
             k_v = float(np.atleast_1d(rt["K_v"].values)[min(i, rt["K_v"].size - 1)])
             for j, m in enumerate(names):
                 s = float(safety[i, j])
-                if not (np.isfinite(s) and s < smin):
-                    continue
+                long_life = not np.isfinite(cycles[j % cycles.size])
+                if root_safety_severity(s, smin, float(t), design, long_life=long_life) is None:
+                    continue  # at or above S_Fmin (the static strength only matters below)
                 eff = values[i, j] * k_a * k_v
                 fp = float(np.atleast_1d(rt["sigma_FP"].values)[j])
                 ynt = float(y_nt[j % y_nt.size])
                 static = fp * _static_factor(lt, j) / ynt
+                above = bool(np.isfinite(static) and eff > static)
+                severity = root_safety_severity(s, smin, float(t), design,
+                                                long_life=long_life, above_static=above)
                 reason = (f"{fe} of the {m} at {_t(t)}: {values[i, j]:.0f} MPa × "
                           f"K_A {k_a:g} × K_v {k_v:.3f} = {eff:.0f} MPa against σ_FP "
                           f"{fp:.0f} MPa (ISO 10300-3, σ_Flim Y_ST Y_NT Y_δrelT Y_RrelT Y_X): "
                           f"S_F {s:.2f} below S_Fmin {smin:g}")
-                long_life = not np.isfinite(cycles[j % cycles.size])
-                if np.isfinite(static) and eff > static:
+                if above:
                     out.append(Finding("fail", "root_stress",
                                        reason + f"; above the static strength {static:.0f} "
                                        "MPa (Y_NT at the S–N curve's static end): no life"))
-                elif long_life and t > design:
+                elif severity == "attention":
                     out.append(Finding("attention", "root_stress",
                                        reason + f" at long life: above the design torque "
                                        f"{_t(design)} a load of finite life (ltca duty-cycle "

@@ -1268,6 +1268,50 @@ def _duty_lte(ds: xr.Dataset, limit: float = LTE_LIMIT) -> list[Finding]:
                     "run` judges the design's own LTE)")]
 
 
+def _duty_root_stress(ds: xr.Dataset) -> list[Finding]:
+    """Each bin's S_F,FE (``root_stress_safety``) against the rating's S_F,min, judged by
+    ``ltca run``'s rule (:func:`contact.study.verdict_checks.root_safety_severity`): the
+    same design at the same torque gets the same verdict in both commands (issue 71). One
+    finding per member and severity, naming its bins and the lowest S_F,FE."""
+    from contact.study.verdict_checks import root_safety_severity
+
+    smin = float(ds["bending_safety_min"])
+    design = float(ds["rating_design_torque"]) if "rating_design_torque" in ds else math.nan
+    torques = np.asarray(ds["torque"].values, float)
+    safety = np.asarray(ds["root_stress_safety"].transpose("bin", "member").values, float)
+    out = []
+    for k, m in enumerate(str(x) for x in ds["member"].values):
+        judged = [root_safety_severity(float(safety[i, k]), smin, float(t), design)
+                  for i, t in enumerate(torques)]
+        for severity in ("fail", "attention"):
+            bins = [i for i, j in enumerate(judged) if j == severity]
+            if not bins:
+                continue
+            i = min(bins, key=lambda b: safety[b, k])
+            why = ("at or below the rating's design torque, as `ltca run` fails it at that "
+                   "torque" if severity == "fail" else
+                   f"above the rating's design torque {_t(design)}: a load of finite life, "
+                   "the root damage over the cycle decides")
+            out.append(Finding(
+                severity, "root_stress",
+                f"{m}: FE root safety S_F,FE {safety[i, k]:.2f} below S_Fmin {smin:g} (the "
+                f"rating's, as `ltca run` judges it; long life, K_A K_v on the FE stress) in "
+                f"bin{'s' * (len(bins) > 1)} {', '.join(str(b) for b in bins)} (lowest: bin "
+                f"{i}, {_t(float(torques[i]))}) — {why}; the cycle's S_F line is against 1"))
+    return out
+
+
+def _duty_bending(ds: xr.Dataset) -> list[Finding]:
+    """The attention finding of a duty cycle without its bending side, with why."""
+    if "root_life" in ds:
+        return []
+    said = str(ds.attrs.get("bending", ""))
+    why = (said.removeprefix("unavailable: ").split("; no bending")[0]
+           if "the FE model failed" in said else "leave out --no-root-stress")
+    return [Finding("attention", "bending",
+                    f"bending side not evaluated: the bins have no root stress ({why})")]
+
+
 def _duty(ds: xr.Dataset) -> tuple[list[Finding], list[str]]:
     findings: list[Finding] = []
     checks = ["damage", "safety", "implausible", "static", "edge_contact", "plastic_edges",
@@ -1292,6 +1336,9 @@ def _duty(ds: xr.Dataset) -> tuple[list[Finding], list[str]]:
                     f"{DUTY_MIN_SAFETY:g} at the "
                     f"peak-torque bin (life factor 1): beyond the endurance limit there; "
                     f"the Miner damage {d:.3g} over the cycle decides the life"))
+    if "root_stress_safety" in ds:
+        checks.append("root_stress")
+        findings += _duty_root_stress(ds)
     if "plausibility" in ds:
         from contact.ltca.plausibility import CAUSES
 
@@ -1345,13 +1392,7 @@ def _duty(ds: xr.Dataset) -> tuple[list[Finding], list[str]]:
             findings.append(Finding("attention", "certification",
                                     f"bins {', '.join(str(b) for b in bad)} have roll "
                                     "positions without a certified contact solution"))
-    if "root_life" not in ds:
-        said = str(ds.attrs.get("bending", ""))
-        why = (said.removeprefix("unavailable: ").split("; no bending")[0]
-               if "the FE model failed" in said else "leave out --no-root-stress")
-        findings.append(Finding("attention", "bending",
-                                "bending side not evaluated: the bins have no root stress "
-                                f"({why})"))
+    findings += _duty_bending(ds)
     if int(ds.attrs.get("illustrative", 0)):
         findings.append(Finding("attention", "illustrative",
                                 "the spectrum is the bundled ILLUSTRATIVE one (made-up "

@@ -205,7 +205,8 @@ def bin_ratings(case, torque: Any, speed: Any, flank: str | None = None
         ``contact_allowable_factor`` (Z_X Z_L Z_v Z_R Z_W Z_K Z_Hyp),
         ``contact_static_influence`` (Z_L Z_v Z_R), ``bending_allowable_factor``
         (Y_δ,relT Y_R,relT Y_X) and ``bending_static_influence`` (Y_R,relT Y_X) [1]
-        (bin, member), each with ``units``, ``long_name`` and ``clause``, and ``""``; or
+        (bin, member), ``K_A_K_v`` (bin), ``S_Fmin`` and ``design_torque`` [N·m] (), each
+        with ``units``, ``long_name`` and ``clause``, and ``""``; or
         None and the one line of :func:`analysis_rating` saying why there is no rating.
 
     Raises
@@ -261,6 +262,18 @@ def bin_ratings(case, torque: Any, speed: Any, flank: str | None = None
         "bending_static_influence": data_var(BM, np.stack([
             (r["Y_RrelT"] * r["Y_X"]).values for r in ratings]), "1",
             "Y_R,relT Y_X of the bin (1 for the static stress)", clause=c3),
+        # what ltca run's root-stress check needs to judge a bin as it judges its torque
+        # (contact.study.verdict_checks.root_safety_severity, issue 71)
+        "K_A_K_v": data_var(B, np.array([float(r["K_A"]) * float(r["K_v"])
+                                         for r in ratings]), "1",
+                            "application factor times dynamic factor K_A K_v of the bin",
+                            clause="ISO 10300-1:2014"),
+        "S_Fmin": data_var((), float(ratings[0]["S_Fmin"]), "1",
+                           "minimum safety factor for bending S_F,min", clause="[rating]"),
+        "design_torque": data_var((), float(ratings[0]["design_torque"])
+                                  if "design_torque" in ratings[0] else np.nan, "N m",
+                                  "the rating's design torque (NaN: every torque)",
+                                  clause="[rating]"),
     }
     members = list(ratings[0]["member"].values)
     return xr.Dataset(out, coords={"member": data_var(("member",), members, None,
