@@ -13,7 +13,7 @@ import xarray as xr
 
 from contact.catalogue import bundled_case_path
 from contact.compliance.fe import FEOptions, cache_key, cache_path, influence_coefficients
-from contact.compliance.fe.cache import read_cache_entry
+from contact.compliance.fe.cache import CHECKSUM_ATTR, data_checksum, read_cache_entry
 from contact.compliance.fe.reuse import REUSE_DEPTH_FRACTION, point_deviation, reuse_near_model
 from geometry.case import load_case
 
@@ -97,6 +97,12 @@ def test_a_near_member_keeps_the_earlier_coefficients_within_the_stated_error(
                                       progress=False)
         assert kept.attrs["reuse_point_deviation_mm"] == round(deviation, 6)
         assert kept.attrs["reused_from"] != kept.attrs["cache_key"]
+        # written with the earlier entry's stored checksum (not hashed again, issue 75):
+        # the same as the data's own, and as the earlier entry's
+        earlier_entry = read_cache_entry(cache_path(kept.attrs["reused_from"], kept_dir),
+                                         kept.attrs["reused_from"])
+        assert kept.attrs[CHECKSUM_ATTR] == data_checksum(kept) \
+            == earlier_entry.attrs[CHECKSUM_ATTR]
         xr.testing.assert_identical(written[kept_dir, kept.attrs["cache_key"]], kept)
         own = influence_coefficients(moved, "pinion", flank, COARSE, cache_dir=own_dir,
                                      progress=False, other_flank=True, written=keep)

@@ -218,9 +218,14 @@ def _stamp(ds: xr.Dataset, inputs: str | None, *, created: str, path: str = "/",
            root_title: str | None = None) -> xr.Dataset:
     ds = ds.copy(deep=False)
     ds.attrs = netcdf_safe_attrs(ds.attrs)
-    for name in ds.variables:
-        ds[name].attrs = netcdf_safe_attrs(ds[name].attrs)
-        ds[name].attrs.setdefault("coverage_content_type", _content_type(ds, name))
+    # each variable's own attributes (the shallow copy's Variable objects, as ds[name]
+    # holds them), not through ds[name]: a DataArray built with its coordinates per
+    # call, 0.2 s of the 392 variables of a 10x43's ``ltca run`` file (issue 75)
+    coords = set(ds.coords)
+    for name, var in ds.variables.items():
+        var.attrs = netcdf_safe_attrs(var.attrs)
+        var.attrs.setdefault("coverage_content_type",
+                             _content_type_of(var.attrs, name in coords))
     ds.attrs.setdefault("toolkit", "hypoid-ltca")
     ds.attrs["toolkit_version"] = __version__
     ds.attrs["Conventions"] = CONVENTIONS
@@ -243,13 +248,14 @@ def _stamp(ds: xr.Dataset, inputs: str | None, *, created: str, path: str = "/",
     return ds
 
 
-def _content_type(ds: xr.Dataset, name: str) -> str:
+def _content_type_of(attrs: dict[str, Any], coordinate: bool) -> str:
     """ACDD ``coverage_content_type`` (ISO 19115-1 code) of a variable the stage left
-    unlabelled: coordinates are ``coordinate``, enumerations (``flag_values``)
-    ``auxiliaryInformation``, everything else a ``modelResult``."""
-    if name in ds.coords:
+    unlabelled, from its attributes and whether it is a coordinate: coordinates are
+    ``coordinate``, enumerations (``flag_values``) ``auxiliaryInformation``, everything
+    else a ``modelResult``."""
+    if coordinate:
         return "coordinate"
-    if "flag_values" in ds[name].attrs or "flag_masks" in ds[name].attrs:
+    if "flag_values" in attrs or "flag_masks" in attrs:
         return "auxiliaryInformation"
     return "modelResult"
 

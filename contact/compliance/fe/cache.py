@@ -226,7 +226,7 @@ def _nonfinite(ds: xr.Dataset) -> str | None:
 
 
 def write_cache_entry(ds: xr.Dataset, path: str | os.PathLike[str], key: str, *,
-                      compress: bool = False) -> xr.Dataset:
+                      compress: bool = False, checksum: str | None = None) -> xr.Dataset:
     """Write a cache entry atomically, with its key and data checksum.
 
     Parameters
@@ -242,6 +242,11 @@ def write_cache_entry(ds: xr.Dataset, path: str | os.PathLike[str], key: str, *,
         zlib took 1.38 s of CPU to write and 0.28 s to read for a file 17 % smaller (44.6
         against 53.8 MB), uncompressed 0.04 s each way (issue 75, docs/performance.md).
         Either is read alike (the checksum covers the values, not their encoding).
+    checksum : str, optional
+        :func:`data_checksum` of ``ds`` where it is known already: the entry's stored
+        one, of an entry this process wrote or read and checked, written again under
+        another key (:func:`contact.compliance.fe.reuse.reuse_near_model`: ~0.02 s of CPU
+        per 26 MB entry not hashed again, issue 75). Default None: computed here.
 
     Returns
     -------
@@ -265,7 +270,8 @@ def write_cache_entry(ds: xr.Dataset, path: str | os.PathLike[str], key: str, *,
     if bad is not None:
         raise LTCAError(f"FE influence coefficients: '{bad}' holds non-finite values; "
                         f"not cached in {path}")
-    out = ds.assign_attrs({"cache_key": key, CHECKSUM_ATTR: data_checksum(ds)})
+    out = ds.assign_attrs({"cache_key": key,
+                           CHECKSUM_ATTR: checksum if checksum else data_checksum(ds)})
     path.parent.mkdir(parents=True, exist_ok=True)
     enc = {name: {"zlib": True, "complevel": 4} if compress else {}
            for name in out.data_vars}

@@ -53,6 +53,7 @@ import numpy as np
 import xarray as xr
 
 from contact.compliance.fe.cache import (
+    CHECKSUM_ATTR,
     cache_key,
     cache_path,
     read_cache_entry,
@@ -219,7 +220,9 @@ def reuse_near_model(case, earlier, member: str, options: FEOptions | None = Non
             continue
         out = ds.assign_attrs(reused_from=old_keys[f],
                               reuse_point_deviation_mm=round(deviation, 6))
-        out = write_cache_entry(out, path, key)
+        # the data as they were checked (written or read by this process): their stored
+        # checksum, not computed again
+        out = write_cache_entry(out, path, key, checksum=ds.attrs.get(CHECKSUM_ATTR))
         if written is not None:
             written(path, key, out)
     log.info("FE %s: the earlier design's coefficients kept (point deviation %.4f mm <= "
