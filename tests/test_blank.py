@@ -439,8 +439,14 @@ def test_negative_offset_names_the_convention():
 
 
 def test_unknown_field_is_rejected():
-    with pytest.raises(InputError, match="unknown design field"):
+    """The unknown field named first, then the accepted ones, as every other table's
+    unknown field reads (the basic file's ``design.`` before it: "design.shaft_angle:
+    unknown field; accepted: Sigma, a, …"; before, "design.unknown design field(s)
+    ['shaft_angle']: accepted [...]")."""
+    with pytest.raises(InputError, match=r"^shaft_angle: unknown field; accepted: Sigma, a, "):
         design_from_annex("sample2", shaft_angle=90.0)
+    with pytest.raises(InputError, match=r"^foo, shaft_angle: unknown fields; accepted: "):
+        design_from_annex("sample2", shaft_angle=90.0, foo=1.0)
 
 
 def test_cutter_radius_below_every_limit_radius_is_rejected():

@@ -908,6 +908,7 @@ def _run_synthesize(args: argparse.Namespace) -> int:
         with_design_torque,
     )
     from contact.load_capacity.iso10300.inputs import RatingInputs
+    from contact.optimize.development_written import COAST_CAPACITY_WHY, written_case
     from geometry.case import case_from_dict
     from geometry.core.heap import keep_heap_pages
     from geometry.machine.relief import ReliefError
@@ -958,18 +959,14 @@ def _run_synthesize(args: argparse.Namespace) -> int:
                           f"{1e3 * exc.least:.3g} um from its tangent over the relief)")
             basic = adjusted
     basic = written_basic  # the basic data written: the remedied where one was applied
-    case, torque, torque_why = with_design_torque(case, basic.options.design_torque)
-    if development is not None:
-        case = development.recorded(case)
-        if development.torque_lowered:  # the developed bearing's own capacity
-            torque, torque_why = development.torque[1], development.torque_source
-    case, coast_torque = with_coast_design_torque(case)
-    coast_why = ("the ISO 10300 capacity of the coast side (above it the coast side is rated "
-                 "at a finite life)")
-    if development is not None:  # no higher than what the coast flank's bearing carries
-        case, coast_capacity = development.with_coast_capacity(case)
-        if math.isfinite(coast_capacity):
-            coast_torque, coast_why = coast_capacity, development.coast_capacity_text
+    if development is not None:  # the one sequence the Python API calls too
+        written = written_case(development, basic.options.design_torque)
+        case, torque, torque_why = written.case, written.torque, written.torque_why
+        coast_torque, coast_why = written.coast_torque, written.coast_why
+    else:
+        case, torque, torque_why = with_design_torque(case, basic.options.design_torque)
+        case, coast_torque = with_coast_design_torque(case)
+        coast_why = COAST_CAPACITY_WHY
     # a case no analysis accepts is not written: its drive flank's unloaded contact
     # computed as `ltca run` computes it first (the 12x12 miter with a 5-in cutter of
     # round 17 was written and then refused); the coast flank's noted

@@ -211,6 +211,7 @@ from contact.optimize.development_targets import (
     targets_from_table,
     working_depth_centre,
 )
+from contact.optimize.development_written import with_synthesis_fe_level
 from contact.optimize.development_written_drive import written_drive_check
 from geometry.case import Case
 from geometry.core.blas import blas_threads
@@ -263,7 +264,9 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     ----------
     basic : BasicDesign
         The design (its drive flank's ``[synthesis]`` prescriptions are the start where a
-        variable's bound allows, else the middle of the bound).
+        variable's bound allows, else the middle of the bound). Its root stress is checked
+        on its ``[root_stress] fe_level``, else on the level ``ltca synthesize`` uses
+        (:func:`~contact.optimize.development_written.with_synthesis_fe_level`).
     targets : DevelopmentTargets, optional
         Default: the basic file's ``[development]`` table (:func:`targets_from_table`), its
         µm amounts following the design's size (``size_scale``,
@@ -309,7 +312,9 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
         The developed basic design and its synthesised case, the chosen design and every
         design analysed, the light and design torque, the chosen design's metrics at
         the mounting excursions, and what became of the coast flank (its check, its
-        search's designs, the coast design written).
+        search's designs, the coast design written). Its
+        :meth:`~contact.optimize.development_result.DevelopmentResult.written_case` is
+        the case ``ltca synthesize`` writes (the design torques in its ``[rating]``).
 
     Raises
     ------
@@ -392,6 +397,9 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     from geometry.machine.relief import ReliefError
     from geometry.synthesis.case_synthesis import synthesize, tried_text
 
+    # the FE level of the root-stress checks ``ltca synthesize`` uses where the basic
+    # design names none, so that the API and the command develop the same design
+    basic = with_synthesis_fe_level(basic)
     if apply_remedy or gear_fallback:
         return _wrapped(basic, apply_remedy, targets=targets, progress=progress,
                         synthesis_progress=synthesis_progress, root_stress=root_stress,

@@ -369,6 +369,25 @@ class DevelopmentResult:
         t = self.coast_torques or self.torque
         return float(min(t)), float(max(t))
 
+    def written_case(self, design_torque: float | None = None) -> Case:
+        """The case ``ltca synthesize`` writes of this development: :attr:`case` with its
+        rating's design torques, the ``[development]`` table and the operating torques
+        (:func:`contact.optimize.development_written.written_case`, which says how).
+
+        Parameters
+        ----------
+        design_torque : float — [N·m], optional
+            The basic file's ``[synthesis] design_torque``; default that of :attr:`basic`.
+
+        Returns
+        -------
+        geometry.case.Case
+            What ``case.to_toml()`` writes and ``ltca run`` of that file reads.
+        """
+        from contact.optimize.development_written import written_case
+
+        return written_case(self, design_torque).case
+
     def with_coast_capacity(self, case: Case) -> tuple[Case, float]:
         """``case`` with ``[rating] coast_design_torque`` lowered to
         :attr:`coast_capacity` where that is below the coast side's design torque (its

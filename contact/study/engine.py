@@ -266,6 +266,14 @@ def _workers_ignore_sigint() -> Iterator[None]:
         signal.signal(signal.SIGINT, previous)
 
 
+#: Why a local cluster's workers did not start, and the two ways to run the study.
+NOT_STARTED = ("scheduler: the local cluster's worker processes failed to start ({exc}); a "
+               "script that runs a study (run_duty_cycle, sweep, sample, …) must call it "
+               "under `if __name__ == \"__main__\":` (Python's rule for the worker "
+               "processes it spawns, which import the script again), or pass "
+               "StudyRun(scheduler=\"synchronous\") to run it in this process")
+
+
 @contextlib.contextmanager
 def open_client(scheduler: Any = None, n_workers: int | None = None) -> Iterator[Any]:
     """A ``distributed.Client`` for a study's ``scheduler`` argument.
@@ -288,8 +296,9 @@ def open_client(scheduler: Any = None, n_workers: int | None = None) -> Iterator
     Raises
     ------
     InputError
-        Bad ``n_workers``, or a scheduler address that cannot be reached (the message
-        names it).
+        Bad ``n_workers``, a scheduler address that cannot be reached (the message
+        names it), or a local cluster whose workers did not start (:data:`NOT_STARTED`:
+        a script calling a study outside ``if __name__ == "__main__":``).
     """
     if scheduler == SYNCHRONOUS:
         yield None
@@ -306,9 +315,15 @@ def open_client(scheduler: Any = None, n_workers: int | None = None) -> Iterator
         with _workers_ignore_sigint(), worker_environment():
             # no dashboard, and the scheduler's HTTP server (health, metrics) on a free
             # port: not 8787, which another cluster on the machine may hold (a warning)
-            cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                                   dashboard_address=None, silence_logs=logging.ERROR,
-                                   scheduler_kwargs={"dashboard_address": ":0"})
+            try:
+                cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
+                                       dashboard_address=None, silence_logs=logging.ERROR,
+                                       scheduler_kwargs={"dashboard_address": ":0"})
+            except RuntimeError as exc:
+                # most often a script calling a study at its top level: each spawned
+                # worker imports the script again and starts a cluster of its own, which
+                # Python refuses ("Nanny failed to start."; round 21 of issue 71)
+                raise InputError(NOT_STARTED.format(exc=exc)) from exc
         quiet = _QuietDistributed()
         with quiet:
             client = Client(cluster)

@@ -60,8 +60,10 @@ with tempfile.TemporaryDirectory() as tmp:
 # carries the full torque in reverse gear: checked at the same torques, and developed the
 # same way on its own prescriptions where it misses a target.
 developed = contact.develop(basic)
-case = developed.case
-light, design = developed.torque
+# the case `ltca synthesize` writes (its design torques in [rating], the light and design
+# torque as its operating torques): `developed.case` is the synthesised case before them
+case = developed.written_case()
+light, design = case.operating.torque
 print(developed.headline())
 print(f"light load {light:.0f} N·m, design torque {design:.0f} N·m ({developed.torque_source})")
 
@@ -73,7 +75,7 @@ print(f"light load {light:.0f} N·m, design torque {design:.0f} N·m ({developed
 # interface), and the verdict: PASS or ATTENTION with its reasons for a development that
 # met its targets.
 steps = contact.AnalysisChain.analysis().without("geometry", "mesh_interface")
-tree = contact.run_analysis(case, [light, design], steps=steps)
+tree = contact.run_analysis(case, None, steps=steps)  # its operating torques, as `ltca run`
 ltca = tree["ltca"].to_dataset()
 for t, p2p, edge in zip(ltca["torque"].values, ltca["lte_peak_to_peak"].values,
                         ltca["pressure_max_edge"].values, strict=True):

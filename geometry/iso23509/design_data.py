@@ -356,7 +356,12 @@ class BevelGearDesign:
         names = {f.name for f in fields(cls)}
         unknown = sorted(set(values) - names)
         if unknown:
-            raise InputError(f"unknown design field(s) {unknown}: accepted {sorted(names)}")
+            # "<field>: unknown field; accepted: …", the caller's "design." before it, as
+            # every other table's unknown field reads (design.beta_mm, not "design.unknown
+            # design field(s) ['beta_mm']")
+            raise InputError(f"{', '.join(unknown)}: unknown field"
+                             f"{'s' if len(unknown) > 1 else ''}; accepted: "
+                             f"{', '.join(sorted(names))}")
         converted: dict[str, Any] = dict(values)
         for name in _ANGLE_INPUTS & set(values):
             converted[name] = real(name, values[name], unit="deg") * _DEG
