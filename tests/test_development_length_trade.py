@@ -8,6 +8,7 @@ import math
 from types import SimpleNamespace
 
 import pytest
+from development_stand_ins import checked, metrics
 
 from contact.commands.synthesize import FACE_CONTACT_RATIO_NOTE, _length_trade
 from contact.load_capacity.iso10300.face_contact import FACE_CONTACT_RATIO_MIN
@@ -19,7 +20,6 @@ from contact.optimize.development_length_trade import (
     traded_length,
 )
 from geometry.core.errors import InputError
-from tests.development_stand_ins import checked, metrics
 
 #: the measured least light-load pattern length [1] at which the LTE p-p kept 40 µrad at
 #: the light and design torque and 60 µrad between them, with each design's ε_vβ

@@ -21,7 +21,6 @@ import numpy as np
 import pytest
 from development_stand_ins import metrics
 
-import contact
 from contact.catalogue import DEFAULT_CASE
 from contact.optimize.development_evaluate import CHECK_LTCA, analyse_design, ltca_metrics
 from contact.optimize.development_result import DevelopmentEvaluation
@@ -38,7 +37,7 @@ KINDS = ("pinion_edge", "gear_tip", "gear_heel", "gear_toe")
 
 
 def _default():
-    return load_case(Path(contact.__file__).parents[1] / "cases" / DEFAULT_CASE)
+    return load_case(Path(__file__).resolve().parents[1] / "cases" / DEFAULT_CASE)
 
 
 def _coast_relieved(case):
@@ -173,7 +172,7 @@ def test_the_10x41_records_what_ltca_run_reads():
     from contact.pipeline import run_analysis
     from geometry.synthesis.basic_design import load_basic
 
-    path = (Path(contact.__file__).parents[1] / "benchmarks" / "data" / "unseen_designs"
+    path = (Path(__file__).resolve().parents[1] / "benchmarks" / "data" / "unseen_designs"
             / "hypoid_10x41_a32_rc6.toml")
     basic = dataclasses.replace(load_basic(path), root_stress={"fe_level": "coarse10"})
     dev = develop(basic, targets=targets_from_table(basic.development,
