@@ -280,8 +280,13 @@ def test_user_design_synthesised_developed_run_and_rated(basic, tmp_path, capsys
 #: the 15x31's beta_m 40 -> 46.3 deg is kept (ε_vα 0.98), drive LTE 41.6 / 57.8 urad at
 #: 77.2 / 514.8 N m and 49.0 / 56.3 urad between them (ATTENTION 3); the 15x28's beta_m
 #: 43.9 deg developed to 40.8 / 71.7 urad and was not kept (b2 written as before)
-REMEDIED = {"spiral_bevel_15x28_s110": ("b2", 28.0, 36.5, 62.4),
-            "hypoid_15x31_a10": ("beta_m", 40.0, 46.3, 56.3)}
+# The remedy each design keeps and the largest drive LTE p-p its synthesize measured over
+# ltca run's torques (the bound between them). Measured 2026-11-27 at 5e12882: the
+# hypoid's beta_m remedy now misses the pattern length the development keeps (len81), so
+# its face width is kept; the spiral bevel's beta_m remedy keeps 60.9 urad between the
+# torques against the face width's 62.5, with no target lost, so it is kept.
+REMEDIED = {"spiral_bevel_15x28_s110": ("beta_m", 35.0, 43.9, 60.9),
+            "hypoid_15x31_a10": ("b2", 27.0, 32.6, 63.3)}
 
 
 @pytest.mark.slow
