@@ -184,3 +184,30 @@ def test_vh_check_default_torque_is_the_commands():
         case.operating, torque=(7.0, 46.9)))
     assert default_vh_torque(light) == 7.0
     assert inspect.signature(contact.vh_check).parameters["torque"].default is None
+
+
+def test_rate_load_capacity_default_method_is_the_cases(tmp_path, monkeypatch, capsys):
+    """``contact.rate_load_capacity(case)`` rates by the case's ``[rating] method`` as
+    ``ltca rate CASE`` does (before: ISO 10300 whatever the case named). On the AGMA 2003
+    Annex E case with ``method = "agma2003"`` written into its ``[rating]`` table, the API's
+    default, the API with the method named and the command's file hold the same /rating
+    (identical: the same computation)."""
+    from contact.cli import main
+
+    case = contact.resolve_case("agma2003_d19_annex_e")
+    named = dataclasses.replace(case, extra={
+        **case.extra, "rating": {**case.extra["rating"], "method": "agma2003"}})
+    path = tmp_path / "agma_named.toml"
+    path.write_text(named.to_toml(), encoding="utf-8")
+    api = contact.rate_load_capacity(path)
+    assert api.attrs["rating_method"] == "agma2003"
+    xr.testing.assert_identical(api, contact.rate_load_capacity(path, method="agma2003"))
+    monkeypatch.chdir(tmp_path)
+    assert main(["rate", str(path), "-o", str(tmp_path / "rate.nc")]) == 0
+    capsys.readouterr()
+    cli = contact.read_netcdf(tmp_path / "rate.nc")["rating"].to_dataset()
+    for name in api.data_vars:
+        np.testing.assert_array_equal(np.asarray(cli[name].values),
+                                      np.asarray(api[name].values), err_msg=name)
+    # a case naming none: ISO 10300, as before
+    assert contact.rate_load_capacity(case).attrs["rating_method"] == "iso10300"
