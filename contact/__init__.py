@@ -68,6 +68,7 @@ __all__ = [
     "contact_residuals",
     "develop",
     "ease_off",
+    "example_duty_cycle",
     "export_rexs",
     "fe_compliance_matrix",
     "fillet_stress",
@@ -127,8 +128,9 @@ _LAZY = {
                      "influence_coefficients"), "contact.compliance.fe"),
     **dict.fromkeys(("shell_assembler", "unregister_compliance_model"),
                     "contact.ltca.compliance_models"),
-    **dict.fromkeys(("DutyCycle", "StudyRun", "read_duty_cycle", "run_duty_cycle", "sample",
-                     "sensitivity", "sweep", "vh_check"), "contact.study"),
+    **dict.fromkeys(("DutyCycle", "StudyRun", "example_duty_cycle", "read_duty_cycle",
+                     "run_duty_cycle", "sample", "sensitivity", "sweep", "vh_check"),
+                    "contact.study"),
     "verdict": "contact.study.verdicts",
     # (the optimiser itself is contact.optimize.optimize: a name ``optimize`` here would
     # hide the subpackage)

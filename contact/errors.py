@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from geometry.core.errors import InputError, LTCAError, ModelUnavailableError, PluginError
+from geometry.core.errors import InputError, LTCAError, PluginError, UnknownNameError
 
 __all__ = [
     "ASYMMETRY_LIMIT",
@@ -39,8 +39,10 @@ class NotPositiveDefiniteError(ProblemInputError):
     """
 
 
-class SolverNotFoundError(ContactError, ModelUnavailableError):
-    """A solver name that is not registered or not installed here."""
+class SolverNotFoundError(ContactError, UnknownNameError):
+    """A solver name that is not registered or not installed here (an
+    :class:`~geometry.core.errors.UnknownNameError`: an InputError naming ``solver`` and
+    the available solvers, and a ModelUnavailableError)."""
 
 
 #: Largest relative asymmetry ‖C − Cᵀ‖_F / ‖C‖_F of a compliance matrix that is

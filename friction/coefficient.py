@@ -56,7 +56,12 @@ from friction.mixed_ehl import mixed_ehl, mixed_ehl_validity
 from friction.thermal_eyring import thermal_eyring
 from friction.validity import FrictionModelRangeWarning
 from geometry.core.caches import memoised
-from geometry.core.errors import InputError, LTCAError, ModelUnavailableError, PluginError
+from geometry.core.errors import (
+    InputError,
+    LTCAError,
+    PluginError,
+    UnknownNameError,
+)
 from geometry.core.registries import (
     callable_name,
     check_model_name,
@@ -912,9 +917,9 @@ def get_friction_model(name: FrictionModelLike) -> FrictionModel:
 
     Raises
     ------
-    ModelUnavailableError
+    geometry.core.errors.UnknownNameError
         ``name`` is unavailable (the message quotes the reason) or unknown (the message
-        lists the available names).
+        lists the available names): an InputError and a ModelUnavailableError.
     InputError
         A model function that fails the checks of :func:`as_friction_model`.
 
@@ -930,14 +935,14 @@ def get_friction_model(name: FrictionModelLike) -> FrictionModel:
         if name in registry:
             return registry[name]
     if name in UNAVAILABLE_MODELS:
-        raise ModelUnavailableError(
+        raise UnknownNameError(
             f"friction model {name!r} is unavailable: {UNAVAILABLE_MODELS[name]}"
             f" (available: {available_friction_models()})"
         )
     plugins = _plugins()
     if name in plugins:
         return plugins[name]
-    raise ModelUnavailableError(
+    raise UnknownNameError(
         f"unknown friction model {name!r}; available: {available_friction_models()};"
         f" known but unavailable: {tuple(sorted(UNAVAILABLE_MODELS))}"
     )

@@ -29,7 +29,7 @@ from friction.defaults import DEFAULT_FRICTION_MODEL
 from friction.lubricant import available_lubricants
 from geometry.case import OPERATING_DEFAULTS, OperatingPoint
 from geometry.core.bounds import check_bound
-from geometry.core.errors import InputError, ModelUnavailableError
+from geometry.core.errors import InputError, ModelUnavailableError, UnknownNameError
 
 __all__ = ["RUNNING_IN_FACTORS", "SURFACE_STATES", "OperatingConditions"]
 
@@ -157,7 +157,7 @@ class OperatingConditions:
         try:
             resolved = get_friction_model(model)
         except ModelUnavailableError as exc:  # the message lists the available models
-            raise ModelUnavailableError(f"friction_model: {exc}") from None
+            raise UnknownNameError(f"friction_model: {exc}") from None
         except InputError as exc:  # a function failing the registry's checks
             raise InputError(f"friction_model: {exc}") from None
         if not isinstance(model, str):

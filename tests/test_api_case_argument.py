@@ -30,6 +30,7 @@ RESOLVING = {
     "export_rexs": lambda c: contact.export_rexs(c, Path("never_written.rexs")),
     "run_duty_cycle": lambda c: contact.run_duty_cycle(
         c, contact.DutyCycle(torque=[1.0], pinion_speed=[1.0], revolutions=[1.0])),
+    "example_duty_cycle": lambda c: contact.example_duty_cycle(case=c),
 }
 
 #: public callables that take a loaded Case only, and why (they live in contact's layers

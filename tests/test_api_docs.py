@@ -66,6 +66,7 @@ TOOLS = {
     "contact.run_analysis", "contact.AnalysisChain", "contact.ChainState",
     "contact.available_steps", "contact.sweep", "contact.sample", "contact.StudyRun",
     "contact.verdict", "contact.DutyCycle", "contact.read_duty_cycle",
+    "contact.example_duty_cycle",
     "contact.DevelopmentTargets", "contact.OptimizeProblem",
     "geometry.corrected_case",
     # options, results, constants and errors

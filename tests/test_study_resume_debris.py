@@ -227,7 +227,7 @@ def test_duty_cycle_resumes_past_a_nan_chunk(tmp_path, monkeypatch, caplog):
     out = tmp_path / "d.nc"
     run = StudyRun(options=LTCAOptions(rolls_per_cycle=8, segments=8),
                    scheduler="synchronous", output=out)
-    first = run_duty_cycle(case, duty, run)
+    first = run_duty_cycle(case, duty, run, root_stress=False)
     chunk = ResultStore.parts_dir(out) / "chunk-0000000-00001.nc"
     ds = read_netcdf(chunk, tree=False)
     assert int(ds["status"].values[0]) == 0
@@ -245,7 +245,7 @@ def test_duty_cycle_resumes_past_a_nan_chunk(tmp_path, monkeypatch, caplog):
 
     monkeypatch.setattr(duty_module, "analyse_bin", counting)
     caplog.clear()
-    again = run_duty_cycle(case, duty, run)
+    again = run_duty_cycle(case, duty, run, root_stress=False)
     assert calls == [0]
     assert again.attrs["bins_resumed"] == 0
     msg = _assert_one_plain_warning(caplog, "chunk-0000000-00001.nc")

@@ -483,7 +483,7 @@ def test_a_real_duty_cycle_flags_its_bins_and_says_its_safety():
     from contact.study import StudyRun, example_duty_cycle, run_duty_cycle
 
     ds = run_duty_cycle(resolve_case(None), example_duty_cycle(bins=2),
-                        StudyRun(options=OPTS, scheduler="synchronous"))
+                        StudyRun(options=OPTS, scheduler="synchronous"), root_stress=False)
     assert ds["plausibility"].dims == ("bin",)
     assert ds["plausibility"].attrs["flag_meanings"].split()[0] == "plastic_contact"
     assert ds["plausibility"].values.tolist() == [0, 0]  # 50 and 100 N·m: plausible

@@ -175,11 +175,8 @@ def run(args: argparse.Namespace) -> int:
         duty = read_duty_cycle(args.duty)
     elif "duty_cycle" in case.extra:
         duty = read_duty_cycle(case)
-    else:  # to the flank's own top torque (the coast side's design torque: flank_torques)
-        from contact.pipeline import flank_torques
-
-        duty = example_duty_cycle(max_torque=max(flank_torques(case, args.flank)[0]
-                                                 or (500.0,)))
+    else:  # to the flank's own top torque (the coast side's design torque), as the API's
+        duty = example_duty_cycle(case=case, flank=args.flank)
     # what will run, before it starts (issue 56): the bins' torques, speeds and hours
     from contact.commands.run import print_wrapped
 

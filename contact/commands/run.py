@@ -624,12 +624,12 @@ def rating_steps(method: str | None) -> dict | None:
     if method is None:
         return None
     from contact.load_capacity.methods import METHODS
-    from geometry.core.errors import ModelUnavailableError
+    from geometry.core.errors import ModelUnavailableError, UnknownNameError
 
     try:
         return {"load_capacity": METHODS.entry(method).name}
     except ModelUnavailableError as exc:
-        raise ModelUnavailableError(f"--rating-method: {exc}") from None
+        raise UnknownNameError(f"--rating-method: {exc}") from None
 
 
 def rating_lines(tree, why: str = "", case_arg: str | None = None) -> list[str]:

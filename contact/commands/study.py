@@ -442,7 +442,7 @@ def vh_check_command(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
     from contact.study import vh_check
-    from contact.study.vh_check import VH_DEFAULT_GRID, VH_DEFAULT_LIMITS, VH_DEFAULT_TORQUE
+    from contact.study.vh_check import VH_DEFAULT_GRID, VH_DEFAULT_LIMITS, default_vh_torque
 
     case, run = _prepare(args)
     kw = {}
@@ -450,8 +450,7 @@ def vh_check_command(args: argparse.Namespace) -> int:
         kw["delta_E"] = parse_range("--dE", args.dE)
     if args.dP is not None:
         kw["delta_P"] = parse_range("--dP", args.dP)
-    torque = args.torque or (case.operating.torque[0] if case.operating.torque
-                             else VH_DEFAULT_TORQUE)
+    torque = args.torque or default_vh_torque(case)  # as contact.vh_check takes it
     nv = len(kw.get("delta_E", VH_DEFAULT_GRID[0]))
     nh = len(kw.get("delta_P", VH_DEFAULT_GRID[1]))
     print(f"V-H check of {case.name} at {plain_number(torque)} N m about its mounting dE "

@@ -34,8 +34,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import xarray as xr
 
-from geometry.core.errors import InputError, ModelUnavailableError, PluginError
-from geometry.core.registries import Registry
+from geometry.core.errors import InputError, ModelUnavailableError, PluginError, UnknownNameError
+from geometry.core.registries import Registry, callable_name
 from geometry.core.renamed import renamed_keywords
 
 if TYPE_CHECKING:
@@ -204,6 +204,7 @@ def _entry(name: str, function: Callable[..., xr.Dataset], *, title: str, source
                           f"underscores starting with a letter, got {name!r}")
     if not callable(function):
         raise PluginError(f"function: must be callable, got {function!r}")
+    _check_signature(name, function)
     if not (isinstance(title, str) and title.strip() and isinstance(source, str)
             and source.strip()):
         raise PluginError("title, source: a method states what it is and what it is "
@@ -223,6 +224,30 @@ def _entry(name: str, function: Callable[..., xr.Dataset], *, title: str, source
                           f"{name!r}; available: {', '.join(COMPANIONS)}")
     return RatingMethod(name, function, title, source, tables, missing, bool(nominal),
                         standard or title, worked_example or source, companions)
+
+
+#: the keywords :func:`rate` passes a method besides the caller's options
+CALL_KEYWORDS = ("flank", "datasets")
+
+
+def _check_signature(name: str, function: Callable[..., Any]) -> None:
+    """Refuse a method function :func:`rate` cannot call: it takes ``(case, torque, speed)``
+    by position and ``flank``, ``datasets`` by keyword (:attr:`RatingMethod.function`),
+    checked when it is registered rather than deep in the first rating (issue 71, branch
+    api82: ``lambda: …`` was registered and failed at its first use). A callable whose
+    signature cannot be read (a builtin) is let through: its first call says it."""
+    import inspect
+
+    try:
+        signature = inspect.signature(function)
+    except (TypeError, ValueError):
+        return
+    try:
+        signature.bind(None, None, None, **dict.fromkeys(CALL_KEYWORDS))
+    except TypeError as exc:
+        raise PluginError(f"function: {callable_name(function)}{signature} of method "
+                          f"{name!r} cannot be called as function(case, torque, speed, *, "
+                          f"flank=None, datasets=None, **options) ({exc})") from None
 
 
 def register_method(name: str, function: Callable[..., xr.Dataset], *, title: str,
@@ -270,8 +295,10 @@ def register_method(name: str, function: Callable[..., xr.Dataset], *, title: st
     Raises
     ------
     PluginError
-        A bad name, a function that is not callable, empty title or source, an unknown
-        companion, or a name already registered without ``replace``.
+        A bad name, a function that is not callable or of another signature than
+        ``function(case, torque, speed, *, flank=None, datasets=None, **options)``, empty
+        title or source, an unknown companion, or a name already registered without
+        ``replace`` (an InputError naming the field).
     """
     return METHODS.register(_entry(name, function, title=title, source=source,
                                    tables=tables, missing=missing, nominal=nominal,
@@ -301,7 +328,7 @@ def _method(name: str) -> RatingMethod:
     try:
         return METHODS.entry(name)
     except ModelUnavailableError as exc:
-        raise ModelUnavailableError(f"method: {exc}") from None
+        raise UnknownNameError(f"method: {exc}") from None
 
 
 def case_method(case: Any) -> str | None:
@@ -329,12 +356,12 @@ def case_method(case: Any) -> str | None:
     try:
         return METHODS.entry(name).name
     except ModelUnavailableError as exc:
-        raise ModelUnavailableError(f"rating.method: {exc}") from None
+        raise UnknownNameError(f"rating.method: {exc}") from None
 
 
 @renamed_keywords(speed="pinion_speed")
 def rate(case: Case | str | os.PathLike[str] | None, torque: Any = None,
-         pinion_speed: float | None = None, *, method: str = DEFAULT_METHOD,
+         pinion_speed: float | None = None, *, method: str | None = None,
          flank: str | None = None,
          analysis: xr.DataTree | Mapping[str, xr.Dataset] | None = None,
          **options: Any) -> xr.Dataset:
@@ -354,8 +381,11 @@ def rate(case: Case | str | os.PathLike[str] | None, torque: Any = None,
         efficiency stage's
         (``/friction`` attribute ``pinion_speed_rpm``), else the case's ``[operating]
         pinion_speed``.
-    method : str
-        A name of :func:`available_methods` (default :data:`DEFAULT_METHOD`).
+    method : str, optional
+        A name of :func:`available_methods`; default the case's ``[rating] method``
+        (:func:`case_method`), else :data:`DEFAULT_METHOD` — as ``ltca rate`` and
+        :func:`contact.run_analysis` choose it (issue 71, branch api82: the API rated
+        by ISO 10300 a case whose file names another method).
     flank : {"concave", "convex", "drive", "coast"}, optional
         The pinion flank the analysis loads; default the case's drive flank.
     analysis : xarray.DataTree or mapping of str to xarray.Dataset, optional
@@ -403,8 +433,8 @@ def rate(case: Case | str | os.PathLike[str] | None, torque: Any = None,
     from contact.catalogue import resolve_case
     from contact.load_capacity.contract import check_result
 
-    entry = _method(method)
     c = resolve_case(case)
+    entry = _method(case_method(c) or DEFAULT_METHOD if method is None else method)
     datasets = _datasets(analysis)
     if torque is None:
         ltca = datasets.get("/ltca")

@@ -62,7 +62,7 @@ if TYPE_CHECKING:
     from contact.ltca.summary import FlankPeak
 
 __all__ = ["BIN_VARIABLES", "DutyInputs", "analyse_bin", "bin_envelopes", "bin_table",
-           "duty_cycle_result", "judged_edge_peak", "run_duty_cycle"]
+           "duty_cycle_result", "duty_root_stress", "judged_edge_peak", "run_duty_cycle"]
 
 log = logging.getLogger(__name__)
 
@@ -710,7 +710,7 @@ def duty_cycle_result(shared: DutyInputs, ds: xr.Dataset) -> xr.Dataset:
 
 
 def run_duty_cycle(case: Case | str | os.PathLike[str] | None, duty: DutyCycle,
-                   run: StudyRun | None = None, *, root_stress: Any = False) -> xr.Dataset:
+                   run: StudyRun | None = None, *, root_stress: Any = None) -> xr.Dataset:
     """Analyse every bin of a duty cycle and its damage, life and cycle efficiency.
 
     Parameters
@@ -726,11 +726,15 @@ def run_duty_cycle(case: Case | str | os.PathLike[str] | None, duty: DutyCycle,
         of the parts that is not this cycle's is set aside and its bin analysed again),
         scheduler and workers. ``operating`` is not used (each bin sets its own speed and
         temperature; the case's lubricant, roughness, friction model).
-    root_stress : bool or contact.compliance.fe.FEOptions
+    root_stress : bool or contact.compliance.fe.FEOptions, optional
         Also the tooth-root stress of each bin (FE influence coefficients of the
         generated teeth, built once per design and cached; docs/fe.md) and with it the
-        bending side: root damage, life and safety factor per member. True: the default
-        FE model; FEOptions: that one. Default False.
+        bending side: root damage, life and safety factor per member. True: the case's
+        FE model (its ``[root_stress] fe_level``, else the default one); FEOptions: that
+        one; False: none (the bending side "unavailable", its checks not made). Default
+        (None) ``run.root_stress`` where it is set (True or FEOptions), else True — as
+        ``ltca duty-cycle`` (``--root-stress`` on by default), so a script and the
+        command get the same bins and verdict.
 
     Returns
     -------
@@ -755,7 +759,9 @@ def run_duty_cycle(case: Case | str | os.PathLike[str] | None, duty: DutyCycle,
     InputError
         A bin outside the deflection table (named), an unknown grade, parts of another
         run at ``OUTPUT.parts``, bins missing from the parts after the run (a chunk set
-        aside meanwhile: the run started again analyses them).
+        aside meanwhile: the run started again analyses them); ``root_stress`` not True,
+        False, None or FEOptions, or other than a ``run.root_stress`` that is set (both
+        named).
 
     Notes
     -----
@@ -769,12 +775,7 @@ def run_duty_cycle(case: Case | str | os.PathLike[str] | None, duty: DutyCycle,
     run = run or StudyRun()
     for m in ("pinion", "gear"):  # an unknown grade or material fails before any bin runs
         sn_curves(case.member(m).material, duty.grade)
-    if not isinstance(root_stress, bool):
-        from contact.compliance.fe import FEOptions
-
-        if not isinstance(root_stress, FEOptions):
-            raise InputError("root_stress: must be True, False or a "
-                             f"contact.compliance.fe.FEOptions, got {root_stress!r}")
+    root_stress = duty_root_stress(root_stress, run.root_stress)
     coefficients: tuple = ()
     fe_failed = ""
     if root_stress is not False:  # built once here, handed to every worker (primed caches)
@@ -799,6 +800,49 @@ def run_duty_cycle(case: Case | str | os.PathLike[str] | None, duty: DutyCycle,
         out.attrs["bending"] = (f"unavailable: {fe_failed}; no bending damage or life is "
                                 "reported")
     return out
+
+
+def duty_root_stress(root_stress: Any, run_root_stress: Any = False) -> Any:
+    """The root stress a duty cycle runs with: :func:`run_duty_cycle`'s ``root_stress``
+    as given, else the StudyRun's where it is set, else True (``ltca duty-cycle``'s
+    default, ``--root-stress``).
+
+    Parameters
+    ----------
+    root_stress : None, bool or contact.compliance.fe.FEOptions
+        The call's keyword (None: not given).
+    run_root_stress : bool or contact.compliance.fe.FEOptions
+        The call's ``StudyRun.root_stress`` (its default False: not set).
+
+    Returns
+    -------
+    bool or contact.compliance.fe.FEOptions
+
+    Raises
+    ------
+    InputError
+        ``root_stress`` of another type (``root_stress: …``), or given beside a
+        ``run.root_stress`` that is set and differs (both named).
+
+    Notes
+    -----
+    Why (issue 71, branch api82): the keyword defaulted to False where the command's
+    option is on, so a script following docs/duty_cycle.md ran the bins without the
+    bending side and its verdict had no ``bending`` check where the command's had one;
+    and ``StudyRun.root_stress``, which the sweeps read, was ignored here.
+    """
+    if root_stress is not None and not isinstance(root_stress, bool):
+        from contact.compliance.fe import FEOptions
+
+        if not isinstance(root_stress, FEOptions):
+            raise InputError("root_stress: must be None, True, False or a "
+                             f"contact.compliance.fe.FEOptions, got {root_stress!r}")
+    if run_root_stress is False:
+        return True if root_stress is None else root_stress
+    if root_stress is not None and root_stress != run_root_stress:
+        raise InputError(f"root_stress, run.root_stress: two different root stresses "
+                         f"({root_stress!r} and {run_root_stress!r}); give one of them")
+    return run_root_stress
 
 
 def judged_edge_peak(ltca: xr.Dataset) -> float:

@@ -27,7 +27,7 @@ Public names
 DeflectionTable   ΔE, ΔP, ΔG [mm], ΔΣ [deg] against pinion torque, PCHIP
 DutyCycle         the bins and the durability settings
 read_duty_cycle   a DutyCycle from a mapping, a TOML file, or a case's [duty_cycle]
-example_duty_cycle  the bundled illustrative axle-style spectrum of a maximum torque
+example_duty_cycle  the bundled illustrative axle-style spectrum (ltca duty-cycle's default)
 """
 
 from __future__ import annotations
@@ -38,7 +38,7 @@ import warnings
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from scipy.interpolate import PchipInterpolator
@@ -49,6 +49,9 @@ from geometry.core.errors import InputError
 from geometry.core.renamed import renamed_keywords
 from geometry.core.toml_files import read_toml
 from geometry.pair.assembly import Misalignment
+
+if TYPE_CHECKING:
+    from geometry.case import Case
 
 __all__ = ["DEFLECTION_FIELDS", "DeflectionTable", "DutyCycle", "example_duty_cycle",
            "read_duty_cycle"]
@@ -334,6 +337,9 @@ def read_duty_cycle(source: Mapping[str, Any] | str | os.PathLike[str] | Any) ->
                      illustrative=bool(table.get("illustrative", False)))
 
 
+#: the pinion flanks a duty cycle loads, by role or by name (``ltca duty-cycle --flank``)
+FLANKS = ("drive", "coast", "concave", "convex")
+
 #: the illustrative axle spectrum: (fraction of the maximum torque, fraction of the
 #: maximum speed, share of the hours) of each bin — not from a measured drive cycle: a
 #: made-up shape with the usual look of one (much time at low torque and high speed,
@@ -349,35 +355,70 @@ EXAMPLE_BINS = (
 )
 
 
-def example_duty_cycle(max_torque: float = 500.0, max_speed: float = 3000.0,
-                       hours: float = 2000.0, bins: int | None = None) -> DutyCycle:
-    """The bundled **illustrative** axle-style spectrum (``ltca duty-cycle`` without a file).
+def example_duty_cycle(max_torque: float | None = None, max_speed: float = 3000.0,
+                       hours: float = 2000.0, bins: int | None = None, *,
+                       case: Case | str | os.PathLike[str] | None = None,
+                       flank: str | None = None) -> DutyCycle:
+    """The bundled **illustrative** axle-style spectrum: what ``ltca duty-cycle`` runs for
+    a case without a ``[duty_cycle]`` table and without ``--duty``.
 
     Parameters
     ----------
-    max_torque : float — [N·m]
-        Pinion torque of the top bin (default 500, the default case's top torque).
+    max_torque : float, optional — [N·m]
+        Pinion torque of the top bin. Default the largest of the torques an analysis of
+        ``case``'s ``flank`` runs at (:func:`contact.pipeline.flank_torques`: the case's
+        ``[operating]`` torques, on the coast flank no more than its coast design
+        torque), as ``ltca duty-cycle`` takes it; 500 for the default case's drive flank.
     max_speed : float — [rpm]
-        Pinion speed of the lowest-torque bin.
+        Pinion speed of the lowest-torque bin (default 3000).
     hours : float — [h]
-        The spectrum's duration.
+        The spectrum's duration (default 2000).
     bins : int, optional
         Keep only the first ``bins`` bins (cheap tests), 1–7.
+    case : Case, path, bundled name or None (the default case), keyword-only
+        The gear set whose top torque ``max_torque`` defaults to
+        (:func:`contact.resolve_case`); not read where ``max_torque`` is given.
+    flank : {"drive", "coast", "concave", "convex"}, optional, keyword-only
+        The pinion flank the duty cycle loads (``ltca duty-cycle --flank``; default the
+        drive flank).
 
     Returns
     -------
     DutyCycle
         7 bins from 10 % to 100 % of ``max_torque`` (:data:`EXAMPLE_BINS`: illustrative
-        proportions, not measured), MQ grade, modified Miner, and a deflection table
-        linear in torque from 0 to 1.2 × ``max_torque``: at ``max_torque``
-        ΔE = 0.05, ΔP = −0.03, ΔG = 0.03 mm, ΔΣ = 0.01 deg (illustrative magnitudes of an
-        axle's deflections, signs those that move the pattern towards the heel).
+        proportions, not measured; ``illustrative`` True, which the duty cycle's verdict
+        reports), MQ grade, modified Miner, and a deflection table linear in torque from
+        0 to 1.2 × ``max_torque``: at ``max_torque`` ΔE = 0.05, ΔP = −0.03, ΔG = 0.03 mm,
+        ΔΣ = 0.01 deg (illustrative magnitudes of an axle's deflections, signs those that
+        move the pattern towards the heel).
 
     Raises
     ------
     InputError
-        Non-positive inputs or a bad bin count.
+        Non-positive or non-finite ``max_torque``, ``max_speed`` or ``hours``; a bin
+        count outside 1–7; an unknown case (the resolver's message) or flank.
+
+    Notes
+    -----
+    Source: none measured — the shape (much time at low torque and high speed, little at
+    full torque and low speed) is the usual look of an axle's load spectrum, made up for
+    a first look (docs/duty_cycle.md). The top torque as ``ltca duty-cycle`` takes it
+    (issue 71, branch api82): the API and the command run the same bins.
+
+    Examples
+    --------
+    >>> import contact
+    >>> duty = contact.example_duty_cycle()
+    >>> duty.n_bins, float(duty.torque[-1])
+    (7, 500.0)
     """
+    if flank is not None and flank not in FLANKS:
+        raise InputError(f"flank: must be one of {', '.join(FLANKS)}, got {flank!r}")
+    if max_torque is None:
+        from contact.catalogue import resolve_case
+        from contact.pipeline import flank_torques
+
+        max_torque = max(flank_torques(resolve_case(case), flank)[0] or (500.0,))
     for name, value in (("max_torque", max_torque), ("max_speed", max_speed),
                         ("hours", hours)):
         if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):

@@ -55,7 +55,10 @@ class StudyRun:
         Also the peak tooth-root stress of both members at every point
         (``root_stress_max`` over (point…, torque, member) [MPa]; :func:`contact.run_analysis`'s
         ``root_stress``: True the default FE model — with ``options.compliance == "fe"``
-        that of the compliance —, or an FEOptions). Default False.
+        that of the compliance —, or an FEOptions). Default False (the sweeps' and the
+        sample's; ``ltca sweep`` and ``ltca tolerance`` turn it on).
+        :func:`contact.study.duty_cycle.run_duty_cycle` reads it where set (True or
+        FEOptions); its own default is True, as ``ltca duty-cycle``'s.
     force : bool
         Run points whose misalignment is beyond the plausible range of the pair's blanks
         (flagged in the output's ``plausibility``); default False refuses them before any

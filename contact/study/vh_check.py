@@ -35,7 +35,8 @@ from geometry.case import Case
 from geometry.core.errors import InputError
 from geometry.pair.assembly import Misalignment
 
-__all__ = ["VH_DEFAULT_GRID", "VH_DEFAULT_LIMITS", "VH_DEFAULT_TORQUE", "vh_check"]
+__all__ = ["VH_DEFAULT_GRID", "VH_DEFAULT_LIMITS", "VH_DEFAULT_TORQUE", "default_vh_torque",
+           "vh_check"]
 
 log = logging.getLogger(__name__)
 
@@ -51,6 +52,30 @@ VH_DEFAULT_GRID = (np.linspace(-0.4, 0.4, 9), np.linspace(-0.3, 0.3, 7))
 VH_DEFAULT_TORQUE = 50.0
 
 POSITIONS = ("toe", "nominal", "heel")
+
+
+def default_vh_torque(case: Case) -> float:
+    """The pinion torque [N·m] of a V-H check of ``case`` where none is given: its first
+    ``[operating]`` torque, else :data:`VH_DEFAULT_TORQUE`.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+
+    Returns
+    -------
+    float — [N·m]
+
+    Notes
+    -----
+    The pattern of the check is the light-load pattern (Gleason's V-H check is made under a
+    light test load); the case's first torque is its light load (the seed's Table 3.1
+    50 N·m on the default case, the development's light torque on a synthesised case).
+    ``ltca vh-check`` and :func:`vh_check` both take it (issue 71, branch api82: the API
+    took 50 N·m whatever the case, e.g. seven times the 5×29's light torque of 7 N·m).
+    """
+    torques = tuple(case.operating.torque or ())
+    return float(torques[0]) if torques else VH_DEFAULT_TORQUE
 
 
 def _solve(cu: RegularGridInterpolator, cv: RegularGridInterpolator, target: np.ndarray,
@@ -85,7 +110,7 @@ def _cell_step(grid: np.ndarray, V: np.ndarray, H: np.ndarray, x: np.ndarray) ->
 def vh_check(
     case: Case | str | os.PathLike[str] | None = None,
     *,
-    torque: float = VH_DEFAULT_TORQUE,
+    torque: float | None = None,
     toe: float = VH_DEFAULT_LIMITS[0],
     heel: float = VH_DEFAULT_LIMITS[1],
     profile: float | None = None,
@@ -99,8 +124,11 @@ def vh_check(
     Parameters
     ----------
     case : Case, path, bundled name or None (the default case)
-    torque : float — [N·m]
-        Pinion torque of the loaded pattern (default :data:`VH_DEFAULT_TORQUE`).
+    torque : float — [N·m], optional
+        Pinion torque of the loaded pattern; default the case's first ``[operating]``
+        torque (its light load: 50 N·m on the default case, the development's light torque
+        on a case ``ltca synthesize`` wrote), else :data:`VH_DEFAULT_TORQUE`
+        (:func:`default_vh_torque`) — as ``ltca vh-check``.
     toe, heel : float — [1]
         Targets of the pattern centre, fractions of the face width from the toe, in
         (0, 1), toe < heel (default :data:`VH_DEFAULT_LIMITS`).
@@ -157,7 +185,9 @@ def vh_check(
         raise InputError(f"toe, heel: need toe < heel, got {toe} and {heel}")
     from contact.catalogue import resolve_case
 
-    base = resolve_case(case).misalignment  # the nominal mounting: the case's own
+    resolved = resolve_case(case)
+    base = resolved.misalignment  # the nominal mounting: the case's own
+    torque = default_vh_torque(resolved) if torque is None else torque
     V = np.sort(np.asarray(VH_DEFAULT_GRID[0] + base.delta_E if delta_E is None else delta_E,
                            float))
     H = np.sort(np.asarray(VH_DEFAULT_GRID[1] + base.delta_P if delta_P is None else delta_P,

@@ -9,7 +9,7 @@ other way round).
 from __future__ import annotations
 
 __all__ = ["FileWriteError", "InputError", "LTCAError", "ModelUnavailableError", "PluginError",
-           "StudyFailedError"]
+           "StudyFailedError", "UnknownNameError"]
 
 
 class LTCAError(Exception):
@@ -28,6 +28,19 @@ class ModelUnavailableError(LTCAError, LookupError):
 
     The message lists the available names and, where it applies, why the
     requested one is unavailable or how to install it.
+    """
+
+
+class UnknownNameError(ModelUnavailableError, InputError):
+    """A solver, model or method of a registry asked for by a name that is none of those
+    available here (an unknown name, or a known one whose optional package or data is
+    missing).
+
+    The message names the field and lists the accepted names. It is bad input (an
+    :class:`InputError`, a ``ValueError``: what a caller checking its inputs catches) and
+    a :class:`ModelUnavailableError` (a ``LookupError``), as these errors were before
+    (issue 71, branch api82: ``LTCAOptions(solver="x")``, ``rate_load_capacity(method="x")``
+    and ``friction_coefficient("x")`` raised a LookupError no ``except InputError`` caught).
     """
 
 

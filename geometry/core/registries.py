@@ -33,7 +33,7 @@ from importlib import metadata
 from typing import Any, Generic, TypeVar
 
 from geometry.core.caches import memoised
-from geometry.core.errors import InputError, ModelUnavailableError, PluginError
+from geometry.core.errors import InputError, PluginError, UnknownNameError
 
 __all__ = ["Registry", "callable_name", "check_model_name", "entry_point_objects",
            "keyword_parameters"]
@@ -256,12 +256,13 @@ class Registry(Mapping[str, T], Generic[T]):
 
         Raises
         ------
-        ModelUnavailableError
-            ``name`` is not registered (the message lists the available names).
+        UnknownNameError
+            ``name`` is not registered (the message lists the available names; an
+            InputError and a ModelUnavailableError).
         """
         entries = self._all()
         if not isinstance(name, str) or name not in entries:
-            raise ModelUnavailableError(
+            raise UnknownNameError(
                 f"unknown {self.kind} {name!r}; available: "
                 f"{', '.join(sorted(entries)) or 'none'}" + (f" ({self.hint})" if self.hint
                                                               else ""))
@@ -290,7 +291,7 @@ class Registry(Mapping[str, T], Generic[T]):
 
         Raises
         ------
-        ModelUnavailableError
+        UnknownNameError
             ``name`` is not registered (listed as :meth:`entry`).
         """
         self.entry(name)

@@ -378,6 +378,10 @@ def get_backend(name: SolverLike) -> Backend:
         A solve function whose signature does not fit (:func:`as_backend`).
     """
     if not isinstance(name, str):
+        if not (isinstance(name, Backend) or callable(name)):
+            raise InputError("solver: must be a registered solver's name "
+                             f"({', '.join(available_solvers())}), a Backend or a solve "
+                             f"function, got {type(name).__name__} {name!r}")
         return as_backend(name)
     if name == DEFAULT_SOLVER:
         return _builtin()[name]
@@ -390,7 +394,7 @@ def get_backend(name: SolverLike) -> Backend:
                 else "qpsolvers backends install from PyPI by their package names; the "
                 f"open-source ones with {SOLVERS_EXTRA}")
         raise SolverNotFoundError(
-            f"solver {name!r} is not available; available: {', '.join(reg)}. {hint}."
+            f"solver: {name!r} is not available; available: {', '.join(reg)}. {hint}."
         )
     return reg[name]
 

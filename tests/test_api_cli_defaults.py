@@ -1,0 +1,213 @@
+"""The API's defaults are the command's ("API = CLI", issue 71 items 3/4, branch api82).
+
+A script following the docs calls the public function with its defaults where a user of the
+command types the command with its defaults; both must analyse the same thing and reach the
+same verdict:
+
+* ``contact.run_duty_cycle`` computes the root stress (and with it the bending side) by
+  default, as ``ltca duty-cycle`` (``--root-stress`` on); before, the API's default was off
+  and its verdict lacked the ``bending`` check;
+* ``contact.example_duty_cycle`` is the spectrum ``ltca duty-cycle`` runs for a case
+  without a ``[duty_cycle]`` table: its top bin at the flank's top torque;
+* ``contact.vh_check`` at the case's first ``[operating]`` torque, as ``ltca vh-check``
+  (before: 50 N·m whatever the case).
+
+The FE model of the root stress is replaced by a coarse one in both paths (the same for the
+API and the command: the test is of their defaults, not of the FE model), and the LTCA is
+sampled coarsely, so that the test runs in ~20 s.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import inspect
+
+import numpy as np
+import pytest
+import xarray as xr
+
+import contact
+from contact.compliance.fe import CACHE_ENV, FEOptions
+from geometry.core.errors import InputError
+
+#: a coarse FE model (tests/test_root_stress.py's): a few seconds per member
+COARSE = FEOptions(face_divisions=4, across_divisions=2, flank_divisions=3, slot_divisions=1,
+                   rim_divisions=2, fillet_divisions=2, load_nu=5, load_nv=4)
+
+#: one bin of the default case, as a ``[duty_cycle]`` file the command reads (--duty)
+DUTY_TOML = """\
+[duty_cycle]
+name = "one bin"
+torque = [250.0]
+speed = [1500.0]
+hours = [100.0]
+"""
+
+
+@pytest.fixture
+def coarse_fe(monkeypatch, tmp_path):
+    """Every root stress of the process on :data:`COARSE`, cached under ``tmp_path``."""
+    import contact.ltca.root_stress as rs
+
+    monkeypatch.setenv(CACHE_ENV, str(tmp_path / "fe_cache"))
+    monkeypatch.setattr(rs, "case_fe_options", lambda case: COARSE)
+
+
+def _numeric(ds: xr.Dataset) -> dict[str, np.ndarray]:
+    return {k: np.asarray(v.values, float) for k, v in ds.data_vars.items()
+            if v.dtype.kind in "fiub"}
+
+
+def test_run_duty_cycle_default_is_the_command(coarse_fe, tmp_path, monkeypatch, capsys):
+    """``run_duty_cycle(case, duty, run)`` with its defaults and ``ltca duty-cycle`` with its
+    defaults (same sampling, in this process) give the same bins and the same verdict:
+    the root stress on in both (the bending side available), every numeric variable equal
+    (rtol 1e-12: the same computation in the same process, so equal but for the order of
+    floating-point sums — identical in practice)."""
+    from contact.cli import main
+
+    monkeypatch.chdir(tmp_path)
+    duty_file = tmp_path / "duty.toml"
+    duty_file.write_text(DUTY_TOML, encoding="utf-8")
+    out = tmp_path / "cli.nc"
+    code = main(["duty-cycle", "--duty", str(duty_file), "--rolls-per-cycle", "4",
+                 "--segments", "8", "--scheduler", "synchronous", "--no-progress",
+                 "-o", str(out)])
+    assert code == 0, capsys.readouterr().err
+    cli = contact.read_netcdf(out)["duty_cycle"].to_dataset()
+    api = contact.run_duty_cycle(
+        None, contact.read_duty_cycle(duty_file),
+        contact.StudyRun(options=contact.LTCAOptions(rolls_per_cycle=4, segments=8),
+                         scheduler="synchronous"))
+    assert api.attrs["bending"] == cli.attrs["bending"] == "available"
+    assert "root_life" in api and "root_life" in cli
+    a, c = _numeric(api), _numeric(cli)
+    timing = {k for k in a if "time" in k}
+    assert set(a) - timing == set(c) - timing
+    for name in sorted(set(a) - timing):
+        np.testing.assert_allclose(a[name], c[name], rtol=1e-12, atol=0, equal_nan=True,
+                                   err_msg=name)
+    va, vc = contact.verdict(api), contact.verdict(cli)
+    assert va.severity == vc.severity
+    assert "bending" in va.checks and "bending" in vc.checks
+    assert [(f.check, f.severity) for f in va.findings] == [
+        (f.check, f.severity) for f in vc.findings]
+
+
+def test_run_duty_cycle_root_stress_settings():
+    """``root_stress`` given and ``StudyRun.root_stress`` set agree or are refused, naming
+    both; a value of another type is refused naming ``root_stress`` (before any work)."""
+    from contact.study.duty_cycle import duty_root_stress
+
+    assert duty_root_stress(None, False) is True  # the command's default
+    assert duty_root_stress(False, False) is False
+    assert duty_root_stress(None, COARSE) == COARSE  # the run's setting is read
+    assert duty_root_stress(COARSE, COARSE) == COARSE
+    with pytest.raises(InputError, match=r"^root_stress, run\.root_stress: two different"):
+        duty_root_stress(False, True)
+    duty = contact.DutyCycle(torque=[250.0], pinion_speed=[1500.0], revolutions=[1e6])
+    with pytest.raises(InputError, match=r"^root_stress: must be None, True, False or a "):
+        contact.run_duty_cycle(None, duty, contact.StudyRun(scheduler="synchronous"),
+                               root_stress="yes")
+
+
+def test_example_duty_cycle_is_public_and_the_commands_spectrum():
+    """``contact.example_duty_cycle`` is exported, documented with units and a source,
+    and its top bin is at the flank's top torque as ``ltca duty-cycle`` takes it: the
+    default case's 500 N·m (its ``[operating]`` torques 50/250/500), and on a coast flank
+    with a coast design torque of 200 N·m (design torque 250) that 200 N·m — the rule of
+    ``contact.pipeline.flank_torques``: a torque at or above the design torque is taken at
+    the coast design torque. The proportions are the module's table, exactly (1e-12)."""
+    assert "example_duty_cycle" in contact.__all__
+    doc = inspect.getdoc(contact.example_duty_cycle)
+    for word in ("[N·m]", "[rpm]", "[h]", "Source", "Raises"):
+        assert word in doc, word
+    from contact.study.duty_cycle_inputs import EXAMPLE_BINS
+
+    d = contact.example_duty_cycle()
+    assert d.illustrative and d.n_bins == len(EXAMPLE_BINS) == 7
+    np.testing.assert_allclose(d.torque, [500.0 * r[0] for r in EXAMPLE_BINS], rtol=1e-12)
+    np.testing.assert_allclose(d.pinion_speed, [3000.0 * r[1] for r in EXAMPLE_BINS],
+                               rtol=1e-12)
+    assert d.hours.sum() == pytest.approx(2000.0, rel=1e-12)
+
+    case = contact.resolve_case(None)
+    rating = {**case.extra.get("rating", {}), "design_torque": 250.0,
+              "coast_design_torque": 200.0}
+    coast_case = dataclasses.replace(case, extra={**case.extra, "rating": rating})
+    assert contact.example_duty_cycle(case=coast_case).torque[-1] == 500.0  # drive
+    coast = contact.example_duty_cycle(case=coast_case, flank="coast")
+    assert coast.torque[-1] == pytest.approx(200.0, rel=1e-12)
+    assert contact.example_duty_cycle(100.0, case=coast_case).torque[-1] == 100.0
+    with pytest.raises(InputError, match=r"^flank: must be one of drive, coast"):
+        contact.example_duty_cycle(flank="heel")
+    with pytest.raises(InputError, match=r"^max_torque: must be a finite number > 0"):
+        contact.example_duty_cycle(-1.0)
+    with pytest.raises(InputError, match=r"^bins: must be in \[1, 7\]"):
+        contact.example_duty_cycle(bins=8)
+
+
+def test_the_commands_default_spectrum_is_example_duty_cycle(monkeypatch, tmp_path, capsys):
+    """``ltca duty-cycle`` without ``--duty`` on a case without ``[duty_cycle]`` runs
+    exactly ``contact.example_duty_cycle(case=…, flank=…)`` (its work replaced: the spectrum
+    handed to it is compared bin by bin)."""
+    from contact.cli import main
+
+    seen = {}
+
+    class Stop(Exception):
+        pass
+
+    def stop(case, duty, run=None, **kw):
+        seen["duty"], seen["kw"] = duty, kw
+        raise Stop
+
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setattr("contact.study.duty_cycle.run_duty_cycle", stop)
+    with pytest.raises(Stop):
+        main(["duty-cycle", "--flank", "coast", "-o", str(tmp_path / "o.nc"),
+              "--no-progress"])
+    expected = contact.example_duty_cycle(flank="coast")
+    for field in ("torque", "pinion_speed", "revolutions"):
+        np.testing.assert_array_equal(getattr(seen["duty"], field), getattr(expected, field))
+    assert seen["kw"] == {"root_stress": True}
+
+
+def test_vh_check_default_torque_is_the_commands():
+    """``contact.vh_check``'s torque defaults to the case's first ``[operating]`` torque
+    (``ltca vh-check``'s default), 50 N·m on the default case; the signature says so."""
+    from contact.study.vh_check import default_vh_torque
+
+    case = contact.resolve_case(None)
+    assert default_vh_torque(case) == float(case.operating.torque[0]) == 50.0
+    light = dataclasses.replace(case, operating=dataclasses.replace(
+        case.operating, torque=(7.0, 46.9)))
+    assert default_vh_torque(light) == 7.0
+    assert inspect.signature(contact.vh_check).parameters["torque"].default is None
+
+
+def test_rate_load_capacity_default_method_is_the_cases(tmp_path, monkeypatch, capsys):
+    """``contact.rate_load_capacity(case)`` rates by the case's ``[rating] method`` as
+    ``ltca rate CASE`` does (before: ISO 10300 whatever the case named). On the AGMA 2003
+    Annex E case with ``method = "agma2003"`` written into its ``[rating]`` table, the API's
+    default, the API with the method named and the command's file hold the same /rating
+    (identical: the same computation)."""
+    from contact.cli import main
+
+    case = contact.resolve_case("agma2003_d19_annex_e")
+    named = dataclasses.replace(case, extra={
+        **case.extra, "rating": {**case.extra["rating"], "method": "agma2003"}})
+    path = tmp_path / "agma_named.toml"
+    path.write_text(named.to_toml(), encoding="utf-8")
+    api = contact.rate_load_capacity(path)
+    assert api.attrs["rating_method"] == "agma2003"
+    xr.testing.assert_identical(api, contact.rate_load_capacity(path, method="agma2003"))
+    monkeypatch.chdir(tmp_path)
+    assert main(["rate", str(path), "-o", str(tmp_path / "rate.nc")]) == 0
+    capsys.readouterr()
+    cli = contact.read_netcdf(tmp_path / "rate.nc")["rating"].to_dataset()
+    for name in api.data_vars:
+        np.testing.assert_array_equal(np.asarray(cli[name].values),
+                                      np.asarray(api[name].values), err_msg=name)
+    # a case naming none: ISO 10300, as before
+    assert contact.rate_load_capacity(case).attrs["rating_method"] == "iso10300"
