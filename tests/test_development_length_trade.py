@@ -15,7 +15,9 @@ from contact.load_capacity.iso10300.face_contact import FACE_CONTACT_RATIO_MIN
 from contact.optimize.development import DevelopmentTargets
 from contact.optimize.development_length_trade import (
     FACE_OVERLAP_LENGTH,
+    fits_the_face,
     length_trade_text,
+    no_length_text,
     overlap_length,
     traded_length,
 )
@@ -120,3 +122,68 @@ def test_the_note_names_apply_remedy_where_a_change_passed(monkeypatch):
     # none passed its check (or none checked): the flag is not named
     assert not _length_trade(d, (1.36, 1.173), object()).endswith("change")
     assert _length_trade(d, (1.36, 1.173), None).endswith("within it")
+
+
+#: the written 21x21 at eps_vb 0.64 (`ltca synthesize` with every default, 2026-11-27,
+#: branch contact82): pattern 0.28-0.83 at 83.7 N m, LTE p-p 90.1 / 89.7 urad at 83.7 /
+#: 558.5 N m, every drive target met but the LTE
+WRITTEN_21X21 = {"pattern_toe_u": [0.28, 0.25], "pattern_heel_u": [0.83, 0.9],
+                 "pattern_centre_u": [0.50, 0.52], "pattern_centre_v": [0.60, 0.60],
+                 "lte_peak_to_peak": [90.1, 89.7]}
+
+#: measured (benchmarks/development_levers.py --check and the written drive bearing's
+#: ellipse lengthened, ltca run's sampling, 2026-11-27, branch contact82; docs/synthesis.md
+#: "A longer pattern below a face contact ratio of 0.76"): eps_vb and whether some longer
+#: light-load pattern took the LTE p-p within the verdict's 60 urad at the light and the
+#: design torque: the 21x21 (0.64: 0.82 long, 41 / 118 urad) and the 16x20 at Sigma 75 deg
+#: (0.71: 0.60 long, 46 / 84 urad) did not; the 13x41 at beta_m1 30 deg (0.83: 0.75 long,
+#: 13 / 45) and the 20x40 at beta_m 25 deg (0.87: 0.80 long, 46 / 54) of branch len81 did
+LONGER_PATTERN_REACHED = ((0.64, False), (0.71, False), (0.83, True), (0.87, True))
+
+
+def test_the_pattern_fits_the_face_where_a_longer_one_was_measured_to_help():
+    # the law's length against the 0.92 of the face the default clearance 0.04 leaves: it
+    # separates the measured designs exactly (no tolerance: a yes/no per design)
+    clearance = DevelopmentTargets().clearance
+    for eps, reached in LONGER_PATTERN_REACHED:
+        assert fits_the_face(eps, clearance) is reached
+    # the boundary: eps_vb = 0.7 / 0.92
+    edge = FACE_OVERLAP_LENGTH / (1.0 - 2.0 * clearance)
+    assert edge == pytest.approx(0.761, abs=5e-4)
+    assert fits_the_face(edge, clearance) and not fits_the_face(edge - 1e-6, clearance)
+    # no clearance: the whole face, eps_vb 0.7
+    assert fits_the_face(0.7, 0.0) and not fits_the_face(0.69, 0.0)
+
+
+@pytest.mark.parametrize("bad", [-0.01, 0.5, math.nan, True, "0.04"])
+def test_fits_the_face_refuses_a_bad_clearance(bad):
+    with pytest.raises(InputError, match="clearance"):
+        fits_the_face(0.8, bad)
+
+
+def test_the_note_on_the_21x21_says_no_length_is_long_enough():
+    d = _development(WRITTEN_21X21)
+    said = no_length_text(d, 0.64, 60.0)
+    # 0.7 / 0.64 = 1.094 of the face, 1 - 2 x 0.04 = 0.92 left by the clearance
+    assert said.startswith("a longer light-load pattern is no lever here: at eps_vb 0.64 "
+                           "the LTE would need one about 1.09 of the face long")
+    assert "more than the 0.92 the toe and heel clearance leave" in said
+    assert said.endswith("the length target stays")
+    # the command's hook: the LTE missed, so no length trade before it
+    assert _length_trade(d, (1.23, 0.64)) == "; " + said
+
+
+def test_no_length_note_where_a_pattern_fits_or_the_lte_holds():
+    d = _development(WRITTEN_21X21)
+    assert no_length_text(d, 0.83, 60.0) == ""  # the 13x41's ratio: a pattern fits
+    assert no_length_text(d, 0.64, 95.0) == ""  # within the limit given
+    held = _development(WRITTEN_21X21 | {"lte_peak_to_peak": [41.0, 59.0]})
+    assert no_length_text(held, 0.64, 60.0) == ""
+    # the 27x34's trade is said alone (eps_vb 1.17: the pattern fits)
+    d27 = _development(WRITTEN_27X34)
+    assert _length_trade(d27, (1.36, 1.173)) == "; " + length_trade_text(
+        d27, 1.173, FACE_CONTACT_RATIO_NOTE)
+    # the 16x20 at Sigma 75 deg (eps_vb 0.71, LTE 55 / 84 urad written): 0.99 of the face
+    fh = _development(WRITTEN_21X21 | {"lte_peak_to_peak": [55.2, 84.0]})
+    assert "at eps_vb 0.71 the LTE would need one about 0.99 of the face" in no_length_text(
+        fh, 0.71, 60.0)

@@ -444,16 +444,21 @@ def _length_trade(development, ratios, record=None) -> str:
     """"; " and :func:`contact.optimize.development_length_trade.length_trade_text` (the
     drive pattern's length given up for the LTE on a face contact ratio below
     :data:`FACE_CONTACT_RATIO_NOTE`; ``--apply-remedy`` named where a change of the
-    remedies' ``record`` passed its check), or "" where there is no development or nothing
-    to say."""
+    remedies' ``record`` passed its check), then "; " and :func:`~contact.optimize.
+    development_length_trade.no_length_text` (no pattern long enough below ε_vβ ≈ 0.76,
+    the drive LTE above the verdict's limit), or "" where there is no development or
+    nothing to say."""
     if development is None:
         return ""
-    from contact.optimize.development_length_trade import length_trade_text
+    from contact.optimize.development_length_trade import length_trade_text, no_length_text
     from contact.optimize.development_remedy import chosen_check
+    from contact.study.verdicts import LTE_LIMIT
 
     said = length_trade_text(development, ratios[1], FACE_CONTACT_RATIO_NOTE,
                              remedy=record is not None and chosen_check(record) is not None)
-    return f"; {said}" if said else ""
+    # below eps_vb ~0.76 no pattern the targets allow is long enough (branch contact82)
+    none = no_length_text(development, ratios[1], LTE_LIMIT)
+    return "".join(f"; {s}" for s in (said, none) if s)
 
 
 def _written_ute(case, development, ratios) -> tuple[float, float] | None:

@@ -40,9 +40,29 @@ path angle, TE level, mean point, blade angle, relief starts and depths; the nea
 contact ratio: :func:`length_trade_text` says the trade in ``ltca synthesize``'s
 contact-ratio note, with the length the LTE needs now and at the ratio's remedy.
 
+Below ε_vβ ≈ 0.76 the law's length no longer fits between the toe and heel clearance the
+targets keep (1 − 2 × ``clearance``, 0.92 of the face by default; :func:`fits_the_face`),
+and a longer pattern is no lever at all (measured 2026-11-27, branch contact82, the
+written drive bearing's ellipse lengthened at ``ltca run``'s sampling; docs/synthesis.md,
+"A longer pattern below a face contact ratio of 0.76"):
+
+======================================  =======  ==========================================
+design                                   ε_vβ     light-load length → LTE p-p light / design
+======================================  =======  ==========================================
+FM spiral bevel 21x21 (558.5 N m)         0.64     0.55: 90 / 90; 0.65: 80 / 95; 0.73: 69 /
+                                                   110; 0.82: 41 / 118 (heel reached, plastic)
+FH spiral bevel 16x20 at Σ 75° (422.4)    0.71     0.53: 55 / 84; 0.57: 49 / 83; 0.60: 46 / 84
+======================================  =======  ==========================================
+
+the light torque's LTE falls with the length, the design torque's stays or rises (the
+teeth's deflection sets it there); the development developed to a target of 0.7 instead of
+0.5 wrote 141 / 149 (21x21) and 116 / 126 µrad (16x20). :func:`no_length_text` says so in
+``ltca synthesize``'s contact-ratio note; the target stays.
+
 Public names
 ------------
-FACE_OVERLAP_LENGTH, overlap_length, traded_length, length_trade_text
+FACE_OVERLAP_LENGTH, overlap_length, traded_length, length_trade_text, fits_the_face,
+no_length_text
 """
 
 from __future__ import annotations
@@ -52,7 +72,8 @@ from collections.abc import Mapping
 
 from geometry.core.errors import InputError
 
-__all__ = ["FACE_OVERLAP_LENGTH", "length_trade_text", "overlap_length", "traded_length"]
+__all__ = ["FACE_OVERLAP_LENGTH", "fits_the_face", "length_trade_text", "no_length_text",
+           "overlap_length", "traded_length"]
 
 #: the light-load pattern length × face contact ratio ε_vβ at which the LTE p-p kept the
 #: development's 40 µrad at both torques and 60 µrad between them [1] (measured: 0.66 on
@@ -62,6 +83,9 @@ FACE_OVERLAP_LENGTH = 0.7
 
 #: the section of docs/synthesis.md that holds the measurement
 _DOCS = "docs/synthesis.md, 'The pattern length on a low face contact ratio'"
+
+#: the section of docs/synthesis.md that holds the measurement below ε_vβ 0.76
+_DOCS_NO_LENGTH = "docs/synthesis.md, 'A longer pattern below a face contact ratio of 0.76'"
 
 
 def overlap_length(eps_vb: float) -> float:
@@ -190,3 +214,90 @@ def length_trade_text(development, eps_vb: float, eps_target: float, *,
             f"{at_target:.2f}, within it"
             + ("; ltca synthesize --apply-remedy develops the checked change" if remedy
                else ""))
+
+
+def fits_the_face(eps_vb: float, clearance: float) -> bool:
+    """Whether the light-load pattern the LTE needs (:func:`overlap_length`) fits between
+    the toe and heel clearance the development's targets keep.
+
+    Parameters
+    ----------
+    eps_vb : float — [1]
+        Face contact ratio ε_vβ (ISO 10300-1:2014, Annex A), > 0.
+    clearance : float — [1]
+        The targets' least distance of the pattern's ends from the toe and the heel
+        (:class:`~contact.optimize.development_targets.DevelopmentTargets` ``clearance``,
+        0.04 by default), in [0, 0.5).
+
+    Returns
+    -------
+    bool
+        ``overlap_length(eps_vb) <= 1 − 2 clearance`` (with the default clearance: ε_vβ ≥
+        0.7 / 0.92 ≈ 0.76).
+
+    Raises
+    ------
+    InputError
+        ``eps_vb`` not a finite number above 0, or ``clearance`` not a finite number in
+        [0, 0.5).
+
+    Notes
+    -----
+    Source: the law of :func:`overlap_length` and the measurement of the module docstring
+    (the 21x21 at ε_vβ 0.64 and the 16x20 at 0.71: no length lowers the design torque's
+    LTE; the 13x41 at 0.83 and the 20x40 at 0.87 reach 40–60 µrad at 0.75–0.85 of the face).
+    """
+    if isinstance(clearance, bool) or not isinstance(clearance, (int, float)) or not (
+            math.isfinite(clearance) and 0.0 <= clearance < 0.5):
+        raise InputError(f"clearance: must be a finite number in [0, 0.5) [1 of the face "
+                         f"width], got {clearance!r}")
+    return overlap_length(eps_vb) <= 1.0 - 2.0 * float(clearance) + 1e-12
+
+
+def no_length_text(development, eps_vb: float, lte_limit: float) -> str:
+    """The sentence of ``ltca synthesize``'s contact-ratio note on a drive design above the
+    verdict's LTE limit whose face contact ratio is too low for any light-load pattern the
+    targets allow (:func:`fits_the_face`): a longer pattern is no lever there.
+
+    Parameters
+    ----------
+    development : contact.optimize.development.DevelopmentResult
+        Its ``best.metrics`` (``lte_peak_to_peak`` [µrad], light torque first) and
+        ``targets`` (``clearance`` [1]).
+    eps_vb : float — [1]
+        The design's face contact ratio, > 0.
+    lte_limit : float — [µrad]
+        The verdict's LTE limit (:data:`contact.study.verdicts.LTE_LIMIT`, 60).
+
+    Returns
+    -------
+    str
+        E.g. "a longer light-load pattern is no lever here: at eps_vb 0.64 the LTE would
+        need one about 1.09 of the face long (length x eps_vb about 0.7), more than the
+        0.92 the toe and heel clearance leave; measured, a longer pattern lowers the light
+        torque's LTE and leaves or raises the design torque's, which the teeth's deflection
+        sets (...); the length target stays"; empty where the drive LTE is within
+        ``lte_limit`` at both torques or the needed pattern fits.
+
+    Raises
+    ------
+    InputError
+        ``eps_vb`` not a finite number above 0 (:func:`overlap_length`).
+
+    Notes
+    -----
+    Source: the measurement of the module docstring (branch contact82, 2026-11-27).
+    """
+    clearance = float(development.targets.clearance)
+    if fits_the_face(eps_vb, clearance):
+        return ""
+    lte = development.best.metrics["lte_peak_to_peak"]
+    if not max(float(lte[0]), float(lte[-1])) > lte_limit:
+        return ""
+    return (f"a longer light-load pattern is no lever here: at eps_vb {eps_vb:.2f} the LTE "
+            f"would need one about {overlap_length(eps_vb):.2f} of the face long (length x "
+            f"eps_vb about {FACE_OVERLAP_LENGTH:g}), more than the "
+            f"{1.0 - 2.0 * clearance:.2f} the toe and heel clearance leave; measured, a "
+            f"longer pattern lowers the light torque's LTE and leaves or raises the design "
+            f"torque's, which the teeth's deflection sets ({_DOCS_NO_LENGTH}); the length "
+            f"target stays")
