@@ -99,20 +99,21 @@ _WRITING = "@@ ltca run: writing the netCDF file @@"
 _PAUSED_RUN = f"""
 import sys
 
-import xarray as xr
-
+import geometry.core.io as io
 from contact.cli import main
 
-_write = xr.DataTree.to_netcdf
+# the tree's write (write_netcdf's first step inside atomic_path; it falls back to
+# DataTree.to_netcdf where the xarray lacks the store functions it uses)
+_write = io.write_tree_defined_first
 
 
-def _paused(self, *args, **kwargs):
+def _paused(*args, **kwargs):
     print({_WRITING!r}, flush=True)
     sys.stdin.readline()
-    return _write(self, *args, **kwargs)
+    return _write(*args, **kwargs)
 
 
-xr.DataTree.to_netcdf = _paused
+io.write_tree_defined_first = _paused
 sys.exit(main(sys.argv[1:]))
 """
 

@@ -34,6 +34,7 @@ import xarray as xr
 from geometry.core.atomic_files import atomic_path, write_failure
 from geometry.core.conventions import data_var
 from geometry.core.errors import FileWriteError, InputError, LTCAError
+from geometry.core.netcdf_tree_write import write_tree_defined_first
 from geometry.core.validation import integer
 from geometry.core.version import __version__
 
@@ -359,6 +360,9 @@ def write_netcdf(
     (lossless). The file is written to a temporary file beside ``path`` which is renamed
     onto ``path`` only once complete; an interrupt (Ctrl-C, SIGTERM) during the write
     leaves the old file and no temporary file (:func:`geometry.core.atomic_files.atomic_path`).
+    A DataTree's variables are all defined before their data are written
+    (:func:`geometry.core.netcdf_tree_write.write_tree_defined_first`: the same file,
+    ≈ 0.5 s less for ``ltca run``'s 392 variables, issue 75).
 
     Parameters
     ----------
@@ -405,7 +409,11 @@ def write_netcdf(
         # a temporary file renamed onto path once complete; Ctrl-C/SIGTERM held until the
         # HDF5 library returns, then the old file kept (geometry.core.atomic_files)
         with atomic_path(path) as tmp, _local_write_lock(out):
-            out.to_netcdf(tmp, engine=_ENGINE, encoding=encoding)
+            # a tree's variables all defined before its data are written: the netCDF
+            # library leaves define mode once, not per variable (issue 75, speed82)
+            if not (isinstance(out, xr.DataTree)
+                    and write_tree_defined_first(out, tmp, encoding)):
+                out.to_netcdf(tmp, engine=_ENGINE, encoding=encoding)
     except FileWriteError as exc:   # the disk's or the directory's fault, said in words
         raise NetCDFError(str(exc)) from exc
     except Exception as exc:
