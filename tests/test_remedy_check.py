@@ -513,7 +513,8 @@ def test_the_relief_is_named_where_the_flank_without_it_is_within_the_limit():
         "the written drive flank's unloaded TE p-p is 156 urad (ease-off 258 um), above the "
         "verdict's 60 urad before any load, and 15 urad without its profile relief "
         "(tip/root relief 15/15 um; checked by a synthesis at the same prescriptions): its "
-        "relief, not its generation, sets its LTE p-p 127/224 urad (light/design); "
+        "relief, not its generation, sets the unloaded TE its LTE p-p 127/224 urad "
+        "(light/design) keeps; "
         + RELIEF_LEVER_TEXT)
     # at the limit still the relief; above it, or not measured: the prescriptions as before
     assert lte_diagnosis(lte, 60.0, written, values, (), unrelieved=60.0).cause == "relief"

@@ -549,16 +549,16 @@ def relief_lte_text(ute: float, span: float, unrelieved: float, lte: Sequence[fl
         E.g. "the written drive flank's unloaded TE p-p is 156 urad (ease-off 258 um),
         above the verdict's 60 urad before any load, and 15 urad without its profile
         relief (tip/root relief 15/15 um; checked by a synthesis at the same
-        prescriptions): its relief, not its generation, sets its LTE p-p 127/224 urad
-        (light/design); the relief keeps …".
+        prescriptions): its relief, not its generation, sets the unloaded TE its LTE p-p
+        127/224 urad (light/design) keeps; the relief keeps …".
     """
     span_said = f" (ease-off {span:.0f} um)" if math.isfinite(span) else ""
     named = f"{relief}; " if relief else ""
     return (f"the written drive flank's unloaded TE p-p is {ute:.0f} urad{span_said}, above "
             f"the verdict's {limit:g} urad before any load, and {unrelieved:.0f} urad "
             f"without its profile relief ({named}checked by a synthesis at the same "
-            f"prescriptions): its relief, not its generation, sets its LTE p-p "
-            f"{float(lte[0]):.0f}/{float(lte[-1]):.0f} urad (light/design); "
+            f"prescriptions): its relief, not its generation, sets the unloaded TE its "
+            f"LTE p-p {float(lte[0]):.0f}/{float(lte[-1]):.0f} urad (light/design) keeps; "
             + RELIEF_LEVER_TEXT + (measured or RELIEF_MEASURED) + ")")
 
 
