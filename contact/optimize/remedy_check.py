@@ -515,8 +515,9 @@ RELIEF_LEVER_TEXT = ("the relief keeps the pinion's edges out of contact under l
 
 #: the end of :data:`RELIEF_LEVER_TEXT`'s measure (docs/synthesis.md, "The 16×16 at Σ 60°
 #: on the generated gear: the relief, not the pinion's modified roll")
-RELIEF_MEASURED = ("face milled: eps_va 1.22, eps_vb 1.40, LTE p-p 19/32 urad at 69/460.5 "
-                   "N m")
+RELIEF_MEASURED = ("face hobbed: eps_va 1.22, eps_vb 1.30, drive LTE p-p 69/67 urad at "
+                   "84/560 N m without plastic, coast 106/63 urad; face milled: eps_vb 1.40, "
+                   "19/32 urad at 69/460.5 N m")
 
 
 def relief_lte_text(ute: float, span: float, unrelieved: float, lte: Sequence[float],
