@@ -483,3 +483,105 @@ def test_synthesize_and_run_say_the_same_of_what_sets_the_lte():
     # a coast flank's LTE is not judged by the drive flank's unloaded TE
     (line,) = overlap_lines(case, "the LTE", [605.0, 600.0], "coast")
     assert RATIO_TRIAL_TEXT in line
+
+
+def test_the_relief_is_named_where_the_flank_without_it_is_within_the_limit():
+    """lte_diagnosis with the unloaded TE without the relief (issue 71, ratio 1): the
+    face-hobbed 16x16 at Σ 60° on its generated gear (docs/synthesis.md, "The 16×16 at Σ 60°
+    on the generated gear: the relief, not the pinion's modified roll") wrote a drive
+    flank of unloaded TE p-p 156 µrad (ease-off 258 µm, LTE 127/224 µrad, tip/root relief
+    15/15 µm), 15 µrad without its relief: the cause is the relief, said with those numbers,
+    and the note (reach_text) and ``ltca run``'s next step (overlap_lines) say the same; a
+    flank whose TE without the relief is still above the limit (or not measured) keeps the
+    prescriptions' statement. The numbers are the measure's (stand-ins); the rule is the
+    comparison with the verdict's limit, exact."""
+    from contact.commands.next_steps import overlap_lines
+    from contact.commands.synthesize import _ute_is_the_lte, reach_text
+    from contact.optimize.remedy_check import (
+        RELIEF_LEVER_TEXT,
+        RemedyRecord,
+        lte_diagnosis,
+        read_record,
+    )
+
+    lte, written = [127.2, 223.7], (156.0, 258.0)
+    values = {"path_angle": -72.5, "ellipse_length": 0.25, "te_level": 45.0,
+              "tip_relief": 15.0, "root_relief": 15.0}
+    d = lte_diagnosis(lte, 60.0, written, values, (), unrelieved=15.0)
+    assert d.cause == "relief"
+    assert d.text.startswith(
+        "the written drive flank's unloaded TE p-p is 156 urad (ease-off 258 um), above the "
+        "verdict's 60 urad before any load, and 15 urad without its profile relief "
+        "(tip/root relief 15/15 um; checked by a synthesis at the same prescriptions): its "
+        "relief, not its generation, sets the unloaded TE its LTE p-p 127/224 urad "
+        "(light/design) keeps; "
+        + RELIEF_LEVER_TEXT)
+    # at the limit still the relief; above it, or not measured: the prescriptions as before
+    assert lte_diagnosis(lte, 60.0, written, values, (), unrelieved=60.0).cause == "relief"
+    for other in (60.5, math.nan):
+        d = lte_diagnosis(lte, 60.0, written, values, (), unrelieved=other)
+        assert d.cause == "unloaded_te" and "other [synthesis] prescriptions" in d.text
+    # an unloaded TE that does not set the LTE is not blamed on the relief either
+    assert lte_diagnosis([20.0, 223.7], 60.0, written, values, (),
+                         unrelieved=15.0).cause == "contact_ratios"
+    # the record keeps it through the case's TOML; both commands say the one statement
+    record = RemedyRecord((_check(B2, 107.0), _check(BETA, 543.0)), 156.0, 258.0, 60.0,
+                          15.0)
+    case = _recorded_sample3(record, values)
+    assert read_record(case.extra).unrelieved_ute == 15.0
+    assert math.isnan(read_record(_recorded_sample3(
+        RemedyRecord((), 156.0, 258.0, 60.0), values).extra).unrelieved_ute)
+    diagnosis = lte_diagnosis(lte, 60.0, written, values, record.checks, 15.0)
+    dev = types.SimpleNamespace(
+        best=types.SimpleNamespace(metrics={"lte_peak_to_peak": np.array(lte)},
+                                   values=values),
+        lte_reach={"light": 94.0, "design": 195.0, "what": "design 6", "why": "",
+                   "tried": ()})
+    said = reach_text(dev, 60.0, written, record.checks, 15.0)
+    (line,) = overlap_lines(case, "the LTE", lte, "drive")
+    assert diagnosis.text in said and diagnosis.text in line
+    assert said.startswith("; the development's least drive LTE p-p 94/195 urad (design 6): "
+                           "none it checked within 60 urad; ")
+    assert "a lighter drive relief or more teeth" in line and "b2 of 32.6" not in line
+    assert _ute_is_the_lte(dev, record)
+
+
+def test_the_unrelieved_te_is_the_same_synthesis_without_the_drive_relief(monkeypatch):
+    """unrelieved_te_pp synthesises the basic data with the drive flank's tip and root
+    relief 0 and everything else as given (the coast flank's relief kept; no tip-plane
+    placement, as check_change), and measures that case; a synthesis without solution is
+    NaN, not an error. Stand-ins for the synthesis and the measure (the wiring)."""
+    import dataclasses
+
+    import geometry.synthesis.case_synthesis as cs
+    from contact.optimize import remedy_check
+    from geometry.core.errors import InputError
+    from geometry.synthesis.basic_design import FlankOptions
+
+    basic = load_basic(EIGHT)
+    opt = basic.options
+    drive, coast = opt.drive_flank, ("convex" if opt.drive_flank == "concave" else "concave")
+    basic = dataclasses.replace(basic, options=dataclasses.replace(opt, **{
+        drive: FlankOptions(tip_relief=0.02, root_relief=0.01, path_angle=-1.0),
+        coast: FlankOptions(tip_relief=0.03, root_relief=0.012)}))
+    seen = {}
+
+    def fake_synthesize(b, **kw):
+        seen["basic"], seen["kw"] = b, kw
+        return "CASE", None
+
+    monkeypatch.setattr(cs, "synthesize", fake_synthesize)
+    monkeypatch.setattr(remedy_check, "unloaded_te_pp", lambda case: (15.0, 258.0, 0.67))
+    assert remedy_check.unrelieved_te_pp(basic) == (15.0, 258.0)
+    got = seen["basic"].options
+    assert (got.flank(drive).tip_relief, got.flank(drive).root_relief) == (0.0, 0.0)
+    assert got.flank(drive).path_angle == -1.0
+    assert got.flank(coast) == basic.options.flank(coast)
+    assert seen["kw"] == {"tip_planes": False}
+
+    def failing(b, **kw):
+        raise InputError("synthesis: no solution")
+
+    monkeypatch.setattr(cs, "synthesize", failing)
+    ute, span = remedy_check.unrelieved_te_pp(basic)
+    assert math.isnan(ute) and math.isnan(span)

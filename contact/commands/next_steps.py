@@ -215,7 +215,12 @@ def overlap_lines(case, what: str = "the LTE spread", lte: Sequence[float] | Non
         prescriptions = (development.get("prescriptions")
                          if hasattr(development, "get") else None)
         diagnosis = lte_diagnosis(lte, LTE_LIMIT, _written_ute(case, record), prescriptions,
-                                  () if record is None else record.checks)
+                                  () if record is None else record.checks,
+                                  math.nan if record is None else record.unrelieved_ute)
+        if diagnosis.cause == "relief":
+            return [f"  next, {what} is not the design's contact ratios: {diagnosis.text}; a "
+                    "trial: ltca synthesize BASIC.toml with a lighter drive relief or more "
+                    "teeth, then ltca run of the case it writes"]
         if diagnosis.cause == "unloaded_te":
             return [f"  next, {what} is not the design's contact ratios: {diagnosis.text}; a "
                     "trial: ltca synthesize BASIC.toml with other [synthesis] prescriptions, "

@@ -194,7 +194,7 @@ def _contact_ratios(case) -> tuple[float, float] | None:
 
 
 def low_overlap_lte(development, written_ute: tuple[float, float] | None = None,
-                    checks: Sequence = ()) -> str:
+                    checks: Sequence = (), unrelieved: float = math.nan) -> str:
     """What the development's bearing did for the LTE of a design whose face contact ratio
     is below :data:`FACE_CONTACT_RATIO_NOTE`, in numbers (``ltca synthesize``'s note): the
     LTE p-p of the written drive flank and, where checked, coast flank at their light and
@@ -209,6 +209,9 @@ def low_overlap_lte(development, written_ute: tuple[float, float] | None = None,
         (:func:`contact.optimize.remedy_check.unloaded_te_pp`), for :func:`reach_text`.
     checks : sequence of contact.optimize.remedy_check.ChangeCheck, optional
         The contact-ratio remedies' checks, for :func:`reach_text`.
+    unrelieved : float, optional — [µrad]
+        The written drive flank's unloaded TE p-p without its relief, for
+        :func:`reach_text` (NaN: not measured).
 
     Returns
     -------
@@ -236,12 +239,12 @@ def low_overlap_lte(development, written_ute: tuple[float, float] | None = None,
     return (f"the developed bearing's LTE p-p: {', '.join(parts)} (light/design), the "
             f"development's target {target:g} urad " + said
             + (f", above the verdict's {LTE_LIMIT:g} urad" if worst > LTE_LIMIT else "")
-            + reach_text(development, LTE_LIMIT, written_ute, checks))
+            + reach_text(development, LTE_LIMIT, written_ute, checks, unrelieved))
 
 
 def reach_text(development, limit: float,
                written_ute: tuple[float, float] | None = None,
-               checks: Sequence = ()) -> str:
+               checks: Sequence = (), unrelieved: float = math.nan) -> str:
     """What the development's drive designs reached where the written drive flank's LTE
     p-p exceeds ``limit`` [µrad] (the verdict's): the least LTE p-p its check's last LTE
     step saw (``development.lte_reach``,
@@ -273,6 +276,11 @@ def reach_text(development, limit: float,
         The contact-ratio remedies' checks: one that takes the unloaded TE within
         ``limit`` makes the contact ratios the cause
         (:func:`contact.optimize.remedy_check.lte_diagnosis`).
+    unrelieved : float, optional — [µrad]
+        The written drive flank's unloaded TE p-p without its relief
+        (:func:`contact.optimize.remedy_check.unrelieved_te_pp`): within ``limit``, the
+        relief is said to set the unloaded TE (the face-hobbed 16x16 at Sigma 60 deg on its
+        generated gear: 156 urad written, 15 without the relief). NaN: not measured.
 
     Returns
     -------
@@ -307,9 +315,10 @@ def reach_text(development, limit: float,
                 f"{reach['design']:.0f} urad ({reach['what']}{why})")
     # what sets the LTE: the one statement `ltca run`'s next step makes too
     diagnosis = lte_diagnosis(lte, limit, written_ute,
-                              getattr(development.best, "values", None) or {}, checks)
+                              getattr(development.best, "values", None) or {}, checks,
+                              unrelieved)
     least = max(reach["light"], reach["design"]) if reach else math.nan
-    if diagnosis.cause == "unloaded_te":
+    if diagnosis.cause in ("unloaded_te", "relief"):
         # the lever it names is untried where no checked design came within the limit
         # (round 20b: the FH 16x16 at Sigma 60 deg, least 509/197 urad, written 511/315)
         none = f": none it checked within {limit:g} urad" if least > limit else ""
@@ -419,6 +428,7 @@ def _lte_notes(basic, case, development, ratios) -> tuple[list[str], object]:
         record = checked_record(_prescribed(basic, case, development), basic.design,
                                 written, LTE_LIMIT)
         checks = () if record is None else record.checks
+        unrel = math.nan if record is None else record.unrelieved_ute
         said = low_ratio_text(basic.design, FACE_CONTACT_RATIO_NOTE,
                               PROFILE_CONTACT_RATIO_NOTE,
                               judge=None if record is None else recorded_judge(record))
@@ -428,7 +438,7 @@ def _lte_notes(basic, case, development, ratios) -> tuple[list[str], object]:
                       ", the least bevel-gear design practice asks for (AGMA 2005-D03); "
                       "a wider face (b2) or a larger spiral angle (beta_m) raises eps_vb, "
                       "a deeper tooth (k_d) or a smaller pressure angle (alpha_dD) eps_va")
-                     + (f"; {low_overlap_lte(development, written, checks)}"
+                     + (f"; {low_overlap_lte(development, written, checks, unrel)}"
                         if development is not None else "")
                      + _length_trade(development, ratios, record))
     if misjudged is not None:
@@ -864,8 +874,8 @@ def _ute_is_the_lte(development, record) -> bool:
                if math.isfinite(record.reference_ute) else None)
     diagnosis = lte_diagnosis(development.best.metrics["lte_peak_to_peak"], LTE_LIMIT,
                               written, getattr(development.best, "values", None) or {},
-                              record.checks)
-    return diagnosis.cause == "unloaded_te"
+                              record.checks, record.unrelieved_ute)
+    return diagnosis.cause in ("unloaded_te", "relief")
 
 
 def _print_lines(lines: list[str]) -> None:

@@ -212,16 +212,21 @@ def checked_record(prescribed, design, written: tuple[float, float] | None, limi
     Returns
     -------
     contact.optimize.remedy_check.RemedyRecord or None
-        None where no contact ratio is below its limit (no change to check).
+        None where no contact ratio is below its limit (no change to check). Where the
+        written unloaded TE exceeds ``limit``, its ``unrelieved_ute`` is measured too
+        (:func:`~contact.optimize.remedy_check.unrelieved_te_pp`, one more synthesis):
+        whether the relief or the generation sets it.
     """
-    from contact.optimize.remedy_check import RemedyRecord, check_change
+    from contact.optimize.remedy_check import RemedyRecord, check_change, unrelieved_te_pp
 
     changes = ratio_changes(design)
     if not changes:
         return None
     checks = tuple(check_change(prescribed, c) for c in changes)
+    unrelieved = (unrelieved_te_pp(prescribed)[0]
+                  if written is not None and written[0] > limit else math.nan)
     return RemedyRecord(checks, *(written if written is not None else (math.nan,) * 2),
-                        float(limit))
+                        float(limit), unrelieved)
 
 
 def chosen_check(record):

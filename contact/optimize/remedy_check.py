@@ -27,7 +27,12 @@ and says why each refused one is refused, with its numbers.
 
 :func:`unloaded_te_pp` and :func:`ute_sets_lte` tell, for the LTE diagnosis, where the
 written case's own unloaded TE is what its LTE is: its p-p above the verdict's limit and
-kept by the load at the light torque (:data:`UTE_KEPT_SHARE`).
+kept by the load at the light torque (:data:`UTE_KEPT_SHARE`). :func:`unrelieved_te_pp`
+tells whether that unloaded TE is the flank's generation or its profile relief: the same
+synthesis with the drive flank's tip and root relief 0 (issue 71, ratio 1: the face-hobbed
+16×16 at Σ 60° on its generated gear, 156 µrad written, 15 µrad without the relief;
+docs/synthesis.md, "The 16×16 at Σ 60° on the generated gear: the relief, not the pinion's
+modified roll").
 
 The face contact ratio's remedies (gear face width b2, mean spiral angle β_m:
 :func:`contact.load_capacity.iso10300.face_contact.overlap_changes`) are checked the same
@@ -42,7 +47,8 @@ and ``ltca run``'s next step offers the remedies from there (:func:`read_record`
 Public names
 ------------
 UTE_GROWTH_MAX, UTE_KEPT_SHARE, ChangeCheck, check_change, unloaded_te_pp, refusal,
-ranked_changes, checked_remedy_text, ute_sets_lte, ute_lte_text, RECORD_TABLE,
+ranked_changes, checked_remedy_text, ute_sets_lte, ute_lte_text, unrelieved_te_pp,
+relief_lte_text, RECORD_TABLE,
 RemedyRecord, remedy_record, read_record, recorded_judge, LteDiagnosis, RATIO_TRIAL_TEXT,
 lte_diagnosis, lowest_checked, ute_lowered_text
 """
@@ -61,8 +67,9 @@ from contact.optimize.development_conjugacy import VALID_NODE_FRACTION_MIN
 __all__ = ["RATIO_TRIAL_TEXT", "RECORD_TABLE", "UTE_GROWTH_MAX", "UTE_KEPT_SHARE",
            "ChangeCheck", "LteDiagnosis", "RemedyRecord", "check_change",
            "checked_remedy_text", "lowest_checked", "lte_diagnosis", "ranked_changes",
-           "read_record", "recorded_judge", "refusal", "remedy_record", "unloaded_te_pp",
-           "ute_lowered_text", "ute_lte_text", "ute_sets_lte"]
+           "read_record", "recorded_judge", "refusal", "relief_lte_text", "remedy_record",
+           "unloaded_te_pp", "unrelieved_te_pp", "ute_lowered_text", "ute_lte_text",
+           "ute_sets_lte"]
 
 log = logging.getLogger(__name__)
 
@@ -169,6 +176,51 @@ def check_change(basic, change) -> ChangeCheck:
         return ChangeCheck(change, math.nan, math.nan, 0.0, str(exc),
                            time.process_time() - t0)
     return ChangeCheck(change, ute, span, valid, "", time.process_time() - t0)
+
+
+def unrelieved_te_pp(basic) -> tuple[float, float]:
+    """The written drive flank's unloaded TE p-p and ease-off without its profile relief.
+
+    Parameters
+    ----------
+    basic : geometry.synthesis.basic_design.BasicDesign
+        The basic data at the written case's prescriptions (as :func:`check_change`'s).
+
+    Returns
+    -------
+    (ute, span) : (float, float)
+        The unloaded TE p-p [µrad] and the ease-off's largest value over its valid nodes
+        [µm] (:func:`unloaded_te_pp`) of the same synthesis with the drive flank's
+        ``tip_relief`` and ``root_relief`` 0 (steps 1-6 and the blade unchanged: the relief
+        of step 7 lies beyond corners away from M); (NaN, NaN) where that synthesis or its
+        measure has no solution (said in the log). One synthesis without tip-plane
+        placement, 5-8 s of CPU.
+
+    Notes
+    -----
+    Why (issue 71, ratio 1; docs/synthesis.md, "The 16×16 at Σ 60° on the generated gear:
+    the relief, not the pinion's modified roll"): the face-hobbed spiral bevel 16×16 at
+    Σ 60° (ε_vα 1.17, ε_vβ 0.87) developed on its generated gear wrote a drive flank of
+    unloaded TE p-p 156 µrad (LTE 127/224 µrad), which the LTE diagnosis laid on the
+    prescriptions (the pinion's generation); the same synthesis without the relief gives
+    15 µrad (tip relief alone 59, root relief alone 54): at a face contact ratio below 1
+    the pairs hand the load over on the relieved ends of the flank. Source of the
+    measure: seed §4.2 and §2.3.2.2 (:func:`unloaded_te_pp`).
+    """
+    from geometry.core.errors import LTCAError
+    from geometry.synthesis.case_synthesis import synthesize
+
+    opt = basic.options
+    drive = opt.drive_flank
+    plain = dataclasses.replace(opt.flank(drive), tip_relief=0.0, root_relief=0.0)
+    try:
+        case = synthesize(dataclasses.replace(basic, options=dataclasses.replace(
+            opt, **{drive: plain})), tip_planes=False)[0]
+        ute, span, _ = unloaded_te_pp(case)
+    except (LTCAError, ValueError, ArithmeticError) as exc:
+        log.info("the drive flank's unloaded TE without its relief not measured: %s", exc)
+        return math.nan, math.nan
+    return ute, span
 
 
 def refusal(check: ChangeCheck, reference_ute: float, limit: float) -> str | None:
@@ -448,6 +500,69 @@ def ute_lte_text(ute: float, span: float, lte: Sequence[float], limit: float,
             "checked before they are offered')")
 
 
+#: what the user can change where the relief sets the unloaded TE (:func:`relief_lte_text`),
+#: as measured on the face-hobbed 16×16 at Σ 60° (docs/synthesis.md, "The 16×16 at Σ 60° on
+#: the generated gear: the relief, not the pinion's modified roll")
+RELIEF_LEVER_TEXT = ("the relief keeps the pinion's edges out of contact under load, so a "
+                     "lighter one ([synthesis.<drive flank>] tip_relief, root_relief) trades "
+                     "the one for the other (measured on the face-hobbed 16x16 at Sigma 60 "
+                     "deg: 127/224 urad with 15/15 um, 63/270 urad with the root relief "
+                     "alone, 83/299 urad and 12 % plastic without), and no modified roll "
+                     "lowers it (the synthesis' 6D, 24E give the least unloaded TE there); "
+                     "more teeth on the same gear size raise both contact ratios, so that "
+                     "the pairs hand over inside the unrelieved flank and share the load "
+                     "(measured: that 16x16 as 24x24, ")
+
+#: the end of :data:`RELIEF_LEVER_TEXT`'s measure (docs/synthesis.md, "The 16×16 at Σ 60°
+#: on the generated gear: the relief, not the pinion's modified roll")
+RELIEF_MEASURED = ("face hobbed: eps_va 1.22, eps_vb 1.30, drive LTE p-p 69/67 urad at "
+                   "84/560 N m without plastic, coast 106/63 urad; face milled: eps_vb 1.40, "
+                   "19/32 urad at 69/460.5 N m")
+
+
+def relief_lte_text(ute: float, span: float, unrelieved: float, lte: Sequence[float],
+                    limit: float, relief: str = "", measured: str = "") -> str:
+    """The LTE diagnosis where the written drive flank's unloaded TE sets its LTE and its
+    profile relief sets that unloaded TE (:func:`lte_diagnosis`, cause ``"relief"``).
+
+    Parameters
+    ----------
+    ute : float — [µrad]
+        The written drive flank's unloaded TE p-p (:func:`unloaded_te_pp`).
+    span : float — [µm]
+        Its ease-off's extent (NaN: not said).
+    unrelieved : float — [µrad]
+        The same flank's unloaded TE p-p without its relief (:func:`unrelieved_te_pp`),
+        within ``limit``.
+    lte : sequence of float — [µrad]
+        Its LTE p-p at (light, design) torque.
+    limit : float — [µrad]
+        The verdict's LTE limit.
+    relief : str
+        The written relief as said (e.g. "tip/root relief 15/15 um"); empty: not named.
+    measured : str
+        The end of :data:`RELIEF_LEVER_TEXT`'s parenthesis: the more-teeth design's
+        measured LTE; empty: the measure of docs/synthesis.md.
+
+    Returns
+    -------
+    str
+        E.g. "the written drive flank's unloaded TE p-p is 156 urad (ease-off 258 um),
+        above the verdict's 60 urad before any load, and 15 urad without its profile
+        relief (tip/root relief 15/15 um; checked by a synthesis at the same
+        prescriptions): its relief, not its generation, sets the unloaded TE its LTE p-p
+        127/224 urad (light/design) keeps; the relief keeps …".
+    """
+    span_said = f" (ease-off {span:.0f} um)" if math.isfinite(span) else ""
+    named = f"{relief}; " if relief else ""
+    return (f"the written drive flank's unloaded TE p-p is {ute:.0f} urad{span_said}, above "
+            f"the verdict's {limit:g} urad before any load, and {unrelieved:.0f} urad "
+            f"without its profile relief ({named}checked by a synthesis at the same "
+            f"prescriptions): its relief, not its generation, sets the unloaded TE its "
+            f"LTE p-p {float(lte[0]):.0f}/{float(lte[-1]):.0f} urad (light/design) keeps; "
+            + RELIEF_LEVER_TEXT + (measured or RELIEF_MEASURED) + ")")
+
+
 def _ratio_effect(low: ChangeCheck | None, limit: float) -> str:
     """What a higher contact ratio does to the unloaded TE, as the checks measured it."""
     if low is None:
@@ -482,6 +597,9 @@ class RemedyRecord(NamedTuple):
     reference_ute: float  # [µrad] the written drive flank's unloaded TE p-p (NaN: not known)
     reference_span: float  # [µm] its ease-off's extent (NaN: not known)
     limit: float  # [µrad] the verdict's LTE limit the checks were judged against
+    #: [µrad] the written drive flank's unloaded TE p-p without its relief
+    #: (:func:`unrelieved_te_pp`; NaN: not measured)
+    unrelieved_ute: float = math.nan
 
 
 def remedy_record(record: RemedyRecord) -> dict[str, Any]:
@@ -496,7 +614,8 @@ def remedy_record(record: RemedyRecord) -> dict[str, Any]:
     -------
     dict
         ``note``, ``limit_urad``, ``unloaded_te_pp_urad`` and ``ease_off_um`` of the written
-        drive flank where measured, ``cpu_seconds``, and ``change``: one table per checked
+        drive flank where measured, ``unrelieved_te_pp_urad`` (without its relief) where
+        measured, ``cpu_seconds``, and ``change``: one table per checked
         change (``field``, ``value``, ``text``, ``other``, its measures, ``failed``,
         ``cpu_seconds``, and ``refused``: :func:`refusal`'s reason, "" where offered).
     """
@@ -517,7 +636,8 @@ def remedy_record(record: RemedyRecord) -> dict[str, Any]:
                     "why); ltca run's next step reads it",
             "limit_urad": float(record.limit),
             **kept(unloaded_te_pp_urad=record.reference_ute,
-                   ease_off_um=record.reference_span),
+                   ease_off_um=record.reference_span,
+                   unrelieved_te_pp_urad=record.unrelieved_ute),
             "cpu_seconds": round(sum(c.seconds for c in record.checks), 1),
             "change": changes}
 
@@ -548,7 +668,8 @@ def read_record(extra) -> RemedyRecord | None:
             for c in table.get("change", ()))
         return RemedyRecord(checks, float(table.get("unloaded_te_pp_urad", math.nan)),
                             float(table.get("ease_off_um", math.nan)),
-                            float(table["limit_urad"]))
+                            float(table["limit_urad"]),
+                            float(table.get("unrelieved_te_pp_urad", math.nan)))
     except (KeyError, TypeError, ValueError) as exc:
         log.info("the case's %s table not read: %s", RECORD_TABLE, exc)
         return None
@@ -590,7 +711,7 @@ class LteDiagnosis(NamedTuple):
     """What sets a written flank's LTE where it exceeds the verdict's limit and a contact
     ratio is low (:func:`lte_diagnosis`)."""
 
-    cause: str  # "unloaded_te" or "contact_ratios"
+    cause: str  # "unloaded_te", "relief" (the unloaded TE is the relief's) or "contact_ratios"
     text: str
 
 
@@ -608,7 +729,8 @@ RATIO_TRIAL_TEXT = ("a higher contact ratio is the lever left, and the change th
 def lte_diagnosis(lte: Sequence[float], limit: float,
                   written: tuple[float, float] | None,
                   prescriptions: Any = None,
-                  checks: Sequence[ChangeCheck] = ()) -> LteDiagnosis:
+                  checks: Sequence[ChangeCheck] = (),
+                  unrelieved: float = math.nan) -> LteDiagnosis:
     """What sets the written drive flank's LTE, said the same way by ``ltca synthesize``'s
     note (:func:`contact.commands.synthesize.reach_text`) and ``ltca run``'s next step
     (:func:`contact.commands.next_steps.overlap_lines`): its unloaded TE
@@ -636,11 +758,17 @@ def lte_diagnosis(lte: Sequence[float], limit: float,
         LTE above it whatever the contact ratio: the cause is the contact ratios, said
         with that check's number (:func:`ute_lowered_text`; the 21×21 of round 21: 97 →
         51 µrad at b2 39.3 mm). Default none.
+    unrelieved : float, optional — [µrad]
+        The written drive flank's unloaded TE p-p without its profile relief
+        (:func:`unrelieved_te_pp`; the record's ``unrelieved_ute``): where the unloaded TE
+        sets the LTE and this is within ``limit``, the relief, not the prescriptions' TE,
+        is the cause (:func:`relief_lte_text`). Default NaN: not measured.
 
     Returns
     -------
     LteDiagnosis
-        ``cause`` "unloaded_te" with :func:`ute_lte_text`'s statement, or
+        ``cause`` "unloaded_te" with :func:`ute_lte_text`'s statement, "relief" with
+        :func:`relief_lte_text`'s, or
         "contact_ratios" with :data:`RATIO_TRIAL_TEXT` (after :func:`ute_lowered_text`'s
         numbers where a check lowered the unloaded TE within ``limit``).
     """
@@ -654,8 +782,21 @@ def lte_diagnosis(lte: Sequence[float], limit: float,
         if low is not None and low.ute <= limit:
             return LteDiagnosis("contact_ratios",
                                 ute_lowered_text(written[0], written[1], low, limit))
+        if math.isfinite(unrelieved) and unrelieved <= limit:
+            return LteDiagnosis("relief", relief_lte_text(
+                written[0], written[1], unrelieved, lte, limit, _relief_said(values)))
         named = ", ".join(f"{k} {float(values[k]):.3g}" for k in
                           ("path_angle", "ellipse_length", "te_level") if k in values)
         return LteDiagnosis("unloaded_te", ute_lte_text(written[0], written[1], lte, limit,
                                                         named, low))
     return LteDiagnosis("contact_ratios", RATIO_TRIAL_TEXT)
+
+
+def _relief_said(values: Any) -> str:
+    """The written drive relief as the prescriptions give it [µm]: "tip/root relief 15/15
+    um"; "" where they do not give both."""
+    try:
+        tip, root = float(values["tip_relief"]), float(values["root_relief"])
+    except (KeyError, TypeError, ValueError):
+        return ""
+    return f"tip/root relief {tip:g}/{root:g} um"
