@@ -92,6 +92,7 @@ def test_the_note_of_the_16x16_in_numbers():
     assert "up to about 319 N m (49 % of the design torque" in text
     assert "[synthesis] design_torque" in text
     assert "24x24, eps_va 1.22, eps_vb 1.40" in text
+    assert "(measured: that 16x16 at 300 N m" in text  # named by the curvature clause
     # far from ratio 1, no curvature clause; within the limit at the design torque, no note
     assert "curvature" not in deflection_text(found, 0.32)
     assert deflection_text(DeflectionLTE((10.0, 20.0), (70.0, 50.0), (100.0, 200.0),
@@ -275,3 +276,24 @@ def test_the_between_note_in_numbers_and_where_it_is_silent():
     assert between_text(found._replace(lte=(35.0, 77.3, 58.0, 61.0))) is None
     assert between_text(found._replace(lte=(61.0, 77.3, 58.0, 52.0))) is None
     assert between_text(DeflectionLTE((1.0, 2.0), (30.0, 40.0), (1.0, 2.0), 60.0)) is None
+
+
+def test_the_16x16_introduced_where_the_curvature_clause_is_not_said():
+    """Round 22's spiral bevel 14x36 at Sigma 70 deg (ratio 2.57, no curvature clause): its
+    note said "(measured: that 16x16 at 300 N m ...)" of a pair it had never named. Its
+    written case's numbers (ltca synthesize with every default, 2026-11-27): LTE p-p 14 /
+    36 / 48 / 60 / 82 / 78 urad at 55.6 / 108.2 / 134.5 / 160.8 / 266 / 371.2 N m; the
+    mean deflections are stand-ins, only the design torque's (615 urad, as its note) is
+    read."""
+    found = DeflectionLTE((55.6, 108.2, 134.5, 160.8, 266.0, 371.2),
+                          (14.2, 36.0, 47.6, 60.1, 81.6, 77.9),
+                          (150.0, 250.0, 300.0, 350.0, 500.0, 615.0), 60.0)
+    for curvature in (math.nan, 0.32):  # not given; far from ratio 1
+        text = deflection_text(found, curvature)
+        assert "curvature" not in text
+        assert "that 16x16" not in text
+        assert ("(measured: a ratio-1 spiral bevel 16x16 at a shaft angle of 60 deg, its "
+                "ISO capacity 649.4 N m at 300 N m, LTE p-p 57/55 urad") in text
+        # the 13x39 is named in full before "that 13x39" could be needed
+        assert "a ratio-3 spiral bevel 13x39" in text
+        assert "deflect 615 urad on average at 371.2 N m" in text

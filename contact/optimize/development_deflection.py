@@ -267,10 +267,17 @@ def deflection_text(found: DeflectionLTE, curvature: float = math.nan) -> str | 
     torque = found.torques[-1]
     within = within_text(found.torques, found.lte, found.limit, torque, urad="urad",
                          nm="N m")
+    curved = curvature > CURVATURE_RATIO_NOTE
+    # the 16x16 is named by the curvature clause where it is said; without it (a pair far
+    # from ratio 1) the note introduces it here, not as "that 16x16" the reader never met
+    # (round 22: the spiral bevel 14x36 at Sigma 70 deg's note)
+    sixteen = ("that 16x16" if curved else
+               "a ratio-1 spiral bevel 16x16 at a shaft angle of 60 deg, its ISO capacity "
+               "649.4 N m")
     up_to = ("" if within is None else
              f"; the written bearing keeps it {within}: a design torque at or below it "
-             "([synthesis] design_torque) is the step that keeps the limit (measured: that "
-             "16x16 at 300 N m, LTE p-p 57/55 urad at 45/300 N m)")
+             f"([synthesis] design_torque) is the step that keeps the limit (measured: "
+             f"{sixteen} at 300 N m, LTE p-p 57/55 urad at 45/300 N m)")
     return (f"what sets the drive LTE at the design torque: the teeth deflect "
             f"{found.deflection[-1]:.0f} urad on average at {plain_number(torque)} N m (the "
             f"gear's lag under load, the mean loaded TE less the unloaded), and the LTE p-p "
@@ -285,7 +292,7 @@ def deflection_text(found: DeflectionLTE, curvature: float = math.nan) -> str | 
                "load (measured: that 16x16 as 24x24, eps_va 1.22, eps_vb 1.40, LTE p-p 19/32 "
                "urad at 69/460.5 N m, its local pitting capacity; a wider face or a larger "
                "spiral angle to eps_vb 1.26-1.28 kept 92-114 urad at 677-730 N m)"
-               if curvature > CURVATURE_RATIO_NOTE
+               if curved
                else "") + up_to
             + " (docs/synthesis.md, 'The LTE at the design torque: the teeth's deflection')")
 
