@@ -213,3 +213,18 @@ def test_a_drive_target_gained_at_the_same_root_safety_is_kept(stubbed):
     assert not dg._better(best, 1.246, gained, math.nan)
     assert not dg._better(gained, 1.246, best, 1.247)  # a target fewer: no
     assert dg._better(gained, 1.246, best, 1.252)  # ROOT_GAIN higher: yes (lost checked apart)
+
+
+def test_the_first_variants_measured_slope_sets_the_others(stubbed):
+    """No slope measured for the bearing: the first variant at the default 0.28 per degree
+    (−0.095/0.28 = −0.339°, v 0.466 — the 8×47's synthesize went there, 0.46); it
+    measures the law's 0.5 per degree, and the next variants aim with it: −0.19° (v 0.541)
+    with the tip relief 32.1 µm."""
+    stubbed["plastic_above_v"] = 0.6
+    best = _evaluation(WRITTEN, stubbed)
+    dg.checked_given_root(best, 1.246, 1.3, TARGETS, dict(SETUP), None, lambda line: None,
+                          lambda v: None, stubbed["root_of"], slope=None)
+    first, second = stubbed["analysed"][:2]
+    assert first[HEIGHT_NAME] == pytest.approx(-0.095 / 0.28, abs=1e-12)
+    assert second[HEIGHT_NAME] == pytest.approx(-0.19, abs=1e-9)
+    assert second["tip_relief"] == pytest.approx(32.1, abs=1e-12)

@@ -720,7 +720,7 @@ def _given_root_bearing(written: tuple, targets: DevelopmentTargets, setup: dict
     torques = [float(t) for t in setup["torques"]]
 
     def root_of(values):
-        c = write(with_flank_options(developed, flank, values))[0]
+        c = write(with_flank_options(developed, flank, values), progress=None)[0]
         s, _, member = root_safety(_root_tree_of(decided_case(c, setup), torques))
         return float(s[-1]), member
 

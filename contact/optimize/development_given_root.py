@@ -195,7 +195,9 @@ def checked_given_root(best: DevelopmentEvaluation, safety: float, s_min: float,
 
     Notes
     -----
-    Kept where no target ``best`` met is lost
+    The first variant's measured d(centre v)/d(blade angle) (where at least
+    :data:`~contact.optimize.development_stages.HEIGHT_SLOPE_MIN`) sets the blade angle of
+    the others. Kept where no target ``best`` met is lost
     (:func:`~contact.optimize.development_keep.lost_targets`), S_F,FE rises by at least
     :data:`ROOT_GAIN` over the design kept so far or stays within it while more targets
     are met (:func:`_better`), and it is tolerant (the mounting excursions). Variants are
@@ -225,9 +227,22 @@ def checked_given_root(best: DevelopmentEvaluation, safety: float, s_min: float,
         f"N m is above the written bearing's root capacity (S_F,FE {safety:.3f} < "
         f"{s_min:g}); a pattern centred lower (the gear loaded nearer its root) tried")
     chosen, chosen_safety = best, safety
-    for values, label in variants:
+    b0 = float(best.values[HEIGHT_NAME])
+    n = 0
+    while n < len(variants):
+        values, label = variants[n]
+        n += 1
         e = said_variant(best, values, "given root", label, targets, setup, teeth, say,
                          placed)
+        if n == 1 and e is not None and e.metrics is not None:
+            # the slope the first variant measured (the bearing's own: the 8x47's 0.5 per
+            # degree against the default 0.28) sets the heights of the others
+            db = float(values[HEIGHT_NAME]) - b0
+            dv = float(e.metrics["pattern_centre_v"][0]) - v0
+            if db != 0.0 and math.isfinite(dv) and dv / db >= HEIGHT_SLOPE_MIN:
+                variants = variants[:1] + root_variants(
+                    best.values, v0, target, targets.centre_tolerance, targets.variables,
+                    dv / db)[1:]
         if e is None or e.full is None:
             trials.append(RootTrial(label, math.nan, "", ("analysis",), math.nan))
             continue
