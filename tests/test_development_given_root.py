@@ -228,3 +228,23 @@ def test_the_first_variants_measured_slope_sets_the_others(stubbed):
     assert first[HEIGHT_NAME] == pytest.approx(-0.095 / 0.28, abs=1e-12)
     assert second[HEIGHT_NAME] == pytest.approx(-0.19, abs=1e-9)
     assert second["tip_relief"] == pytest.approx(32.1, abs=1e-12)
+
+
+def test_a_later_tip_relief_start_is_tried_at_each_height():
+    """With ``tip_relief_start`` developed (0.608 as written): after the three tip reliefs,
+    × 1.5 from 0.708 at each height; from 0.85 the start is clipped to its bound 0.9, at
+    the bound nothing more."""
+    values = {HEIGHT_NAME: 0.0, "tip_relief": 21.4, "tip_relief_start": 0.608}
+    bounds = {**BOUNDS, "tip_relief_start": (0.5, 0.9)}
+    out = dg.root_variants(values, V0, 0.541, 0.08, bounds, SLOPE)
+    assert len(out) == 8
+    later = [v for v, _ in out if v["tip_relief_start"] != 0.608]
+    assert [v[HEIGHT_NAME] for v in later] == pytest.approx([-0.19, -0.31], abs=1e-12)
+    assert all(v["tip_relief"] == pytest.approx(32.1) and v["tip_relief_start"]
+               == pytest.approx(0.708, abs=1e-12) for v in later)
+    assert "from 0.708" in out[3][1]
+    out = dg.root_variants({**values, "tip_relief_start": 0.85}, V0, 0.541, 0.08, bounds,
+                           SLOPE)
+    assert out[3][0]["tip_relief_start"] == 0.9
+    assert len(dg.root_variants({**values, "tip_relief_start": 0.9}, V0, 0.541, 0.08,
+                                bounds, SLOPE)) == 6
