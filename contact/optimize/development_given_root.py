@@ -22,7 +22,10 @@ light-load centre v at 0.64 / 0.54 / 0.46 / 0.39 and the gear's FE root safety a
 1.331 / 1.369 / 1.379 (the pinion's 1.53 / 1.46 / 1.41 / 1.33): the lower pattern loads
 the gear nearer its root, so its fillet stress falls (657 → 598 MPa at −0.35°); the tip
 relief 21 → 32 µm at −0.2° raises it again (S_F,FE 1.287) — docs/own_gear_set.md, "A given
-torque above the gear's root capacity". Imported by :mod:`contact.optimize.development`.
+torque above the gear's root capacity". There, at 1765 N·m, every lower pattern that keeps
+the pinion tip edge elastic misses the pattern length (0.62 of the face against 0.6 at
+most) and none is kept: the note says so with each variant's numbers. Imported by
+:mod:`contact.optimize.development`.
 """
 
 from __future__ import annotations
