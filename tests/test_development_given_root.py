@@ -248,3 +248,52 @@ def test_a_later_tip_relief_start_is_tried_at_each_height():
     assert out[3][0]["tip_relief_start"] == 0.9
     assert len(dg.root_variants({**values, "tip_relief_start": 0.9}, V0, 0.541, 0.08,
                                 bounds, SLOPE)) == 6
+
+
+def test_the_development_writes_the_kept_bearing_and_says_it(monkeypatch):
+    """``develop``'s wiring (:func:`contact.optimize.development._given_root_bearing`), the
+    step and the synthesis replaced: no failing root check (``setup`` without
+    ``given_root``), nothing done; a variant kept that holds the given torque: written
+    (the re-synthesis, its FE models built, the root checked again), the note gone and
+    the design torque's source saying S_F,FE 1.246 -> 1.31; one kept short of S_Fmin: the
+    new check's note with what was tried; none kept: the note extended."""
+    from contact.optimize import development as dev
+
+    best = _evaluation(WRITTEN, {"plastic_above_v": 0.0, "tip_clears": 30.0})
+    kept = dataclasses.replace(best, values={**WRITTEN, HEIGHT_NAME: -0.19})
+    written = (best, "basic", "case", "report")
+    calls: list[str] = []
+    monkeypatch.setattr(dev, "with_flank_options", lambda b, f, v: ("basic", dict(v)))
+
+    def write(basic, **kw):
+        calls.append("write")
+        return "case2", "report2"
+
+    def built(case):
+        calls.append(f"built {case}")
+
+    setup = {"torques": [264.7, 1765.0], "source": "[synthesis] design_torque"}
+    out = dev._given_root_bearing(written, TARGETS, setup, None, lambda s: None, None,
+                                  write, built, 1.246, "", "concave", True, None)
+    assert out == (*written, 1.246, "") and calls == []
+
+    trial = dg.RootTrial("centred lower", 1.31, "gear", (), 0.541)
+    for result, again, text in (((kept, 1.31, [trial]), (1.31, ""), ""),
+                                ((kept, 1.28, [trial]), (1.28, "still FAIL"), "still FAIL; "),
+                                ((best, 1.246, [trial]), None, "FAIL at 1765; ")):
+        calls.clear()
+        monkeypatch.setattr(dg, "checked_given_root", lambda *a, r=result, **k: r)
+        monkeypatch.setattr(dev, "given_torque_root", lambda c, s, say, a=again: a)
+        s = dict(setup, given_root=(1.246, 1.3, "gear"))
+        out = dev._given_root_bearing(written, TARGETS, s, None, lambda line: None, None,
+                                      write, built, 1.246, "FAIL at 1765", "concave", True,
+                                      None)
+        if result[0] is best:  # none kept: the written case, the note extended
+            assert out[:5] == (*written, 1.246) and calls == []
+            assert out[5].startswith("FAIL at 1765; a pattern centred lower was tried")
+            continue
+        assert out[0] is kept and out[2:4] == ("case2", "report2")
+        assert calls == ["write", "built case2"] and "given_root" not in s
+        assert out[4] == again[0] and out[5].startswith(text)
+        if not again[1]:
+            assert out[5] == "" and "S_F,FE 1.25 -> 1.31 >= S_Fmin 1.3" in s["source"]
