@@ -546,6 +546,16 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
         # checked as ltca run judges it (on the default FE model where the coarse level
         # fails: the case written names it) and a failure said (development_root)
         root_safety, given_root_text = _given_root(case, setup, say, root_stress)
+        # where the root binds at the given torque: the drive bearing of the highest
+        # root safety that loses no met target (development_given_root)
+        best, developed, case, report, root_safety, given_root_text = _given_root_bearing(
+            (best, developed, case, report), targets, setup, teeth, say, placed,
+            functools.partial(synthesize, progress=synthesis_progress, memo=memo),
+            functools.partial(_both_flanks_built, wanted=root_stress
+                              and coast.best is not None, built=built, say=say,
+                              setup=setup),
+            root_safety, given_root_text, flank, root_stress,
+            evaluate.slopes.get(bearing_key(best.values)))
     # the coast flank at its own design torque as `ltca run --flank coast` analyses it,
     # the coast design torque lowered to what its developed bearing carries (flank static
     # strength, no plastic segment, root stress) where that is less
@@ -686,6 +696,62 @@ def _given_root(case: Case, setup: dict[str, Any], say: Callable[[str], None],
     if not root_stress:
         return math.nan, ""
     return given_torque_root(case, setup, say)
+
+
+def _given_root_bearing(written: tuple, targets: DevelopmentTargets, setup: dict[str, Any],
+                        teeth: KeptTeeth, say: Callable[[str], None],
+                        placed: Callable, write: Callable[[BasicDesign], tuple],
+                        built: Callable[[Case], Any], safety: float, text: str, flank: str,
+                        root_stress: bool, slope: float | None) -> tuple:
+    """The written (drive design, basic design, case, report, S_F,FE, note) with the drive
+    bearing of :func:`~contact.optimize.development_given_root.checked_given_root` where it
+    keeps one (written, its FE models built, its root stress at the given torque checked
+    again as ``ltca run`` judges it), the note extended by what was tried. ``written``
+    itself with ``safety`` and ``text`` where the root is not the binding limit
+    (``setup["given_root"]`` unset) or nothing was tried."""
+    from contact.optimize.development_given_root import checked_given_root, tried_text
+    from contact.optimize.development_root import decided_case, root_safety
+
+    best, developed, case, report = written
+    given = setup.get("given_root")
+    if given is None or not root_stress:
+        return (*written, safety, text)
+    s0, s_min, _ = given
+    torques = [float(t) for t in setup["torques"]]
+
+    def root_of(values):
+        c = write(with_flank_options(developed, flank, values), progress=None)[0]
+        s, _, member = root_safety(_root_tree_of(decided_case(c, setup), torques))
+        return float(s[-1]), member
+
+    kept, s_kept, trials = checked_given_root(best, s0, s_min, targets, setup, teeth, say,
+                                              placed, root_of, slope)
+    if kept is best:
+        tried = tried_text(trials, s0, s_min, False)
+        return (*written, safety, f"{text}; {tried}" if tried else text)
+    developed = with_flank_options(developed, flank, kept.values)
+    case, report = write(developed)
+    built(case)
+    setup.pop("given_root", None)
+    safety, again = given_torque_root(case, setup, say)
+    tried = tried_text(trials, s_kept, s_min, True)
+    if again:
+        return kept, developed, case, report, safety, f"{again}; {tried}"
+    say(f"development: {tried}; it holds the given design torque "
+        f"{plain_number(torques[1])} N m")
+    # the design torque's source line says it (the note on a failing root is gone)
+    setup["source"] = (f"{setup['source']}; the drive pattern centred lower for the gear "
+                       f"root, which binds there: S_F,FE {s0:.2f} -> {safety:.2f} >= "
+                       f"S_Fmin {s_min:g}")
+    return kept, developed, case, report, safety, ""
+
+
+def _root_tree_of(case: Case, torques: list[float]):
+    """:func:`contact.optimize.development_root._root_tree` (``ltca run``'s drive analysis
+    with the root stress and the rating), looked up when called (tests replace it)."""
+    from contact.optimize import development_root
+
+    return development_root._root_tree(case, torques)
 
 
 def _coast_edges_relieved(written: tuple, drive: DevelopmentEvaluation,

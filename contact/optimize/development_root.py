@@ -615,7 +615,8 @@ def given_torque_root(case, setup: dict[str, Any], say: Callable[[str], None]
     ----------
     case : geometry.case.Case — the case written (its ``[root_stress] fe_level``)
     setup : dict — the development's state: ``"torques"`` (light, design) [N·m]; gets
-        ``"fe_level"`` and ``"fe_level_why"`` where the default model decided
+        ``"fe_level"`` and ``"fe_level_why"`` where the default model decided, and
+        ``"given_root"`` (S_F,FE [1], S_Fmin [1], member) where S_F,FE < S_Fmin
     say : callable — one plain line per step (the CLI prints them)
 
     Returns
@@ -666,6 +667,9 @@ def given_torque_root(case, setup: dict[str, Any], say: Callable[[str], None]
         say(f"development: at the given design torque {plain_number(torque)} N m S_F,FE "
             f"{safety:.2f} ({member}) >= {s_min:g}")
         return safety, ""
+    # for the bearing step that follows (development_given_root): the safety it starts
+    # from, the minimum and the member
+    setup["given_root"] = (safety, s_min, member)
     low, high, default = CRITERIA["root"][2]
     b = _exponent(torques[0], float(s[0]), torque, safety, default, low, high)
     holds = root_capacity_step(torque, safety, s_min, exponent=b)
