@@ -418,7 +418,7 @@ def _lte_notes(basic, case, development, ratios) -> tuple[list[str], object]:
         # each checked by a synthesis before it is offered; the written case's unloaded TE,
         # where it is what the LTE is, named instead of the contact ratios
         from contact.load_capacity.iso10300.face_contact import low_ratio_text
-        from contact.optimize.development_remedy import checked_record, worst_lte
+        from contact.optimize.development_remedy import checked_record, lte_within
         from contact.optimize.remedy_check import recorded_judge
         from contact.study.verdicts import LTE_LIMIT
 
@@ -427,9 +427,8 @@ def _lte_notes(basic, case, development, ratios) -> tuple[list[str], object]:
         # the sentence said from those checks
         # a change its check measures no better is no remedy where the written LTE
         # is already within the limit (contact.optimize.remedy_check.no_better)
-        met = development is not None and worst_lte(development) <= LTE_LIMIT
         record = checked_record(_prescribed(basic, case, development), basic.design,
-                                written, LTE_LIMIT, met)
+                                written, LTE_LIMIT, lte_within(development, LTE_LIMIT))
         checks = () if record is None else record.checks
         unrel = math.nan if record is None else record.unrelieved_ute
         said = low_ratio_text(basic.design, FACE_CONTACT_RATIO_NOTE,

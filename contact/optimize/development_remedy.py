@@ -34,7 +34,7 @@ Public names
 ------------
 REMEDY_TABLE, AppliedRemedy, ratio_changes, contact_ratios_of, prescribed_basic,
 checked_record, chosen_check, remedied_basic, file_value, change_text, lte_parts, worst_lte,
-developed_with_remedy, applied_table
+lte_within, developed_with_remedy, applied_table
 """
 
 from __future__ import annotations
@@ -49,7 +49,7 @@ from geometry.core.text import plain_number
 
 __all__ = ["REMEDY_TABLE", "AppliedRemedy", "applied_table", "change_text", "checked_record",
            "chosen_check", "contact_ratios_of", "developed_with_remedy", "file_value", "lte_parts",
-           "prescribed_basic", "ratio_changes", "remedied_basic", "worst_lte"]
+           "lte_within", "prescribed_basic", "ratio_changes", "remedied_basic", "worst_lte"]
 
 log = logging.getLogger(__name__)
 
@@ -366,6 +366,21 @@ def worst_lte(development) -> float:
     return worst
 
 
+def lte_within(development, limit: float) -> bool:
+    """Whether a development's written LTE p-p is within the verdict's limit: drive and,
+    where checked, coast, at the light and the design torque (:func:`worst_lte`); False
+    without a development. A contact-ratio change its check measures no better than that
+    design is then no remedy (:func:`~contact.optimize.remedy_check.no_better`).
+
+    Parameters
+    ----------
+    development : contact.optimize.development.DevelopmentResult or None
+    limit : float — [µrad]
+        The verdict's LTE limit (:data:`contact.study.verdicts.LTE_LIMIT`).
+    """
+    return development is not None and worst_lte(development) <= limit
+
+
 def _refused_text(record) -> str:
     """Why no change is applied: each one's refusal (:func:`~contact.optimize.remedy_check.
     refusal`)."""
@@ -445,7 +460,7 @@ def developed_with_remedy(run: Callable[[Any], Any], basic,
         log.info("the written case's unloaded TE not measured: %s", exc)
         written = None
     record = checked_record(prescribed_basic(basic, first.case, first), basic.design,
-                            written, LTE_LIMIT, worst_lte(first) <= LTE_LIMIT)
+                            written, LTE_LIMIT, lte_within(first, LTE_LIMIT))
     chosen = chosen_check(record)
     if chosen is None:
         raise InputError(
