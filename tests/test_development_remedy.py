@@ -428,3 +428,73 @@ def test_no_next_remedy_where_the_first_keeps_the_limit_between_its_torques(monk
     assert len(result.remedy.developed) == 1 and result.remedy.kept_why == ""
     assert len(first_lines(result.remedy.basic, result, None, "x.toml")) == 3
     assert "developed" not in applied_table(result.remedy)
+
+
+# --- remedies that are no remedy (issue 71, round 22, branch remedy82) ---
+
+SEVEN = UNSEEN / "industrial_hypoid_7x51_m9.toml"
+TWENTY_TWO = UNSEEN / "industrial_spiral_bevel_22x33_m8p5.toml"
+#: the 7x51's checks as round 22's note printed them (k_d 2.07: 53 urad, 182 um; alpha_dD
+#: 20.5 deg: 58 urad, 152 um) and its written drive flank's unloaded TE p-p 52 urad
+SEVEN_MEASURED = {"k_d": (53.0, 182.0, 0.7), "alpha_dD": (58.0, 152.0, 0.7)}
+SEVEN_WRITTEN = (52.0, 160.0, 0.7)
+
+
+def _seven_result(basic, lte=(19.0, 14.0), coast_lte=(23.0, 22.0)):
+    """The 7x51's development as round 22 measured it: drive 19/14, coast 23/22 urad
+    (light/design), every one within the verdict's 60 urad."""
+    return _result(basic, lte, coast_lte)
+
+
+def test_apply_remedy_never_applies_a_change_no_better_than_the_written_design(monkeypatch):
+    """The 7x51 (eps_va 0.97, its LTE within 60 urad): both changes check no lower than the
+    written 52 urad (53, 58), so --apply-remedy applies neither: an InputError naming each
+    as no remedy, after the one development of the design as given (no second one)."""
+    from contact.optimize.development_remedy import lte_within
+
+    basic = load_basic(SEVEN)
+    seen = _stand_in_checks(monkeypatch, SEVEN_MEASURED, SEVEN_WRITTEN)
+    developed: list = []
+    with pytest.raises(InputError, match=r"no contact-ratio remedy passed its check.*\(a depth "
+                                         r"factor k_d of 2\.07.*: not a remedy here: unloaded "
+                                         r"TE p-p 53 urad, no lower than the written case's "
+                                         r"52.*alpha_dD of 20\.5 deg.*58 urad"):
+        developed_with_remedy(lambda b: developed.append(b) or _seven_result(b), basic)
+    assert len(developed) == 1 and seen == ["k_d", "alpha_dD"]
+    # the rule's input: the worst of drive and coast, light and design, against the limit
+    assert lte_within(_seven_result(basic), 60.0)
+    assert not lte_within(_seven_result(basic, coast_lte=(23.0, 61.0)), 60.0)
+    assert not lte_within(None, 60.0)
+
+
+def test_apply_remedy_applies_it_as_a_trial_where_the_written_lte_misses(monkeypatch):
+    """The same checks where the written LTE exceeds 60 urad (86/93): the change that
+    checks no lower is still applied, the trial the note calls it (the 15x28's beta_m
+    43.9 deg checked 173 against 90 urad and developed 34/53 against 90/103): k_d 2.07,
+    the lower of the two (53 against 58 urad)."""
+    basic = load_basic(SEVEN)
+    _stand_in_checks(monkeypatch, SEVEN_MEASURED, SEVEN_WRITTEN)
+    developed: list = []
+
+    def run(b):
+        developed.append(b)
+        return _seven_result(b, (86.0, 93.0) if len(developed) == 1 else (20.0, 45.0))
+
+    result = developed_with_remedy(run, basic)
+    assert result.remedy.check.change.field == "k_d" and developed[1].design.k_d == 2.07
+    assert result.remedy.record.lte_met is False
+
+
+def test_apply_remedy_refuses_a_ratio_at_its_target_before_any_work(monkeypatch):
+    """The 22x33 (eps_vb 1.247, within 0.01 of 1.25; eps_va 1.23): no change to apply,
+    said before any development or check (round 22's note offered b2 48 -> 48.1 mm)."""
+    seen = _stand_in_checks(monkeypatch, {})
+
+    def run(b):
+        raise AssertionError("developed")
+
+    with pytest.raises(InputError, match=r"no contact ratio of this design is below its "
+                                         r"limit \(eps_va 1.23, eps_vb 1.25; limits 1 / 1.25, "
+                                         r"AGMA 2005-D03; one within 0.01 below it is at it\)"):
+        developed_with_remedy(run, load_basic(TWENTY_TWO))
+    assert seen == []

@@ -418,15 +418,17 @@ def _lte_notes(basic, case, development, ratios) -> tuple[list[str], object]:
         # each checked by a synthesis before it is offered; the written case's unloaded TE,
         # where it is what the LTE is, named instead of the contact ratios
         from contact.load_capacity.iso10300.face_contact import low_ratio_text
-        from contact.optimize.development_remedy import checked_record
+        from contact.optimize.development_remedy import checked_record, lte_within
         from contact.optimize.remedy_check import recorded_judge
         from contact.study.verdicts import LTE_LIMIT
 
         written = _written_ute(case, development, ratios)
         # each change checked once (the record the case keeps and --apply-remedy applies),
         # the sentence said from those checks
+        # a change its check measures no better is no remedy where the written LTE
+        # is already within the limit (contact.optimize.remedy_check.no_better)
         record = checked_record(_prescribed(basic, case, development), basic.design,
-                                written, LTE_LIMIT)
+                                written, LTE_LIMIT, lte_within(development, LTE_LIMIT))
         checks = () if record is None else record.checks
         unrel = math.nan if record is None else record.unrelieved_ute
         said = low_ratio_text(basic.design, FACE_CONTACT_RATIO_NOTE,

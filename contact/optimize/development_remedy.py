@@ -34,7 +34,7 @@ Public names
 ------------
 REMEDY_TABLE, AppliedRemedy, ratio_changes, contact_ratios_of, prescribed_basic,
 checked_record, chosen_check, remedied_basic, file_value, change_text, lte_parts, worst_lte,
-developed_with_remedy, applied_table
+lte_within, developed_with_remedy, applied_table
 """
 
 from __future__ import annotations
@@ -49,7 +49,7 @@ from geometry.core.text import plain_number
 
 __all__ = ["REMEDY_TABLE", "AppliedRemedy", "applied_table", "change_text", "checked_record",
            "chosen_check", "contact_ratios_of", "developed_with_remedy", "file_value", "lte_parts",
-           "prescribed_basic", "ratio_changes", "remedied_basic", "worst_lte"]
+           "lte_within", "prescribed_basic", "ratio_changes", "remedied_basic", "worst_lte"]
 
 log = logging.getLogger(__name__)
 
@@ -123,9 +123,12 @@ def ratio_changes(design) -> list:
     Returns
     -------
     list of contact.load_capacity.iso10300.face_contact.RatioChange
-        Empty where both ratios meet their limits or the blank cannot be computed.
+        Empty where both ratios meet their limits or are at them (within
+        :data:`~contact.load_capacity.iso10300.face_contact.RATIO_AT_TARGET`: a change
+        below a meaningful step), or the blank cannot be computed.
     """
     from contact.load_capacity.iso10300.face_contact import (
+        at_target,
         overlap_changes,
         overlap_remedy,
         profile_changes,
@@ -133,18 +136,21 @@ def ratio_changes(design) -> list:
     )
     from geometry.core.errors import InputError
 
+    # a ratio at its target (within RATIO_AT_TARGET) has no change to offer nor to apply
     out: list = []
     try:
         face = overlap_remedy(design)
     except (InputError, ValueError, ZeroDivisionError):
         face = None
-    if face is not None and face.eps_vb < face.target:
+    if (face is not None and face.eps_vb < face.target
+            and not at_target(face.eps_vb, face.target)):
         out += overlap_changes(face, design)
     try:
         profile = profile_remedy(design)
     except (InputError, ValueError, ZeroDivisionError, AttributeError):
         profile = None
-    if profile is not None and profile.eps_va < profile.target:
+    if (profile is not None and profile.eps_va < profile.target
+            and not at_target(profile.eps_va, profile.target)):
         out += profile_changes(profile)
     return out
 
@@ -193,7 +199,8 @@ def prescribed_basic(basic, case, development=None):
     return prescribed
 
 
-def checked_record(prescribed, design, written: tuple[float, float] | None, limit: float):
+def checked_record(prescribed, design, written: tuple[float, float] | None, limit: float,
+                   lte_met: bool = False):
     """Each change of :func:`ratio_changes` checked by one synthesis at the written
     prescriptions (:func:`~contact.optimize.remedy_check.check_change`).
 
@@ -208,13 +215,18 @@ def checked_record(prescribed, design, written: tuple[float, float] | None, limi
         (:func:`~contact.optimize.remedy_check.unloaded_te_pp`); None: not measured.
     limit : float — [µrad]
         The verdict's LTE limit.
+    lte_met : bool, optional
+        Whether the written design's developed LTE p-p is within ``limit``
+        (:func:`worst_lte`): a change whose check measures no lower unloaded TE is then
+        no remedy (:func:`~contact.optimize.remedy_check.no_better`). Default False.
 
     Returns
     -------
     contact.optimize.remedy_check.RemedyRecord or None
-        None where no contact ratio is below its limit (no change to check). Where the
-        written unloaded TE exceeds ``limit``, its ``unrelieved_ute`` is measured too
-        (:func:`~contact.optimize.remedy_check.unrelieved_te_pp`, one more synthesis):
+        None where no contact ratio is below its limit (or at it, within
+        :data:`~contact.load_capacity.iso10300.face_contact.RATIO_AT_TARGET`): no change to
+        check. Where the written unloaded TE exceeds ``limit``, its ``unrelieved_ute`` is
+        measured too (:func:`~contact.optimize.remedy_check.unrelieved_te_pp`, one more synthesis):
         whether the relief or the generation sets it.
     """
     from contact.optimize.remedy_check import RemedyRecord, check_change, unrelieved_te_pp
@@ -226,7 +238,7 @@ def checked_record(prescribed, design, written: tuple[float, float] | None, limi
     unrelieved = (unrelieved_te_pp(prescribed)[0]
                   if written is not None and written[0] > limit else math.nan)
     return RemedyRecord(checks, *(written if written is not None else (math.nan,) * 2),
-                        float(limit), unrelieved)
+                        float(limit), unrelieved, bool(lte_met))
 
 
 def chosen_check(record):
@@ -242,7 +254,8 @@ def chosen_check(record):
 
     if record is None:
         return None
-    passed, _ = ranked_changes(record.checks, record.reference_ute, record.limit)
+    passed, _ = ranked_changes(record.checks, record.reference_ute, record.limit,
+                               record.lte_met)
     return passed[0] if passed else None
 
 
@@ -353,12 +366,28 @@ def worst_lte(development) -> float:
     return worst
 
 
+def lte_within(development, limit: float) -> bool:
+    """Whether a development's written LTE p-p is within the verdict's limit: drive and,
+    where checked, coast, at the light and the design torque (:func:`worst_lte`); False
+    without a development. A contact-ratio change its check measures no better than that
+    design is then no remedy (:func:`~contact.optimize.remedy_check.no_better`).
+
+    Parameters
+    ----------
+    development : contact.optimize.development.DevelopmentResult or None
+    limit : float — [µrad]
+        The verdict's LTE limit (:data:`contact.study.verdicts.LTE_LIMIT`).
+    """
+    return development is not None and worst_lte(development) <= limit
+
+
 def _refused_text(record) -> str:
     """Why no change is applied: each one's refusal (:func:`~contact.optimize.remedy_check.
     refusal`)."""
     from contact.optimize.remedy_check import ranked_changes
 
-    _, refused = ranked_changes(record.checks, record.reference_ute, record.limit)
+    _, refused = ranked_changes(record.checks, record.reference_ute, record.limit,
+                                record.lte_met)
     return "; ".join(f"{c.change.text}: {why}" for c, why in refused)
 
 
@@ -388,9 +417,12 @@ def developed_with_remedy(run: Callable[[Any], Any], basic,
     Raises
     ------
     InputError
-        Before any work: no contact ratio of ``basic`` below its limit (nothing to
-        remedy). After the first development: no change passed its check (each refusal
-        said); the design as given is then not returned in place of a remedied one.
+        Before any work: no contact ratio of ``basic`` below its limit, or each at it
+        (nothing to remedy). After the first development: no change passed its check
+        (each refusal said, a change no better than the design as given among them where
+        its LTE is within the verdict's limit:
+        :func:`~contact.optimize.remedy_check.no_better`); the design as given is then not
+        returned in place of a remedied one.
 
     Notes
     -----
@@ -404,6 +436,7 @@ def developed_with_remedy(run: Callable[[Any], Any], basic,
     ISO 10300-1's virtual gears (ISO 23509 blank); its LTE is the remedied design's own
     development, never estimated (docs/own_gear_set.md, "The overlap change is a trial").
     """
+    from contact.load_capacity.iso10300.face_contact import RATIO_AT_TARGET
     from contact.optimize.development_remedy_next import next_remedies
     from contact.optimize.remedy_check import ranked_changes, unloaded_te_pp
     from contact.study.verdicts import LTE_LIMIT
@@ -414,7 +447,8 @@ def developed_with_remedy(run: Callable[[Any], Any], basic,
     if not ratio_changes(basic.design):
         raise InputError(
             f"apply_remedy: no contact ratio of this design is below its limit (eps_va "
-            f"{before[0]:.2f}, eps_vb {before[1]:.2f}; limits 1 / 1.25, AGMA 2005-D03): "
+            f"{before[0]:.2f}, eps_vb {before[1]:.2f}; limits 1 / 1.25, AGMA 2005-D03; one "
+            f"within {RATIO_AT_TARGET:g} below it is at it): "
             "there is no contact-ratio remedy to apply; develop it without apply_remedy "
             "(ltca synthesize without --apply-remedy)")
     said("apply_remedy: the design as given developed first (its remedies are checked at "
@@ -426,7 +460,7 @@ def developed_with_remedy(run: Callable[[Any], Any], basic,
         log.info("the written case's unloaded TE not measured: %s", exc)
         written = None
     record = checked_record(prescribed_basic(basic, first.case, first), basic.design,
-                            written, LTE_LIMIT)
+                            written, LTE_LIMIT, lte_within(first, LTE_LIMIT))
     chosen = chosen_check(record)
     if chosen is None:
         raise InputError(
@@ -449,7 +483,8 @@ def developed_with_remedy(run: Callable[[Any], Any], basic,
     second = run(remedied(chosen))
     # where that development misses the drive LTE limit over `ltca run`'s torques, the next
     # checked remedy developed and the better kept (development_remedy_next)
-    passed, _ = ranked_changes(record.checks, record.reference_ute, record.limit)
+    passed, _ = ranked_changes(record.checks, record.reference_ute, record.limit,
+                               record.lte_met)
     chosen, second, developed, why = next_remedies(
         (chosen, second), [c for c in passed if c is not chosen],
         lambda check: run(remedied(check)), text, LTE_LIMIT, said)

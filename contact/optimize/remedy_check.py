@@ -47,7 +47,7 @@ and ``ltca run``'s next step offers the remedies from there (:func:`read_record`
 Public names
 ------------
 UTE_GROWTH_MAX, UTE_KEPT_SHARE, ChangeCheck, check_change, unloaded_te_pp, refusal,
-ranked_changes, checked_remedy_text, ute_sets_lte, ute_lte_text, unrelieved_te_pp,
+no_better, ranked_changes, checked_remedy_text, ute_sets_lte, ute_lte_text, unrelieved_te_pp,
 relief_lte_text, RECORD_TABLE,
 RemedyRecord, remedy_record, read_record, recorded_judge, LteDiagnosis, RATIO_TRIAL_TEXT,
 lte_diagnosis, lowest_checked, ute_lowered_text
@@ -66,7 +66,7 @@ from contact.optimize.development_conjugacy import VALID_NODE_FRACTION_MIN
 
 __all__ = ["RATIO_TRIAL_TEXT", "RECORD_TABLE", "UTE_GROWTH_MAX", "UTE_KEPT_SHARE",
            "ChangeCheck", "LteDiagnosis", "RemedyRecord", "check_change",
-           "checked_remedy_text", "lowest_checked", "lte_diagnosis", "ranked_changes",
+           "checked_remedy_text", "lowest_checked", "lte_diagnosis", "no_better", "ranked_changes",
            "read_record", "recorded_judge", "refusal", "relief_lte_text", "remedy_record",
            "unloaded_te_pp", "unrelieved_te_pp", "ute_lowered_text", "ute_lte_text",
            "ute_sets_lte"]
@@ -223,7 +223,40 @@ def unrelieved_te_pp(basic) -> tuple[float, float]:
     return ute, span
 
 
-def refusal(check: ChangeCheck, reference_ute: float, limit: float) -> str | None:
+def no_better(check: ChangeCheck, reference_ute: float, lte_met: bool) -> bool:
+    """Whether a checked remedy is no remedy here: the written bearing's LTE already within
+    the verdict's limit and the check measuring the change's unloaded TE p-p no lower than
+    the written case's, as the printed whole µrad read.
+
+    Parameters
+    ----------
+    check : ChangeCheck
+    reference_ute : float — [µrad]
+        The written case's unloaded TE p-p (NaN: not known, never no better).
+    lte_met : bool
+        Whether the written design's developed LTE p-p (drive and, where checked, coast;
+        light and design torque) is within the verdict's limit.
+
+    Returns
+    -------
+    bool
+
+    Notes
+    -----
+    Why (issue 71, round 22, docs/synthesis.md "Remedies that are no remedy"): the
+    industrial hypoid 7×51 (ε_vα 0.97, LTE p-p at most 23 µrad) was offered k_d 2.07 and
+    α_dD 20.5°, checked at 53 and 58 µrad against the written 52: nothing for the change to
+    fix that its check measures. Where the written LTE exceeds the limit, a change that
+    checks no lower is still offered, as a trial: the check is unloaded, the higher contact
+    ratio's gain is under load (the 15×28 at Σ 110°: β_m 43.9° checked 173 against 90 µrad,
+    developed 34/53 against the written 90/103 µrad).
+    """
+    return (lte_met and math.isfinite(reference_ute) and math.isfinite(check.ute)
+            and round(check.ute) >= round(reference_ute))
+
+
+def refusal(check: ChangeCheck, reference_ute: float, limit: float,
+            lte_met: bool = False) -> str | None:
     """Why a checked remedy is not offered, or None where it passes.
 
     Parameters
@@ -233,6 +266,9 @@ def refusal(check: ChangeCheck, reference_ute: float, limit: float) -> str | Non
         The written case's unloaded TE p-p (NaN where not known: the limit alone).
     limit : float — [µrad]
         The verdict's LTE p-p limit (:data:`contact.study.verdicts.LTE_LIMIT`).
+    lte_met : bool, optional
+        Whether the written design's developed LTE p-p is within ``limit``
+        (:func:`no_better`); default False (not known: never refused for it).
 
     Returns
     -------
@@ -241,7 +277,8 @@ def refusal(check: ChangeCheck, reference_ute: float, limit: float) -> str | Non
         from conjugate (fewer than
         :data:`~contact.optimize.development_conjugacy.VALID_NODE_FRACTION_MIN` valid
         ease-off nodes); its unloaded TE p-p above ``limit`` and above
-        :data:`UTE_GROWTH_MAX` × ``reference_ute``.
+        :data:`UTE_GROWTH_MAX` × ``reference_ute``; no better than the written design
+        (:func:`no_better`, the reason beginning "not a remedy here").
     """
     if check.failed:
         first = check.failed.split(";")[0]
@@ -260,10 +297,15 @@ def refusal(check: ChangeCheck, reference_ute: float, limit: float) -> str | Non
         return (f"its generated pinion departs from the gear's conjugate: unloaded TE p-p "
                 f"{check.ute:.0f} urad{times}{span}, above the verdict's {limit:g} urad "
                 "LTE before any load")
+    if no_better(check, reference_ute, lte_met):
+        return (f"not a remedy here: unloaded TE p-p {check.ute:.0f} urad, no lower than "
+                f"the written case's {reference_ute:.0f}, whose LTE p-p is within {limit:g} "
+                "urad")
     return None
 
 
-def ranked_changes(checks: Sequence[ChangeCheck], reference_ute: float, limit: float
+def ranked_changes(checks: Sequence[ChangeCheck], reference_ute: float, limit: float,
+                   lte_met: bool = False
                    ) -> tuple[list[ChangeCheck], list[tuple[ChangeCheck, str]]]:
     """The remedies that pass :func:`refusal`, the lowest unloaded TE p-p first (then the
     smaller ease-off), and the refused ones with their reasons, in the given order; a
@@ -276,6 +318,8 @@ def ranked_changes(checks: Sequence[ChangeCheck], reference_ute: float, limit: f
     checks : sequence of ChangeCheck
     reference_ute, limit : float — [µrad]
         As :func:`refusal`.
+    lte_met : bool, optional
+        As :func:`refusal` (default False).
 
     Returns
     -------
@@ -283,7 +327,7 @@ def ranked_changes(checks: Sequence[ChangeCheck], reference_ute: float, limit: f
     """
     passed, refused = [], []
     for c in checks:
-        why = refusal(c, reference_ute, limit)
+        why = refusal(c, reference_ute, limit, lte_met)
         if why is None:
             passed.append(c)
         else:
@@ -306,7 +350,7 @@ def _measured(c: ChangeCheck, reference_ute: float) -> str:
 
 
 def checked_remedy_text(checks: Sequence[ChangeCheck], target: float, none: str,
-                        reference_ute: float, limit: float) -> str:
+                        reference_ute: float, limit: float, lte_met: bool = False) -> str:
     """The end of the note's remedy sentence from checked remedies: those that pass, best
     first, each with its numbers, and each refused one with why.
 
@@ -321,6 +365,9 @@ def checked_remedy_text(checks: Sequence[ChangeCheck], target: float, none: str,
         14.5 deg"), where none is left.
     reference_ute, limit : float — [µrad]
         As :func:`refusal`.
+    lte_met : bool, optional
+        As :func:`refusal` (default False): a change no better than the written design
+        is said in one clause, "not a remedy here: <change> (<numbers>)".
 
     Returns
     -------
@@ -333,16 +380,26 @@ def checked_remedy_text(checks: Sequence[ChangeCheck], target: float, none: str,
         the written case's prescriptions, 5 s of CPU; ...)"; a refused change: "; not
         <change>, which reaches 1 too: <why>" (:func:`refusal`).
     """
-    passed, refused = ranked_changes(checks, reference_ute, limit)
+    passed, refused = ranked_changes(checks, reference_ute, limit, lte_met)
+    idle = [c for c, _ in refused if no_better(c, reference_ute, lte_met)]
     if passed:
         ways = [c.change.text + _measured(c, reference_ute) for c in passed]
         head = (ways[0] if len(ways) == 1 else
                 ways[0] + ", or, next best, " + ", or ".join(ways[1:]) + ", the other kept,")
         out = f"{head} reaches {target:g}"
+    elif idle:
+        out = (f"no change that reaches {target:g} checks better than the written design, "
+               f"whose LTE p-p is within {limit:g} urad")
     else:
         out = f"{none}, nor a change that keeps the synthesis near conjugate, reaches {target:g}"
     for c, why in refused:
-        out += f"; not {c.change.text}, which reaches {target:g} too: {why}"
+        if c in idle:
+            # one short clause: the change named, its check's number against the written
+            out += (f"; not a remedy here: {c.change.text} (checked: unloaded TE p-p "
+                    f"{c.ute:.0f} urad, no lower than the written case's "
+                    f"{reference_ute:.0f})")
+        else:
+            out += f"; not {c.change.text}, which reaches {target:g} too: {why}"
     cpu = sum(c.seconds for c in checks)
     # whole seconds, but a check under 1 s in tenths: "0 s of CPU" read as none made
     cpu_text = f"{cpu:.0f}" if cpu >= 0.95 else f"{max(cpu, 0.1):.1f}"
@@ -600,6 +657,9 @@ class RemedyRecord(NamedTuple):
     #: [µrad] the written drive flank's unloaded TE p-p without its relief
     #: (:func:`unrelieved_te_pp`; NaN: not measured)
     unrelieved_ute: float = math.nan
+    #: whether the written design's developed LTE p-p is within ``limit`` (drive and
+    #: coast, light and design torque; :func:`no_better`); False: above it or not known
+    lte_met: bool = False
 
 
 def remedy_record(record: RemedyRecord) -> dict[str, Any]:
@@ -613,8 +673,9 @@ def remedy_record(record: RemedyRecord) -> dict[str, Any]:
     Returns
     -------
     dict
-        ``note``, ``limit_urad``, ``unloaded_te_pp_urad`` and ``ease_off_um`` of the written
-        drive flank where measured, ``unrelieved_te_pp_urad`` (without its relief) where
+        ``note``, ``limit_urad``, ``lte_met`` (the written LTE within it),
+        ``unloaded_te_pp_urad`` and ``ease_off_um`` of the written drive flank where
+        measured, ``unrelieved_te_pp_urad`` (without its relief) where
         measured, ``cpu_seconds``, and ``change``: one table per checked
         change (``field``, ``value``, ``text``, ``other``, its measures, ``failed``,
         ``cpu_seconds``, and ``refused``: :func:`refusal`'s reason, "" where offered).
@@ -624,7 +685,7 @@ def remedy_record(record: RemedyRecord) -> dict[str, Any]:
 
     changes = []
     for c in record.checks:
-        why = refusal(c, record.reference_ute, record.limit)
+        why = refusal(c, record.reference_ute, record.limit, record.lte_met)
         changes.append({"field": c.change.field, "value": float(c.change.value),
                         "text": c.change.text, "other": getattr(c.change, "other", ""),
                         **kept(unloaded_te_pp_urad=c.ute, ease_off_um=c.span,
@@ -634,7 +695,7 @@ def remedy_record(record: RemedyRecord) -> dict[str, Any]:
                     "remedy ltca synthesize's note offers, checked by one synthesis at the "
                     "written prescriptions before it is offered (refused: not offered, with "
                     "why); ltca run's next step reads it",
-            "limit_urad": float(record.limit),
+            "limit_urad": float(record.limit), "lte_met": bool(record.lte_met),
             **kept(unloaded_te_pp_urad=record.reference_ute,
                    ease_off_um=record.reference_span,
                    unrelieved_te_pp_urad=record.unrelieved_ute),
@@ -669,7 +730,8 @@ def read_record(extra) -> RemedyRecord | None:
         return RemedyRecord(checks, float(table.get("unloaded_te_pp_urad", math.nan)),
                             float(table.get("ease_off_um", math.nan)),
                             float(table["limit_urad"]),
-                            float(table.get("unrelieved_te_pp_urad", math.nan)))
+                            float(table.get("unrelieved_te_pp_urad", math.nan)),
+                            bool(table.get("lte_met", False)))
     except (KeyError, TypeError, ValueError) as exc:
         log.info("the case's %s table not read: %s", RECORD_TABLE, exc)
         return None
@@ -698,7 +760,7 @@ def recorded_judge(record: RemedyRecord):
                 if _RATIO_OF.get(c.change.field, c.change.field) in ratios]
         if mine:
             return checked_remedy_text(mine, target, none, record.reference_ute,
-                                       record.limit)
+                                       record.limit, record.lte_met)
         ways = [c.text for c in changes]
         return (" or ".join(ways) + (", the other kept," if len(ways) > 1 else "")
                 + f" reaches {target:g} (not checked by a synthesis: the case records no "

@@ -44,8 +44,9 @@ import math
 from dataclasses import dataclass
 
 __all__ = ["FACE_CONTACT_RATIO_MIN", "FACE_WIDTH_LIMIT", "PROFILE_CONTACT_RATIO_MIN",
-           "OverlapRemedy", "ProfileRemedy", "RatioChange", "loaded_ratio_text",
-           "low_ratio_text", "overlap_changes", "overlap_remedy", "overlap_text",
+           "RATIO_AT_TARGET", "OverlapRemedy", "ProfileRemedy", "RatioChange", "at_target",
+           "at_target_text", "loaded_ratio_text", "low_ratio_text", "overlap_changes",
+           "overlap_remedy", "overlap_text",
            "profile_changes", "profile_remedy"]
 
 #: the least face contact ratio ε_vβ bevel-gear design practice asks for (AGMA 2005-D03,
@@ -58,6 +59,15 @@ FACE_CONTACT_RATIO_MIN = 1.25
 #: Annex A: ε_vα = g_vα / p_vet): the load is handed over only along the face (ε_vβ), which
 #: a localised bearing shortens to the pattern's length
 PROFILE_CONTACT_RATIO_MIN = 1.0
+
+#: how far below its target [1] a contact ratio is taken to be at it: no remedy offered,
+#: the ratio said at its target (issue 71, round 22: the spiral bevel 22×33 of m_et 8.5 at
+#: ε_vβ 1.247 was offered b2 48 → 48.1 mm, whose check measured its unloaded TE no lower,
+#: 14 against 14 µrad). 0.01 is the resolution every line prints a contact ratio at: a
+#: ratio within it prints at its target ("eps_vb 1.25"), and the change that closes it is a
+#: fraction of a per cent of the field (b2 +0.1 mm, β_m +0.1°), below the blank's own
+#: tolerances (docs/synthesis.md, "Remedies that are no remedy")
+RATIO_AT_TARGET = 0.01
 
 #: the usual largest gear face width as a fraction of the outer cone distance R_e2
 #: (AGMA 2005-D03 and Gleason practice: b2 ≤ 0.3 R_e2; wider, the toe's teeth become too
@@ -291,6 +301,8 @@ def overlap_text(design, target: float = FACE_CONTACT_RATIO_MIN, judge=None) -> 
     if r.eps_vb >= r.target:
         return None
     changes = overlap_changes(r, design)
+    if at_target(r.eps_vb, r.target):
+        return at_target_text("face contact ratio eps_vb", r.eps_vb, r.target, changes)
     none = "no face width up to R_e2/2 nor spiral angle up to 50 deg"
     remedy = (judge(changes, r.target, none) if judge is not None and changes
               else _either([c.text for c in changes], r.target, none))
@@ -403,6 +415,48 @@ def _below(value: float, limit: float) -> str:
     return f"{value:.{digits}f}"
 
 
+def at_target(value: float, target: float) -> bool:
+    """Whether a contact ratio below its target is at it: within :data:`RATIO_AT_TARGET`.
+
+    Parameters
+    ----------
+    value, target : float — [1]
+        The contact ratio (ε_vα or ε_vβ, ISO 10300-1 virtual gears) and its target.
+
+    Returns
+    -------
+    bool
+        True where ``target - RATIO_AT_TARGET <= value < target`` (a change to close the
+        gap is below a meaningful step; source: issue 71, round 22, :data:`RATIO_AT_TARGET`).
+    """
+    return math.isfinite(value) and target - RATIO_AT_TARGET <= value < target
+
+
+def at_target_text(name: str, value: float, target: float, changes) -> str:
+    """The note's clause for a contact ratio at its target (:func:`at_target`): said at
+    its target, the change that closes the gap named as no remedy in one clause.
+
+    Parameters
+    ----------
+    name : str
+        "face contact ratio eps_vb" or "profile contact ratio eps_va".
+    value, target : float — [1]
+    changes : list of RatioChange
+        The changes that would reach ``target`` (the first is named).
+
+    Returns
+    -------
+    str
+        E.g. "face contact ratio eps_vb 1.247 is at its target 1.25 (0.003 below it,
+        within 0.01; not a remedy here: a gear face width b2 of 48.1 mm (now 48), below a
+        meaningful step)".
+    """
+    said = (f"; not a remedy here: {changes[0].text}, below a meaningful step"
+            if changes else "")
+    return (f"{name} {_below(value, target)} is at its target {target:g} "
+            f"({target - value:.3f} below it, within {RATIO_AT_TARGET:g}{said})")
+
+
 def _either(ways: list[str], target: float, none: str) -> str:
     """A remedy sentence's end: the basic-file changes ``ways`` joined by "or" ("the other
     kept" where there are two) that reach ``target``, or, with none, "``none`` alone
@@ -480,6 +534,8 @@ def _profile_text(r: ProfileRemedy, judge=None) -> str:
     none = (f"no depth factor up to {_DEPTH_FACTOR_MAX:g} nor pressure angle down to "
             f"{_PRESSURE_ANGLE_MIN:g} deg")
     changes = profile_changes(r)
+    if at_target(r.eps_va, r.target):
+        return at_target_text("profile contact ratio eps_va", r.eps_va, r.target, changes)
     remedy = (judge(changes, r.target, none) if judge is not None and changes
               else _either([c.text for c in changes], r.target, none))
     return (f"profile contact ratio eps_va {_below(r.eps_va, r.target)} is below "
