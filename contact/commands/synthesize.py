@@ -1007,6 +1007,12 @@ def _run_synthesize(args: argparse.Namespace) -> int:
         print("  " + line)
     if development is not None:
         print("  " + development.headline())
+        # each flank's LTE at its torques and the largest between them where it misses the
+        # target or the verdict's limit (issue 71: "at every torque")
+        from contact.optimize.development_lte_lines import lte_lines
+
+        for line in lte_lines(development):
+            print("  " + line)
     process = gear_process_note(development, case)
     if process is not None:
         print("note: " + process)

@@ -194,6 +194,12 @@ class DevelopmentResult:
         (:func:`contact.optimize.development_range_lte.range_record`: ``"torques"`` [N·m],
         ``"lte"`` [µrad], ``"peak"`` [µrad], ``"at"`` [N·m]); None where the check's steps
         did not judge it at these torques.
+    coast_lte_range : dict or None
+        The written coast design's LTE p-p judged between :attr:`coast_torques` as ``ltca
+        run --flank coast``'s ``lte_range`` step judges it
+        (:func:`contact.optimize.development_range_lte.range_lte` on the coast flank, the
+        keys of :attr:`lte_range`); None where the coast flank was not checked at two
+        torques or its analysis failed.
     remedy : contact.optimize.development_remedy.AppliedRemedy or None
         The contact-ratio remedy applied to the user's basic data before this development
         (``develop(..., apply_remedy=True)``, ``ltca synthesize --apply-remedy``; its
@@ -240,6 +246,7 @@ class DevelopmentResult:
     tolerant_torque: tuple[float, float] = (math.nan, math.nan)
     lte_range: dict | None = None
     remedy: Any = None
+    coast_lte_range: dict | None = None
     fe_level_text: str = ""
     given_root_text: str = ""
 

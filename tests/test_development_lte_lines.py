@@ -1,0 +1,64 @@
+"""``ltca synthesize``'s line on each flank's written LTE: at its two torques and the
+largest between them (contact.optimize.development_lte_lines, issue 71: "LTE p-p <= 60
+urad at every torque").
+
+The numbers are those of round 21b's face-hobbed spiral bevel 25x31 (m_et 9.52 mm,
+benchmarks/data/unseen_designs): coast 59 / 53 urad at 567 / 3780 N m, 69 urad at 1638 N m
+between (``ltca run --flank coast``), and round 21's spiral bevel 17x38 by Method 0: drive
+21 / 62 urad at 52.1 / 347.6 N m, 73 urad at 249.1 N m between. The lines are text of given
+numbers: compared exactly.
+"""
+
+from __future__ import annotations
+
+import math
+from types import SimpleNamespace
+
+import numpy as np
+
+from contact.optimize.development_lte_lines import flank_lte_line, lte_lines
+
+
+def test_a_peak_between_torques_within_the_limit_is_said_with_the_limit():
+    line = flank_lte_line("coast", (567.0, 3780.0), (59.0, 53.0),
+                          {"peak": 69.4, "at": 1638.0}, 60.0, 40.0)
+    assert line == ("coast LTE p-p 59/53 urad at 567/3780 N m (light/design), 69.4 urad at "
+                    "1638 N m between them: above the verdict's limit 60 urad between the "
+                    "torques (ltca run --flank coast finds it there)")
+
+
+def test_a_missed_design_torque_is_said_with_the_peak_between_above_it():
+    line = flank_lte_line("drive", (52.1, 347.6), (21.0, 62.0),
+                          {"peak": 72.9, "at": 249.1}, 60.0, 40.0)
+    assert line.startswith("drive LTE p-p 21/62 urad at 52.1/347.6 N m (light/design), "
+                           "72.9 urad at 249.1 N m between them: above the verdict's limit "
+                           "60 urad (ltca run finds it)")
+
+
+def test_within_the_target_nothing_is_said_and_the_target_alone_is_named():
+    assert flank_lte_line("drive", (27.0, 180.0), (20.0, 37.0),
+                          {"peak": 39.0, "at": 100.0}, 60.0, 40.0) is None
+    line = flank_lte_line("drive", (27.0, 180.0), (20.0, 45.0),
+                          {"peak": 45.0, "at": 180.0}, 60.0, 40.0)
+    assert line.endswith("no higher between them: within the verdict's limit 60 urad, the "
+                         "development's target 40 urad missed")
+    # not judged between the torques (no record): said so
+    assert "not judged between them" in flank_lte_line("drive", (27.0, 180.0), (20.0, 45.0),
+                                                       None, 60.0, 40.0)
+    assert flank_lte_line("drive", (1.0, 2.0), (math.nan, math.nan), None, 60.0, 40.0) is None
+
+
+def test_the_development_s_lines_read_its_records_per_flank():
+    dev = SimpleNamespace(
+        targets=SimpleNamespace(max_lte=40.0),
+        best=SimpleNamespace(metrics={"lte_peak_to_peak": np.array([23.0, 29.0])}),
+        torque=(567.0, 3780.0), lte_range={"peak": 35.7, "at": 1370.0},
+        coast={"lte_peak_to_peak": np.array([59.0, 53.0])},
+        coast_design_torques=(567.0, 3780.0),
+        coast_lte_range={"peak": 68.6, "at": 1638.0})
+    lines = lte_lines(dev)
+    assert len(lines) == 1 and lines[0].startswith("coast LTE p-p 59/53 urad")
+    assert "68.6 urad at 1638 N m between them" in lines[0]
+    # no coast record: the analysis given instead
+    dev.coast_lte_range = None
+    assert "69.0 urad" in lte_lines(dev, coast_between={"peak": 69.0, "at": 1638.0})[0]
