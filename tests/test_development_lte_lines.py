@@ -62,3 +62,23 @@ def test_the_development_s_lines_read_its_records_per_flank():
     # no coast record: the analysis given instead
     dev.coast_lte_range = None
     assert "69.0 urad" in lte_lines(dev, coast_between={"peak": 69.0, "at": 1638.0})[0]
+
+
+def test_every_target_met_at_two_torques_is_not_said_met_above_the_limit_between():
+    """The headline's "every target met" of a design whose record between its torques is
+    above 60 urad names that peak (and the record of another design is not read)."""
+    from contact.optimize.development_result import DevelopmentEvaluation, DevelopmentResult
+
+    values = {"ellipse_length": 0.4}
+    e = DevelopmentEvaluation(3, values, {}, 1.0, {}, True, "", 0.0,
+                              full=(1.0, {}, True), checked=True)
+    fake = SimpleNamespace(best=None, coast_best=e, lte_range=None,
+                           coast_lte_range={"peak": 68.6, "at": 1638.0, "values": values})
+    fake._between_text = lambda x: DevelopmentResult._between_text(fake, x)
+    assert DevelopmentResult.missed_text(fake, e) == (
+        "every target met at its two torques, but LTE p-p 68.6 urad at 1638 N m between "
+        "them (limit 60)")
+    fake.coast_lte_range = {"peak": 58.1, "at": 1638.0, "values": values}
+    assert DevelopmentResult.missed_text(fake, e) == "every target met"
+    fake.coast_lte_range = {"peak": 68.6, "at": 1638.0, "values": {"ellipse_length": 0.5}}
+    assert DevelopmentResult.missed_text(fake, e) == "every target met"
