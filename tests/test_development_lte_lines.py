@@ -16,7 +16,7 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from contact.optimize.development_lte_lines import flank_lte_line, lte_lines
+from contact.optimize.development_lte_lines import flank_lte_line, inside, lte_lines
 
 
 def test_a_peak_between_torques_within_the_limit_is_said_with_the_limit():
@@ -30,18 +30,24 @@ def test_a_peak_between_torques_within_the_limit_is_said_with_the_limit():
 def test_a_missed_design_torque_is_said_with_the_peak_between_above_it():
     line = flank_lte_line("drive", (52.1, 347.6), (21.0, 62.0),
                           {"peak": 72.9, "at": 249.1}, 60.0, 40.0)
-    assert line.startswith("drive LTE p-p 21/62 urad at 52.1/347.6 N m (light/design), "
-                           "72.9 urad at 249.1 N m between them: above the verdict's limit "
-                           "60 urad (ltca run finds it)")
+    assert line == ("drive LTE p-p 21/62 urad at 52.1/347.6 N m (light/design), 72.9 urad "
+                    "at 249.1 N m between them: above the verdict's limit 60 urad at its "
+                    "torques and between them (ltca run finds it)")
+    # the 18x27's coast (this branch): 66 / 60 urad at its torques, 61.7 between
+    line = flank_lte_line("coast", (25.2, 168.6), (66.5, 59.6),
+                          {"peak": 61.7, "at": 120.8}, 60.0, 40.0)
+    assert line.endswith("61.7 urad at 120.8 N m between them: above the verdict's limit 60 "
+                         "urad at its torques and between them (ltca run --flank coast finds "
+                         "it)")
 
 
 def test_within_the_target_nothing_is_said_and_the_target_alone_is_named():
     assert flank_lte_line("drive", (27.0, 180.0), (20.0, 37.0),
                           {"peak": 39.0, "at": 100.0}, 60.0, 40.0) is None
     line = flank_lte_line("drive", (27.0, 180.0), (20.0, 45.0),
-                          {"peak": 45.0, "at": 180.0}, 60.0, 40.0)
-    assert line.endswith("no higher between them: within the verdict's limit 60 urad, the "
-                         "development's target 40 urad missed")
+                          {"peak": 41.0, "at": 120.0}, 60.0, 40.0)
+    assert line.endswith("41.0 urad at 120 N m between them: within the verdict's limit 60 "
+                         "urad, the development's target 40 urad missed")
     # not judged between the torques (no record): said so
     assert "not judged between them" in flank_lte_line("drive", (27.0, 180.0), (20.0, 45.0),
                                                        None, 60.0, 40.0)
@@ -55,7 +61,9 @@ def test_the_development_s_lines_read_its_records_per_flank():
         torque=(567.0, 3780.0), lte_range={"peak": 35.7, "at": 1370.0},
         coast={"lte_peak_to_peak": np.array([59.0, 53.0])},
         coast_design_torques=(567.0, 3780.0),
-        coast_lte_range={"peak": 68.6, "at": 1638.0})
+        coast_lte_range={"torques": (567.0, 1102.0, 1370.0, 1638.0, 2709.0, 3780.0),
+                         "lte": (59.3, 56.9, 64.0, 68.6, 60.5, 52.6), "peak": 68.6,
+                         "at": 1638.0})
     lines = lte_lines(dev)
     assert len(lines) == 1 and lines[0].startswith("coast LTE p-p 59/53 urad")
     assert "68.6 urad at 1638 N m between them" in lines[0]
@@ -82,3 +90,13 @@ def test_every_target_met_at_two_torques_is_not_said_met_above_the_limit_between
     assert DevelopmentResult.missed_text(fake, e) == "every target met"
     fake.coast_lte_range = {"peak": 68.6, "at": 1638.0, "values": {"ellipse_length": 0.5}}
     assert DevelopmentResult.missed_text(fake, e) == "every target met"
+
+
+def test_inside_reads_the_torques_between_the_ends():
+    """The record's ends (the light and the design torque) left out: the 18x27's coast
+    (66.5 at its light torque, 61.7 between) reads 61.7."""
+    record = {"torques": (25.2, 73.0, 120.8, 168.6), "lte": (66.5, 58.5, 61.7, 59.6)}
+    assert inside(record) == {"peak": 61.7, "at": 120.8}
+    assert inside({"torques": (1.0, 2.0), "lte": (3.0, 4.0)}) is None
+    assert inside(None) is None
+    assert inside({"peak": 5.0, "at": 1.0}) == {"peak": 5.0, "at": 1.0}

@@ -648,11 +648,7 @@ def _lte_lines(case, development) -> list[str]:
             logging.getLogger(__name__).info("the drive LTE between the torques not "
                                              "analysed: %s", exc)
         else:
-            seen = [(float(y), float(t)) for t, y in zip(found.torques, found.lte,
-                                                         strict=True) if math.isfinite(y)]
-            if seen:
-                peak, at = max(seen)
-                drive = {"peak": peak, "at": at}
+            drive = {"torques": tuple(found.torques), "lte": tuple(found.lte)}
     return lte_lines(development, drive_between=drive)
 
 

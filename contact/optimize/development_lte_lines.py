@@ -11,7 +11,7 @@ flank misses one of them.
 
 Public names
 ------------
-flank_lte_line, lte_lines
+flank_lte_line, inside, lte_lines
 """
 
 from __future__ import annotations
@@ -22,7 +22,7 @@ from typing import Any
 
 from geometry.core.text import plain_number
 
-__all__ = ["flank_lte_line", "lte_lines"]
+__all__ = ["flank_lte_line", "inside", "lte_lines"]
 
 
 def flank_lte_line(flank: str, torques: tuple[float, float], ends: tuple[float, float],
@@ -40,9 +40,9 @@ def flank_lte_line(flank: str, torques: tuple[float, float], ends: tuple[float, 
     ends : (float, float) — [µrad]
         Its LTE p-p at them.
     between : mapping or None
-        Its LTE over ``ltca run``'s ``lte_range`` torques: ``"peak"`` [µrad] and ``"at"``
-        [N·m] (:func:`~contact.optimize.development_range_lte.range_record`'s); None (or a
-        peak not finite) where not judged between the torques.
+        Its largest LTE at ``ltca run``'s ``lte_range`` torques between the two:
+        ``"peak"`` [µrad] and ``"at"`` [N·m] (:func:`inside` of a record); None (or a peak
+        not finite) where not judged between the torques.
     limit : float — [µrad]
         The verdict's LTE limit (:data:`contact.study.verdicts.LTE_LIMIT`).
     target : float — [µrad]
@@ -74,17 +74,54 @@ def flank_lte_line(flank: str, torques: tuple[float, float], ends: tuple[float, 
     line = (f"{flank} LTE p-p {light:.0f}/{design:.0f} urad at {plain_number(torques[0])}/"
             f"{plain_number(torques[1])} N m (light/design)")
     line += (f", {peak:.1f} urad at {plain_number(at)} N m between them"
-             if math.isfinite(peak) and math.isfinite(at) and peak > max(light, design)
-             else ", no higher between them" if math.isfinite(peak)
-             else ", not judged between them")
+             if math.isfinite(peak) and math.isfinite(at) else ", not judged between them")
     run = "ltca run" + (" --flank coast" if flank == "coast" else "")
     if max(light, design) > limit:
-        return line + f": above the verdict's limit {limit:g} urad ({run} finds it)"
+        where = " at its torques" + (" and between them" if peak > limit else "")
+        return line + f": above the verdict's limit {limit:g} urad{where} ({run} finds it)"
     if math.isfinite(peak) and peak > limit:
         return (line + f": above the verdict's limit {limit:g} urad between the torques "
                 f"({run} finds it there)")
     return line + f": within the verdict's limit {limit:g} urad, the development's target " \
         f"{float(target):g} urad missed"
+
+
+def inside(record: Mapping[str, Any] | None) -> dict[str, float] | None:
+    """The largest LTE p-p of a record of the LTE over the range at its torques strictly
+    between the first and the last (the light and the design torque).
+
+    Parameters
+    ----------
+    record : mapping or None
+        ``"torques"`` [N·m] and ``"lte"`` [µrad], ascending
+        (:func:`~contact.optimize.development_range_lte.range_record`'s); a mapping with
+        ``"peak"`` and ``"at"`` alone is returned as it is (already the torques between).
+
+    Returns
+    -------
+    dict or None
+        ``{"peak": µrad, "at": N·m}``; None where ``record`` is None or has no finite
+        value between its ends.
+
+    Raises
+    ------
+    Nothing; a pure function of its inputs.
+
+    Notes
+    -----
+    Source: ``ltca run``'s ``lte_range`` line, which states the torques between (issue 71).
+    """
+    if not record:
+        return None
+    if "lte" not in record or "torques" not in record:
+        return dict(record)
+    pairs = [(float(y), float(t)) for t, y in zip(list(record["torques"])[1:-1],
+                                                  list(record["lte"])[1:-1], strict=True)
+             if math.isfinite(float(y))]
+    if not pairs:
+        return None
+    peak, at = max(pairs)
+    return {"peak": peak, "at": at}
 
 
 def lte_lines(development: Any, drive_between: Mapping[str, Any] | None = None,
@@ -122,11 +159,12 @@ def lte_lines(development: Any, drive_between: Mapping[str, Any] | None = None,
     target = float(development.targets.max_lte)
     lte = development.best.metrics["lte_peak_to_peak"]
     lines = [flank_lte_line("drive", tuple(development.torque), (lte[0], lte[-1]),
-                            development.lte_range or drive_between, LTE_LIMIT, target)]
+                            inside(development.lte_range or drive_between), LTE_LIMIT,
+                            target)]
     if development.coast is not None:
         c = development.coast["lte_peak_to_peak"]
         lines.append(flank_lte_line(
             "coast", tuple(development.coast_design_torques), (c[0], c[-1]),
-            getattr(development, "coast_lte_range", None) or coast_between, LTE_LIMIT,
-            target))
+            inside(getattr(development, "coast_lte_range", None) or coast_between),
+            LTE_LIMIT, target))
     return [s for s in lines if s is not None]
