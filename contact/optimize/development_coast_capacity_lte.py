@@ -557,10 +557,12 @@ def coast_lte_within_capacity(developed: BasicDesign, drive: DevelopmentEvaluati
     Notes
     -----
     The step runs where the coast design's LTE exceeds the limit at its torques or between
-    them (:func:`coast_largest`: the 25x31 of m_et 9.52 mm of benchmarks/data/
-    unseen_designs, 59 / 53 µrad at 567 / 3780 N·m and 69 µrad at 1638 N·m between, was
-    written without it). The designs are judged on their LTE at the coast torques and
-    between them (:func:`coast_range_peak`); where none is kept and the coast design's LTE fails the
+    them (:func:`coast_largest`; it read the two torques alone, as the coast flank of the
+    25x31 of m_et 9.52 mm of benchmarks/data/unseen_designs shows, 59 / 53 µrad at 567 /
+    3780 N·m and 69 µrad at 1638 N·m between — whose given coast design torque has no
+    capacity search, hence no static strength, so the step does not run on it). The
+    designs are judged on their LTE at the coast torques and between them
+    (:func:`coast_range_peak`); where none is kept and the coast design's LTE fails the
     verdict, the one written nearest the limit is the one of least LTE over that range,
     and :func:`capacity_text` says the LTE over it. Source: issue 71; docs/synthesis.md,
     "The coast LTE within the flank's capacity" and "The coast capacity LTE step judged
@@ -581,10 +583,12 @@ def coast_lte_within_capacity(developed: BasicDesign, drive: DevelopmentEvaluati
     if not largest > LTE_LIMIT:
         return None
     static = float(final.limit)
-    ends = "/".join(f"{x:.0f}" for x in np.asarray(old.metrics["lte_peak_to_peak"], float))
-    peak = coast_range_peak(old, at, teeth, written.key_prefix)
-    between = (f", {peak[0]:.1f} urad at {plain_number(peak[1])} N m between them"
-               if math.isfinite(peak[0]) and peak[0] >= largest else "")
+    lte = np.asarray(old.metrics["lte_peak_to_peak"], float)
+    ends = "/".join(f"{x:.0f}" for x in lte)
+    between = ""
+    if not float(np.nanmax(lte)) > LTE_LIMIT:  # above between alone: said (memoised)
+        peak = coast_range_peak(old, at, teeth, written.key_prefix)
+        between = f", {peak[0]:.1f} urad at {plain_number(peak[1])} N m between them"
     say(f"development: coast flank LTE p-p {ends} urad at {plain_number(coast.torques[0])}/"
         f"{plain_number(coast.torques[1])} N m{between} after its LTE steps: bearings whose "
         f"peak may rise up to the static strength {static:.0f} MPa")
