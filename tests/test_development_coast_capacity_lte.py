@@ -177,12 +177,16 @@ def test_the_rule_refuses_static_plastic_lte_and_lost_targets(monkeypatch):
     assert refuse(start, toe, targets, 60.0, _STATIC) == "it misses toe"
     assert refuse(start, None, targets, 60.0, _STATIC) == "it could not be analysed"
     step = cap.checked_coast_capacity_lte
-    quiet = variant(lte_peak_to_peak=[40.0, 55.0])
-    assert step(quiet, targets, setup, None, print, lambda v: dict(v),
-                static=_STATIC) is quiet
     assert step(start, targets, setup, None, print, lambda v: dict(v),
                 static=float("nan")) is start
     assert seen == []
+    # within the limit at its torques and between them: its range alone analysed
+    quiet = {(0.55, 0.0, _TR, _RR): ((0.12, 0.78), (40.0, 55.0), 1522.0, 0.016)}
+    targets, setup, start, seen = _start(monkeypatch, dict(_DESIGNS) | quiet,
+                                         between={(0.55, 0.0, _TR, _RR): (50.0, 57.0)})
+    assert step(start, targets, setup, None, print, lambda v: dict(v),
+                static=_STATIC) is start
+    assert seen and all(_key(s) == _key(_VALUES) for s in seen)
 
 
 def test_no_design_within_the_limit_keeps_the_design(monkeypatch):
@@ -503,3 +507,24 @@ def test_fh_spiral_bevel_10x31_coast_lte_within_60_urad():
     # 1.01 at 1613 MPa; S_H,loc ~ 1/p): no lower coast design torque needed
     assert coast["edge_load_share"][-1] > result.targets.max_edge_share
     assert coast["pressure_max_flank"][-1] <= 1613.0
+
+
+def test_a_coast_lte_above_the_limit_between_its_torques_alone_is_acted_on(monkeypatch):
+    """Within 60 urad at its two torques, above it between them (the FH spiral bevel 25x31
+    of m_et 9.52 mm of benchmarks/data/unseen_designs: 59 / 53 urad at 567 / 3780 N m, 64 /
+    69 urad between, round 21b): the step runs on the range's peak and keeps the design
+    within the limit over the range (the root relief x 2/3 on the longest ellipse, 43.2 /
+    55.1 urad, linear between in the stand-in); the numbers are the stand-in's, exact."""
+    quiet = {(0.55, 0.0, _TR, _RR): ((0.12, 0.78), (45.0, 55.0), 1522.0, 0.016)}
+    targets, setup, start, _seen = _start(monkeypatch, dict(_DESIGNS) | quiet,
+                                          between={(0.55, 0.0, _TR, _RR): (64.0, 69.0)})
+    assert cap.coast_largest(start, setup, None) == pytest.approx(69.0)
+    assert cap.coast_largest(start, setup, None, limit=50.0) == pytest.approx(55.0)
+    lines: list[str] = []
+    got = cap.checked_coast_capacity_lte(start, targets, setup, None, lines.append,
+                                         lambda v: dict(v), static=_STATIC)
+    assert _key(got.values) == _key(_VALUES | {"ellipse_length": 0.75,
+                                               "mean_point_shift": 0.0368,
+                                               "root_relief": 2 * _RR / 3})
+    assert cap.coast_range_peak(got, setup, None)[0] == pytest.approx(55.1)
+    assert any("not kept: its LTE p-p 62 urad above 60" in s for s in lines)

@@ -139,10 +139,11 @@ def test_within_the_limit_between_no_design_is_tried(monkeypatch):
     assert len(asked) == 1
 
 
-def test_above_the_limit_at_the_design_torque_the_design_torque_steps_act(monkeypatch):
-    """61 urad at the design torque: the design torque's steps (the path LTE step among
-    them) act on it; this step records the range and tries nothing."""
-    _asked, law = _truck({-60.0: (38.5, 65.8, 45.0, 61.0)})
+def test_a_peak_at_the_design_torque_is_left_to_the_design_torque_steps(monkeypatch):
+    """61 urad at the design torque, 55 at most between: the largest LTE is the design
+    torque's, which the design torque's steps (the path LTE step among them) acted on; this
+    step records the range and tries nothing."""
+    _asked, law = _truck({-60.0: (38.5, 55.0, 45.0, 61.0)})
     seen, fake = seen_designs(law)
     targets, setup, chosen = stand_in(monkeypatch, fake, TORQUES)
     start = _start(chosen)
@@ -151,7 +152,42 @@ def test_above_the_limit_at_the_design_torque_the_design_torque_steps_act(monkey
                                 lambda v: dict(v))
     assert got is start
     assert all(s == dict(WRITTEN) for s in seen)  # only the design itself, between
-    assert drl.range_record(setup)["peak"] == pytest.approx(65.8)
+    assert drl.range_record(setup)["peak"] == pytest.approx(61.0)
+
+
+def test_a_peak_between_above_a_missed_design_torque_is_acted_on(monkeypatch):
+    """61 urad at the design torque and 65.8 between (the 17x38 by Method 0 of
+    benchmarks/data/unseen_designs: 21 / 62 urad at its torques, 71 / 73 between): the
+    design torque's steps judged the 61 alone, so this step acts on the 65.8 as on a peak
+    between torques that keep the limit; the turn whose largest LTE over the range is 52
+    urad is kept, the one at 70 is not."""
+    curves = dict(CURVES) | {-60.0: (38.5, 65.8, 45.0, 61.0)}
+    _asked, law = _truck(curves)
+    seen, fake = seen_designs(law)
+    targets, setup, chosen = stand_in(monkeypatch, fake, TORQUES)
+    start = _start(chosen)
+    seen.clear()
+    lines: list[str] = []
+    got = drl.checked_range_lte(start, targets, setup, None, lines.append,
+                                lambda v: dict(v))
+    assert "65.8 urad at 734.9 N m, between the light and the design torque" in lines[0]
+    assert got.values["path_angle"] == -72.5
+    assert drl.range_record(setup)["peak"] == pytest.approx(52.0)
+
+
+@pytest.mark.parametrize(("peak", "ends", "acts"), [
+    (65.8, (38.5, 38.6), True),  # within at both, above between
+    (55.0, (38.5, 38.6), False),  # within everywhere
+    (61.0, (38.5, 61.0), False),  # the peak is the design torque's
+    (61.04, (38.5, 61.0), False),  # the same peak within SAME_PEAK (0.05 urad)
+    (73.0, (21.0, 62.0), True),  # the 17x38: higher between than at its torques
+    (float("nan"), (38.5, 38.6), False),  # not analysed
+    (65.0, (float("nan"), 38.6), True),  # an end not analysed: the other within
+])
+def test_acts_between_reads_where_the_largest_lte_is(peak, ends, acts):
+    """The rule alone: exact comparisons of given numbers (no tolerance but SAME_PEAK,
+    the step's own)."""
+    assert drl.acts_between(peak, ends, 60.0) is acts
 
 
 def test_an_analysis_that_fails_is_not_judged(monkeypatch):

@@ -640,6 +640,35 @@ def _with_record(case, record):
     return dataclasses.replace(case, extra=MappingProxyType(extra))
 
 
+def _lte_lines(case, development) -> list[str]:
+    """Each flank's written LTE at its light and design torque and its largest between
+    them, where it misses the development's target or the verdict's limit
+    (:func:`contact.optimize.development_lte_lines.lte_lines`); the drive flank's range
+    from the check's record, else, where the drive misses its target, the written case
+    analysed at ``ltca run``'s ``lte_range`` torques
+    (:func:`contact.optimize.development_deflection.analysed`, 10 s CPU measured on the
+    loaded machine; a failed
+    analysis logged and the line says "not judged between them")."""
+    from contact.optimize.development_deflection import analysed
+    from contact.optimize.development_lte_lines import lte_lines
+    from geometry.core.errors import InputError
+
+    drive = None
+    lte = development.best.metrics["lte_peak_to_peak"]
+    if development.lte_range is None and float(max(lte)) > float(
+            development.targets.max_lte):
+        try:
+            found = analysed(case, *(float(t) for t in development.torque))
+        except (InputError, ValueError, KeyError) as exc:
+            import logging
+
+            logging.getLogger(__name__).info("the drive LTE between the torques not "
+                                             "analysed: %s", exc)
+        else:
+            drive = {"torques": tuple(found.torques), "lte": tuple(found.lte)}
+    return lte_lines(development, drive_between=drive)
+
+
 def _deflection_note(case, development) -> str | None:
     """What sets the written drive flank's LTE at the design torque, where it exceeds the
     verdict's limit: the teeth's mean deflection, the LTE's share of it and the torque up
@@ -1024,6 +1053,10 @@ def _run_synthesize(args: argparse.Namespace) -> int:
         print("  " + line)
     if development is not None:
         print("  " + development.headline())
+        # each flank's LTE at its torques and the largest between them where it misses the
+        # target or the verdict's limit (issue 71: "at every torque")
+        for line in _lte_lines(case, development):
+            print("  " + line)
     process = gear_process_note(development, case)
     if process is not None:
         print("note: " + process)

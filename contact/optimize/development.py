@@ -683,7 +683,8 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                                    tuple(float(t) for t in setup["torques"])),
                                tolerant_torque=upto, lte_range=_judged(setup, best),
                                fe_level_text=setup.get("fe_level_why", ""),
-                               given_root_text=given_root_text)
+                               given_root_text=given_root_text,
+                               coast_lte_range=_coast_judged(setup, coast, best, teeth))
     say(result.headline())
     return result
 
@@ -937,6 +938,28 @@ def _judged(setup: dict[str, Any], best: DevelopmentEvaluation) -> dict[str, Any
     if found is None or found.get("values") != dict(best.values):
         return None
     return found
+
+
+def _coast_judged(setup: dict[str, Any], coast: Any, drive: DevelopmentEvaluation,
+                  teeth: KeptTeeth) -> dict[str, Any] | None:
+    """The written coast design's LTE over ``ltca run --flank coast``'s ``lte_range``
+    torques (:func:`~contact.optimize.development_range_lte.range_lte` on the coast flank
+    at its own torques, the analyses the coast steps made reused), as the drive's record
+    (:func:`~contact.optimize.development_range_lte.range_record`'s keys); None where the
+    coast flank was not checked at two torques or the analysis failed (logged)."""
+    from contact.optimize.development_range_lte import range_lte, range_peak
+
+    e = coast.best if coast is not None else None
+    if e is None or len(coast.torques) != 2:
+        return None
+    at = dict(setup, torques=[float(t) for t in coast.torques])
+    found = range_lte(e, at, teeth, flank="coast",
+                      key_prefix=(*bearing_key(drive.values), "coast"))
+    if found is None:
+        return None
+    peak, torque = range_peak(found)
+    return {"torques": found[0], "lte": found[1], "peak": peak, "at": torque,
+            "values": dict(e.values)}
 
 
 def _outclassed(setup: dict[str, Any], below: float) -> None:

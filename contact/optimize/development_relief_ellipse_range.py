@@ -50,6 +50,7 @@ from contact.optimize.development_keep import kept_why
 from contact.optimize.development_load_lte import RELIEF_ELLIPSE_FRACTIONS, RELIEF_ELLIPSE_STEP
 from contact.optimize.development_matched_te import lte_ends
 from contact.optimize.development_range_lte import (
+    acts_between,
     range_better,
     range_curve,
     range_lost,
@@ -90,11 +91,13 @@ def _limit() -> float:
 def pair_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                  setup: Mapping[str, Any], teeth: KeptTeeth | None) -> bool:
     """The step's gate: ``best`` is checked, varies a root relief above its lower bound and
-    the ellipse, misses no target but its LTE, keeps the verdict's limit at both of its
-    torques, and either its design torque's LTE p-p misses the development's target
-    ``max_lte`` or its largest LTE over ``ltca run``'s ``lte_range`` torques exceeds the
-    limit (:func:`~contact.optimize.development_range_lte.range_lte`, the range step's
-    analysis memoised; asked last).
+    the ellipse, misses no target but its LTE, and either keeps the verdict's limit at
+    both of its torques with its design torque's LTE p-p missing the development's target
+    ``max_lte``, or has its largest LTE over ``ltca run``'s ``lte_range`` torques above the
+    limit between its torques (:func:`~contact.optimize.development_range_lte.
+    acts_between`: within the limit at both, or above it at one and higher still between;
+    :func:`~contact.optimize.development_range_lte.range_lte`, the range step's analysis
+    memoised; asked last).
 
     Parameters
     ----------
@@ -132,11 +135,13 @@ def pair_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         return False
     limit = _limit()
     light, design = lte_ends(best)
-    if not (light <= limit and design <= limit):  # NaN: not run; above: other steps act
+    if not (math.isfinite(light) and math.isfinite(design)):  # not run
         return False
-    if design > float(targets.max_lte):
+    if light <= limit and design <= limit and design > float(targets.max_lte):
         return True
-    return bool(range_peak(range_lte(best, setup, teeth))[0] > limit)
+    # above the limit at an end: the design torque's steps acted on it, unless the LTE is
+    # higher still between the torques (the 17x38 by Method 0: 21 / 62, 73 between)
+    return acts_between(range_peak(range_lte(best, setup, teeth))[0], (light, design), limit)
 
 
 def pair_designs(values: Mapping[str, float], targets: DevelopmentTargets

@@ -194,6 +194,12 @@ class DevelopmentResult:
         (:func:`contact.optimize.development_range_lte.range_record`: ``"torques"`` [N·m],
         ``"lte"`` [µrad], ``"peak"`` [µrad], ``"at"`` [N·m]); None where the check's steps
         did not judge it at these torques.
+    coast_lte_range : dict or None
+        The written coast design's LTE p-p judged between :attr:`coast_torques` as ``ltca
+        run --flank coast``'s ``lte_range`` step judges it
+        (:func:`contact.optimize.development_range_lte.range_lte` on the coast flank, the
+        keys of :attr:`lte_range`); None where the coast flank was not checked at two
+        torques or its analysis failed.
     remedy : contact.optimize.development_remedy.AppliedRemedy or None
         The contact-ratio remedy applied to the user's basic data before this development
         (``develop(..., apply_remedy=True)``, ``ltca synthesize --apply-remedy``; its
@@ -240,6 +246,7 @@ class DevelopmentResult:
     tolerant_torque: tuple[float, float] = (math.nan, math.nan)
     lte_range: dict | None = None
     remedy: Any = None
+    coast_lte_range: dict | None = None
     fe_level_text: str = ""
     given_root_text: str = ""
 
@@ -416,10 +423,28 @@ class DevelopmentResult:
         if e.full is None:
             return "not analysed"
         if e.full[2]:
-            return "every target met"
+            return "every target met" + self._between_text(e)
         return "not every target met: " + "; ".join(
             _missed(k, e.metrics, self.targets, self.centre_v, self.pressure_limit)
             for k, v in e.full[1].items() if v > 0)
+
+    def _between_text(self, e: DevelopmentEvaluation) -> str:
+        """Where ``e``, the written drive or coast design, meets every target at its two
+        torques and its record of the LTE over ``ltca run``'s ``lte_range`` torques
+        (:attr:`lte_range`, :attr:`coast_lte_range`) is above the verdict's limit between
+        them: that peak, its torque and the limit (issue 71: "at every torque"); else "".
+        """
+        from contact.study.verdicts import LTE_LIMIT  # imports contact.ltca
+
+        record = (self.lte_range if e is self.best else
+                  self.coast_lte_range if e is self.coast_best else None)
+        if not record or record.get("values") != dict(e.values):
+            return ""
+        peak = float(record.get("peak", math.nan))
+        if not peak > LTE_LIMIT:
+            return ""
+        return (f" at its two torques, but LTE p-p {peak:.1f} urad at "
+                f"{plain_number(float(record['at']))} N m between them (limit {LTE_LIMIT:g})")
 
     def _pressures_text(self) -> str:
         """Both flanks' flank peak pressure at the design torque against the limit."""
