@@ -155,7 +155,11 @@ COAST_DONE_WHEN: dict[str, set[str]] = {
     "eaxle_hypoid_11x39_s80": {"coast_lte60", "duty"},
     "hypoid_10x37_s75": {"coast_lte60", "duty"},
     "hypoid_5x43": {"coast_lte60", "duty"},
-    "pc_hypoid_10x43": {"coast_lte60", "duty"},
+    # the duty cycle's top bin at the design torque 357 N m FAILs its gear root, S_F,FE 1.29 <
+    # 1.3, under the bundled spectrum's made-up deflection (dE 0.05, dP -0.03, dG 0.03 mm;
+    # ltca run at 357 N m without it: 1.32, not FAIL); measured 2026-11-27 at 5b52318 since
+    # the duty cycle judges the FE root as ltca run does (dutyroot81): not met
+    "pc_hypoid_10x43": {"coast_lte60"},
     "spiral_bevel_13x39": {"coast_lte60", "duty"},
     "truck_hypoid_9x37": {"coast_lte60", "duty"},
     "hypoid_6x41": {"coast_lte60", "duty"},

@@ -270,3 +270,31 @@ def test_duty_cycle_judges_a_bin_as_ltca_run_judges_its_torque():
     assert root_safety_severity(1.29, 1.3, 100.0, float("nan")) == "fail"
     assert root_safety_severity(1.29, 1.3, 150.0, 100.0, long_life=False) == "fail"
     assert root_safety_severity(0.3, 1.3, 150.0, 100.0, above_static=True) == "fail"
+
+
+def test_duty_root_fail_names_the_bins_misalignment():
+    """Issue 71: the pc_hypoid_10x43's illustrative duty cycle FAILed its gear root at 357
+    N·m (S_F,FE 1.29 < 1.3) where `ltca run` at 357 N·m reads 1.32: the bin carries the
+    spectrum's deflection (ΔE 0.05, ΔP -0.03, ΔG 0.03 mm, ΔΣ 0.01°), the run the
+    assembly's alone. The finding said "as `ltca run` fails it at that torque"; it now
+    names the bin's misalignment (ΔΣ stored in rad, said in degrees: 0.01° exactly) and,
+    in the bundled spectrum, that its deflections are made up."""
+    import math
+
+    ds = xr.Dataset(
+        {"contact_safety_factor": ("member", [2.0, 2.0]),
+         "root_stress_safety": (("bin", "member"), [[1.29, 1.5]]),
+         "bending_safety_min": 1.3, "rating_design_torque": 357.0,
+         "torque": ("bin", [357.0]),
+         "delta_E": ("bin", [0.05], {"units": "mm"}),
+         "delta_P": ("bin", [-0.03], {"units": "mm"}),
+         "delta_G": ("bin", [0.03], {"units": "mm"}),
+         "delta_Sigma": ("bin", [math.radians(0.01)], {"units": "rad"})},
+        coords={"bin": [0], "member": ["pinion", "gear"]}, attrs={"illustrative": 1})
+    (fail,) = [f for f in _found(verdict(ds), "root_stress") if f.severity == "fail"]
+    assert "as `ltca run` fails it at that torque" not in fail.reason
+    assert "ΔE 0.05, ΔP -0.03, ΔG 0.03 mm, ΔΣ 0.01 deg" in fail.reason, fail.reason
+    assert "analyses the assembly's alone" in fail.reason and "made-up" in fail.reason
+    ds.attrs["illustrative"] = 0  # a user's deflection table: no "made-up" clause
+    (fail,) = [f for f in _found(verdict(ds), "root_stress") if f.severity == "fail"]
+    assert "made-up" not in fail.reason and "ΔE 0.05" in fail.reason
