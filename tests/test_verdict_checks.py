@@ -298,3 +298,11 @@ def test_duty_root_fail_names_the_bins_misalignment():
     ds.attrs["illustrative"] = 0  # a user's deflection table: no "made-up" clause
     (fail,) = [f for f in _found(verdict(ds), "root_stress") if f.severity == "fail"]
     assert "made-up" not in fail.reason and "ΔE 0.05" in fail.reason
+    # the next step analyses the bin the duty cycle judged: its torque and misalignment
+    # (ΔΣ in degrees, as ltca run's --dSigma takes it)
+    from contact.commands.next_steps import duty_cycle_lines
+
+    lines = duty_cycle_lines(ds, "x.toml", None, ["root_stress"])
+    assert "at the bin's misalignment" in lines[0], lines
+    assert lines[1] == ("    ltca run x.toml --torque 357 --dE 0.05 --dP -0.03 --dG 0.03 "
+                        "--dSigma 0.01"), lines
