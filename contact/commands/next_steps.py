@@ -374,15 +374,10 @@ def _bin_misalignment_flags(ds, b: int) -> str:
     357 N·m fails its gear root at ΔE 0.05 mm, the run at 357 N·m without it does not)."""
     import math
 
-    import numpy as np
+    from contact.study.verdict_checks import duty_bin_misalignment
 
-    names = ("delta_E", "delta_P", "delta_G", "delta_Sigma")
-    if not all(n in ds for n in names):
-        return ""
-    d = [float(np.asarray(ds[n].values, float).reshape(-1)[b]) for n in names]
-    if str(ds["delta_Sigma"].attrs.get("units", "rad")) == "rad":
-        d[3] = math.degrees(d[3])
-    if not all(math.isfinite(x) for x in d) or not any(d):
+    d = duty_bin_misalignment(ds, b)
+    if d is None or not all(math.isfinite(x) for x in d) or not any(d):
         return ""
     return "".join(f" --{flag} {x:.4g}" for flag, x in zip(("dE", "dP", "dG", "dSigma"), d,
                                                           strict=True))

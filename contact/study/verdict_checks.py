@@ -382,3 +382,40 @@ def unchecked_reason(tree: xr.DataTree, check: str) -> str:
                 "(contact.iso10300_rating rates only; run_analysis rates by default, or "
                 "contact.chain.scuffing_flash_temperature(rating, friction))")
     return "no /rating/flash_temperature: the rating method gives no virtual gears for it"
+
+
+def duty_bin_misalignment(ds: xr.Dataset, b: int) -> tuple[float, float, float, float] | None:
+    """Duty bin ``b``'s misalignment (ΔE, ΔP, ΔG [mm], ΔΣ [deg]): the deflection table's
+    at the bin's torque and the case's assembly misalignment, as the bin was analysed.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        A ``/duty_cycle`` dataset (``delta_E``, ``delta_P``, ``delta_G`` [mm] and
+        ``delta_Sigma`` [rad, or the unit its ``units`` attribute names] over ``bin``).
+    b : int
+        The bin's index.
+
+    Returns
+    -------
+    tuple of float or None
+        ΔE, ΔP, ΔG in mm and ΔΣ in degrees (as ``ltca run``'s ``--dSigma`` and the case
+        files take it); None where the dataset holds no misalignment.
+
+    Raises
+    ------
+    IndexError
+        ``b`` outside the dataset's bins.
+
+    Notes
+    -----
+    Source: :class:`contact.study.duty_cycle_inputs.DeflectionTable` (issue 71: a duty
+    bin's stresses are of its deflection, the run's of the assembly's alone).
+    """
+    names = ("delta_E", "delta_P", "delta_G", "delta_Sigma")
+    if not all(n in ds for n in names):
+        return None
+    d = [float(np.asarray(ds[n].values, float).reshape(-1)[b]) for n in names]
+    if str(ds["delta_Sigma"].attrs.get("units", "rad")) == "rad":
+        d[3] = float(np.degrees(d[3]))
+    return d[0], d[1], d[2], d[3]

@@ -1309,12 +1309,11 @@ def _bin_misalignment(ds: xr.Dataset, i: int) -> str:
     (:class:`contact.study.duty_cycle_inputs.DeflectionTable`), so its root safety is not
     the run's at the same torque: the pc_hypoid_10x43's gear 1.29 in the illustrative
     spectrum's top bin against the run's 1.32 at 357 N·m (issue 71)."""
-    names = ("delta_E", "delta_P", "delta_G", "delta_Sigma")
-    if not all(n in ds for n in names):
+    from contact.study.verdict_checks import duty_bin_misalignment
+
+    d = duty_bin_misalignment(ds, i)
+    if d is None:
         return ""
-    d = [float(np.asarray(ds[n].values, float).reshape(-1)[i]) for n in names]
-    if str(ds["delta_Sigma"].attrs.get("units", "rad")) == "rad":
-        d[3] = math.degrees(d[3])
     made_up = ("; the bundled spectrum's made-up deflections: give the axle's measured "
                "[duty_cycle] deflection table to judge the design"
                if int(ds.attrs.get("illustrative", 0)) else "")
