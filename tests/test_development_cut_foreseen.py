@@ -20,6 +20,7 @@ from contact.optimize.development_process import (
     FORESEEN_CUT_MARGIN,
     TORQUE_CUT_FRACTION,
     CutForeseen,
+    Outclassed,
     cut_foreseen,
     with_generated_gear,
 )
@@ -150,7 +151,8 @@ def test_a_bearing_at_its_rated_torque_is_bounded_after_its_pitting_step(monkeyp
 def _runs(monkeypatch, generated):
     """A development stand-in: the Formate gear's stops (CutForeseen at 156.6 of 361.8
     N m) where foresee_cut is given, else ends cut to 102.3 N m; the generated gear's is
-    ``generated`` (a result, or an exception raised). Returns (run, the calls' kw)."""
+    ``generated(kw)`` (a result returned, or an exception raised). Returns (run, the
+    calls' gear process and kw, the Formate result)."""
     import contact.load_capacity.iso10300.capacity as capacity
 
     monkeypatch.setattr(capacity, "with_design_torque", lambda case, t: (case, RATED, ""))
@@ -160,9 +162,10 @@ def _runs(monkeypatch, generated):
     def run(b, **kw):
         given.append((b.options.gear_process, kw))
         if b.options.gear_process == "Generate":
-            if isinstance(generated, Exception):
-                raise generated
-            return generated
+            out = generated(kw)
+            if isinstance(out, Exception):
+                raise out
+            return out
         if kw.get("foresee_cut"):
             raise CutForeseen(STATIC * SAFETY ** 2, RATED)
         return formate
@@ -170,16 +173,20 @@ def _runs(monkeypatch, generated):
     return run, given, formate
 
 
+BOUND = {"outclassed_below": pytest.approx(STATIC * SAFETY ** 2)}
+
+
 def test_a_foreseen_cut_develops_the_generated_gear_at_once(monkeypatch):
     """The 14x36: the Formate development stops at its static capacity, the generated
-    gear's does not fail (371.2 N m) and is kept without the Formate's being finished
-    (round 22: 102.3 of 361.8 N m, then the generated gear kept at 371.2 N m), the text
-    saying why."""
+    gear's (given the Formate's bound to stop at) does not fail (371.2 N m) and is kept
+    without the Formate's being finished (round 22: 102.3 of 361.8 N m, then the
+    generated gear kept at 371.2 N m), the text saying why."""
     basic = load_basic(UNSEEN / "spiral_bevel_14x36_s70.toml")
-    run, given, _ = _runs(monkeypatch, _outcome("Generate", torque=371.2, lowered=False))
+    run, given, _ = _runs(monkeypatch, lambda kw: _outcome("Generate", torque=371.2,
+                                                           lowered=False))
     lines: list[str] = []
     kept = with_generated_gear(run, basic, lines.append)
-    assert given == [("auto", {"foresee_cut": True}), ("Generate", {})]
+    assert given == [("auto", {"foresee_cut": True}), ("Generate", BOUND)]
     assert kept.report.gear.settings.process == "Generate"
     assert kept.gear_process_text.startswith(
         "Gear process (auto): generated. The Formate gear's development was stopped at its "
@@ -195,21 +202,49 @@ def test_where_the_generated_gear_fails_too_the_formate_is_developed_in_full(mon
     foresight (better_outcome: both cut, the higher torque, the Formate's 102.3 N m;
     a generated design at 150 N m, cut too, is kept over it)."""
     basic = load_basic(UNSEEN / "spiral_bevel_14x36_s70.toml")
-    run, given, formate = _runs(monkeypatch, _outcome("Generate", torque=90.0))
+    run, given, formate = _runs(monkeypatch, lambda kw: _outcome("Generate", torque=90.0))
     kept = with_generated_gear(run, basic)
-    assert given == [("auto", {"foresee_cut": True}), ("Generate", {}), ("auto", {})]
+    assert given == [("auto", {"foresee_cut": True}), ("Generate", BOUND), ("auto", {})]
     assert kept.report.gear.settings.process == "Formate" and kept.torque[1] == 102.3
     assert "the generated gear's fails too" in kept.gear_process_text
-    run, given, _ = _runs(monkeypatch, _outcome("Generate", torque=150.0))
+    run, given, _ = _runs(monkeypatch, lambda kw: _outcome("Generate", torque=150.0))
     assert with_generated_gear(run, basic).report.gear.settings.process == "Generate"
-    run, given, _ = _runs(monkeypatch, InputError("no generated gear"))
+    run, given, _ = _runs(monkeypatch, lambda kw: InputError("no generated gear"))
     kept = with_generated_gear(run, basic)
     assert kept.report.gear.settings.process == "Formate"
     assert "was developed too and failed (no generated gear)" in kept.gear_process_text
     # a forced Formate process: one development, no foresight asked
     forced = replace(basic, options=replace(basic.options, gear_process="Formate"))
-    run, given, formate = _runs(monkeypatch, InputError("never"))
+    run, given, formate = _runs(monkeypatch, lambda kw: InputError("never"))
     assert with_generated_gear(run, forced) is formate and given == [("Formate", {})]
+
+
+def test_a_generated_gear_stopped_below_the_bound_is_ranked_by_the_formate_s_full_torque(
+        monkeypatch):
+    """The generated gear's development after a foreseen cut stops where its torque falls
+    below the Formate's bound (Outclassed: cut then, it can only rank above a Formate
+    design that ends lower). Stopped at 90 N m, below the Formate's full 102.3 N m: the
+    Formate is kept as without the foresight (the 13x37 at Σ 60°'s case: its generated
+    gear stopped below the Formate design), the text the Outclassed one. Stopped at 120 N
+    m, above 102.3: the generated gear is developed again as it is without the foresight
+    (given the Formate's 102.3 N m to stop at) and ranked."""
+    basic = load_basic(UNSEEN / "spiral_bevel_14x36_s70.toml")
+    run, given, _ = _runs(monkeypatch, lambda kw: Outclassed(90.0))
+    kept = with_generated_gear(run, basic)
+    assert given == [("auto", {"foresee_cut": True}), ("Generate", BOUND), ("auto", {})]
+    assert kept.report.gear.settings.process == "Formate"
+    assert "stopped where its design torque fell to 90 N m" in kept.gear_process_text
+
+    def stopped_at_120(kw):
+        if kw["outclassed_below"] > 110.0:
+            return Outclassed(120.0)
+        return _outcome("Generate", torque=105.0)
+
+    run, given, _ = _runs(monkeypatch, stopped_at_120)
+    kept = with_generated_gear(run, basic)
+    assert given == [("auto", {"foresee_cut": True}), ("Generate", BOUND), ("auto", {}),
+                     ("Generate", {"outclassed_below": 102.3})]
+    assert kept.report.gear.settings.process == "Generate" and kept.torque[1] == 105.0
 
 
 def test_the_basic_data_of_the_14x36_is_a_pair_auto_generates():

@@ -297,7 +297,8 @@ def with_generated_gear(run: Callable[[Any], Any], basic: Any,
     ----------
     run : callable BasicDesign → DevelopmentResult
         The development itself (:func:`contact.optimize.development.develop` without
-        this fallback).
+        this fallback), called with ``foresee_cut=True`` for the Formate development of a
+        pair ``"auto"`` generates and ``outclassed_below=`` for a generated one.
     basic : BasicDesign
     say : callable, optional
         Called with a line where the generated gear is developed too, and with the
@@ -311,7 +312,11 @@ def with_generated_gear(run: Callable[[Any], Any], basic: Any,
         (:func:`geometry.synthesis.case_synthesis.gear_processes`: face milled, δ2 below
         :data:`~geometry.synthesis.case_synthesis.FORMATE_PITCH_ANGLE_LIMIT`), or where
         its outcome does not fail (:func:`failed_outcome`); else the better of the two
-        (:func:`better_outcome`), its ``gear_process_text`` saying which and why.
+        (:func:`better_outcome`), its ``gear_process_text`` saying which and why. Where
+        the Formate development stops on a foreseen cut (:class:`CutForeseen`), the
+        generated gear's design where it does not fail; else the Formate gear is developed
+        in full and the two ranked as above (the same design kept as without the stop,
+        measured in docs/synthesis.md, "The Formate gear's torque cut foreseen").
 
     Raises
     ------
@@ -326,7 +331,7 @@ def with_generated_gear(run: Callable[[Any], Any], basic: Any,
 
     say = say or (lambda _line: None)
     auto = gear_processes(basic) == ("Formate", "Generate")
-    second: Any = None
+    second: Any = None  # the generated gear's development where it came first
     try:
         # a pair "auto" can generate: its Formate development stops where its torque cut is
         # foreseen (CutForeseen), the generated gear's developed at once
@@ -343,37 +348,35 @@ def with_generated_gear(run: Callable[[Any], Any], basic: Any,
         # written design's pinion tip plane, issue 71's unseen designs): the pair "auto"
         # can generate is developed with the generated gear before the error is given
         return _generated_after_error(run, basic, err, say)
-    if (gear_processes(basic) != ("Formate", "Generate")
-            or first.report.gear.settings.process != "Formate"):
+    if not auto or first.report.gear.settings.process != "Formate":
         return first
     rated = with_design_torque(first.case, basic.options.design_torque)[1]
     why = failed_outcome(first, rated)
     if not why:
         return first
-    if second is None:
-        say(f"development: the Formate gear's design fails ({why}); developing the pair "
-            "with a generated gear too (gear_process 'auto')")
     below = outclassing_torque(first, rated)
-    try:
-        if isinstance(second, InputError):  # developed before the Formate's full one
-            raise second
+    if second is None or (isinstance(second, Outclassed)
+                          and not float(first.torque[1]) > second.torque):
+        # (a generated development stopped below the Formate's bound, not below its design
+        # torque: developed again as it is without the foresight)
         if second is None:
-            second = (run(_generated(basic)) if not math.isfinite(below)
-                      else run(_generated(basic), outclassed_below=below))
-    except Outclassed as stop:
+            say(f"development: the Formate gear's design fails ({why}); developing the pair "
+                "with a generated gear too (gear_process 'auto')")
+        second = _developed(run, _generated(basic), below)
+    if isinstance(second, Outclassed):
         text = (f"Gear process (auto): Formate. The Formate gear's developed design fails "
                 f"({why}) at {plain_number(first.torque[1])} N m; the generated gear's development "
-                f"was stopped where its design torque fell to {plain_number(stop.torque)} N m, "
+                f"was stopped where its design torque fell to {plain_number(second.torque)} N m, "
                 f"below the Formate gear's (it is only lowered from there: "
                 "contact.optimize.development_process.outclassing_torque); kept the Formate "
                 "gear " + _RULE)
         say("development: " + text)
         return dataclasses.replace(first, gear_process_text=text)
-    except InputError as err:
-        log.info("development: the generated gear has no developed design: %s", err)
+    if isinstance(second, InputError):
+        log.info("development: the generated gear has no developed design: %s", second)
         return dataclasses.replace(first, gear_process_text=(
             f"Gear process (auto): Formate; its design fails ({why}), the generated gear "
-            f"was developed too and failed ({err})."))
+            f"was developed too and failed ({second})."))
     kept, which = better_outcome(first, second, rated)
     other = failed_outcome(second, rated)
     text = (f"Gear process (auto): {'generated' if which == 'second' else 'Formate'}. The "
@@ -393,16 +396,29 @@ def _generated(basic: Any) -> Any:
         basic, options=dataclasses.replace(basic.options, gear_process="Generate"))
 
 
+def _developed(run: Callable[..., Any], basic: Any, below: float) -> Any:
+    """``run(basic)`` given ``outclassed_below=below`` where that is finite; the
+    :class:`Outclassed` stop or the :class:`~geometry.core.errors.InputError` it raised in
+    its place."""
+    try:
+        return run(basic) if not math.isfinite(below) else run(basic, outclassed_below=below)
+    except (Outclassed, InputError) as stop:
+        return stop
+
+
 def _formate_in_full(run: Callable[..., Any], basic: Any, second: Any) -> Any:
     """The Formate development of ``basic`` in full (no :class:`CutForeseen` stop) where
-    the generated gear's development ``second`` (or the error it raised) failed after a
-    foreseen cut; where the Formate development raises, ``second`` itself (its text saying
-    so) or, where that is an error too, the Formate development's error."""
+    the generated gear's development ``second`` failed after a foreseen cut (a result, its
+    :class:`Outclassed` stop or its error); where the Formate development raises, the
+    generated gear's result (its text saying so; developed in full where it was stopped),
+    else the Formate development's error."""
     try:
         return run(basic)
     except InputError as err:
+        if isinstance(second, Outclassed):
+            second = _developed(run, _generated(basic), math.nan)
         if isinstance(second, InputError):
-            raise
+            raise err from None
         text = (f"Gear process (auto): generated. The Formate gear's development stopped "
                 f"({err}); the generated gear's developed at {plain_number(second.torque[1])} "
                 "N m.")
@@ -412,22 +428,25 @@ def _formate_in_full(run: Callable[..., Any], basic: Any, second: Any) -> Any:
 def _generated_after_foreseen(run: Callable[..., Any], basic: Any, foreseen: CutForeseen,
                               say: Callable[[str], None]) -> tuple[Any, Any]:
     """The generated gear's development of ``basic`` where its Formate development stopped
-    at ``foreseen``, and the result to return: the generated design with its
-    ``gear_process_text`` where it does not fail (:func:`failed_outcome` at the Formate
-    development's rated torque: it ranks first whatever the Formate design ends at, which
-    fails as foreseen), else None (the caller develops the Formate gear in full and ranks
-    the two, :func:`better_outcome`). The first item is the generated development, or the
-    :class:`~geometry.core.errors.InputError` it raised."""
+    at ``foreseen``, and the result to return.
+
+    The generated gear's development is stopped (:class:`Outclassed`) where its design
+    torque falls below the Formate bearing's bound ``foreseen.torque``: it is cut then
+    (below half the rated torque) and can rank above the Formate design only where that
+    ends below it, which the Formate's full development decides. Returns (the generated
+    development, or its :class:`Outclassed` stop or :class:`~geometry.core.errors.
+    InputError`; the generated design with its ``gear_process_text`` where it does not fail
+    (:func:`failed_outcome` at the Formate development's rated torque: it ranks first
+    whatever the Formate design ends at, which fails as foreseen), else None: the caller
+    develops the Formate gear in full and ranks the two as :func:`with_generated_gear`
+    does without the foresight)."""
     say(f"development: the Formate gear's local pitting capacity is at most "
         f"{plain_number(foreseen.torque)} N m, below {FORESEEN_CUT_MARGIN:g} of "
         f"{TORQUE_CUT_FRACTION:g} of its rated {plain_number(foreseen.rated)} N m (a design "
         "torque cut foreseen); developing the pair with a generated gear (gear_process 'auto')")
-    try:
-        second = run(_generated(basic))
-    except InputError as err:
-        log.info("development: the generated gear has no developed design: %s", err)
-        return err, None
-    other = failed_outcome(second, foreseen.rated)
+    second = _developed(run, _generated(basic), foreseen.torque)
+    other = (failed_outcome(second, foreseen.rated)
+             if not isinstance(second, (Outclassed, InputError)) else str(second))
     if other:
         say(f"development: the generated gear's design fails too ({other}); developing the "
             "Formate gear in full")
