@@ -540,7 +540,7 @@ def test_generated_gear_developed_only_where_the_formate_design_fails(monkeypatc
     fine = _outcome("Formate")
     runs: list[str] = []
 
-    def run_fine(b):
+    def run_fine(b, **kw):  # kw: foresee_cut, the Formate development's early stop
         runs.append(b.options.gear_process)
         return fine
 
@@ -605,7 +605,7 @@ def test_the_generated_gear_development_stops_once_it_cannot_win(monkeypatch):
 
     lines: list[str] = []
     kept = with_generated_gear(run, basic, lines.append)
-    assert given == [{}, {"outclassed_below": 110.4}]
+    assert given == [{"foresee_cut": True}, {"outclassed_below": 110.4}]
     assert kept.report.gear.settings.process == "Formate"
     assert kept.gear_process_text.startswith("Gear process (auto): Formate. The Formate gear's")
     assert "stopped where its design torque fell to 18.5 N m" in kept.gear_process_text
@@ -648,7 +648,7 @@ def test_where_both_designs_fail_the_higher_design_torque_is_kept(monkeypatch):
         return generated if b.options.gear_process == "Generate" else formate
 
     kept = with_generated_gear(run, basic)
-    assert given == [{}, {"outclassed_below": 5.8}]
+    assert given == [{"foresee_cut": True}, {"outclassed_below": 5.8}]
     assert kept.report.gear.settings.process == "Generate"
     assert kept.gear_process_text.startswith("Gear process (auto): generated. The Formate")
     assert "coast LTE spread 0.66" in kept.gear_process_text
@@ -667,7 +667,7 @@ def test_a_formate_development_that_stops_is_followed_by_the_generated_gear(monk
     generated = _outcome("Generate", torque=171.0, lowered=True)
     stopped = InputError("outside blade: its root line is not generated")
 
-    def run(b):
+    def run(b, **kw):
         if b.options.gear_process == "Generate":
             return generated
         raise stopped
@@ -677,7 +677,7 @@ def test_a_formate_development_that_stops_is_followed_by_the_generated_gear(monk
     assert kept.gear_process_text.startswith("Gear process (auto): generated. The Formate "
                                              "gear's development stopped (outside blade")
 
-    def both(b):
+    def both(b, **kw):
         raise (InputError("generated too") if b.options.gear_process == "Generate"
                else stopped)
 

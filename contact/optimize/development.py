@@ -107,6 +107,7 @@ design_torque_of     the torque the bearing is checked at
 from __future__ import annotations
 
 import functools
+import logging
 import math
 import time
 from collections.abc import Callable
@@ -233,6 +234,8 @@ __all__ = ["CHECK_LTCA", "COARSE_LTCA", "COAST_STATUS", "CROWNING_NAME", "CROWNI
            "lte_spread", "scaled_variables", "static_strength", "targets_from_table",
            "working_depth_centre"]
 
+log = logging.getLogger(__name__)
+
 
 def _wrapped(basic: BasicDesign, apply_remedy: bool, **kw: Any) -> DevelopmentResult:
     """:func:`develop` with ``apply_remedy`` (the design as given, its remedies checked,
@@ -256,7 +259,7 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
             progress: Callable[[str], None] | None = None,
             synthesis_progress: Any = None, root_stress: bool = True,
             gear_fallback: bool = True, outclassed_below: float = math.nan,
-            apply_remedy: bool = False) -> DevelopmentResult:
+            foresee_cut: bool = False, apply_remedy: bool = False) -> DevelopmentResult:
     """Develop the drive flank, then the coast flank, of a basic design to the bearing of
     ``targets``.
 
@@ -295,6 +298,13 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
         outcome could not beat the design it is compared with
         (:func:`~contact.optimize.development_process.with_generated_gear`, which gives
         it). Default NaN: never.
+    foresee_cut : bool, optional
+        Default False. True (a pair ``gear_process = "auto"`` can generate, given by
+        :func:`~contact.optimize.development_process.with_generated_gear`): a Formate
+        gear's development at its rated torque stops at its static-capacity step
+        (:class:`~contact.optimize.development_process.CutForeseen`) where its bearing's
+        local pitting bound foresees a design torque cut below half the rated torque
+        (:func:`~contact.optimize.development_process.cut_foreseen`).
     apply_remedy : bool, optional
         Default False: the basic data as given. True: develop the design as given, check
         its contact-ratio remedies at its written prescriptions as ``ltca synthesize``'s
@@ -324,6 +334,9 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
         no remedy passed its check (each refusal said).
     Outclassed
         The design torque lowered below ``outclassed_below``.
+    CutForeseen
+        ``foresee_cut`` and the Formate bearing's local pitting bound below the share of
+        the rated torque :func:`~contact.optimize.development_process.cut_foreseen` names.
 
     Notes
     -----
@@ -469,19 +482,9 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
         _pitting_outclassed(best.case, setup, outclassed_below, say)
     best = steps_on_each(best, others, steps)
     if basic.options.design_torque is None and basic.rating.get("design_torque") is None:
-        best = static_capacity(best, targets, setup, teeth, say)
-        # where the chosen design's LTE still FAILs ltca run's verdict (no design checked
-        # passed it: the 16x16 at Sigma 60 deg, 122 urad at its ISO capacity), the torque
-        # up to which its bearing keeps the verdict's limit (development_lte_capacity)
-        best = lte_capacity(best, targets, setup, teeth, say)
-        _outclassed(setup, outclassed_below)
-        if setup["lowered"]:  # the steps again at the torques the bearing carries
-            best = steps(best)
-        else:  # at the ISO capacity: its peak within the local pitting limit where a
-            # longer pattern or one centred lower does it (the pitting capacity of the
-            # written case would else cut the design torque, development_root)
-            best = checked_pitting(best, targets, setup, teeth, say, placed,
-                                   slope=evaluate.slopes.get(bearing_key(best.values)))
+        best = _at_capacity(best, targets, setup, teeth, say, steps, placed,
+                            evaluate.slopes, outclassed_below,
+                            foresee_cut and root_stress)
     if outclassable and best.case is not None:
         # a second gear process: stopped before its coast flank and its FE build where
         # its local pitting capacity cannot reach the first one's design torque
@@ -989,6 +992,70 @@ def _pitting_outclassed(case: Case, setup: dict[str, Any], below: float,
             f"{plain_number(float(setup['torques'][1]))} N m), below {plain_number(below)} N m: "
             f"stopped")
         raise Outclassed(bound)
+
+
+def _at_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                 setup: dict[str, Any], teeth: KeptTeeth, say: Callable[[str], None],
+                 steps: Callable[[DevelopmentEvaluation], DevelopmentEvaluation],
+                 placed: Callable[..., Any], slopes: dict, outclassed_below: float,
+                 foresee_cut: bool) -> DevelopmentEvaluation:
+    """The checked drive design at the rated torque's capacities (:func:`develop`): the
+    design torque lowered to the flank's static and LTE capacity and the steps again there,
+    else the peak brought within the local pitting limit; a second gear process stopped
+    below ``outclassed_below`` [N·m] (:func:`_outclassed`), a Formate gear's development
+    where ``foresee_cut`` foresees its torque cut (:func:`_cut_foreseen`)."""
+    # a Formate gear "auto" could generate: its design torque cut foreseen from the
+    # bearing's local pitting bound at its static capacity (development_process)
+    foresee = foresee_cut and _formate(best.case)
+    rated = float(setup["torques"][1]) if not setup["lowered"] else math.nan
+    best = static_capacity(best, targets, setup, teeth, say)
+    # where the chosen design's LTE still FAILs ltca run's verdict (no design checked
+    # passed it: the 16x16 at Sigma 60 deg, 122 urad at its ISO capacity), the torque
+    # up to which its bearing keeps the verdict's limit (development_lte_capacity)
+    best = lte_capacity(best, targets, setup, teeth, say)
+    _outclassed(setup, outclassed_below)
+    if setup["lowered"]:  # the steps again at the torques the bearing carries
+        if foresee:
+            _cut_foreseen(best.case, setup, rated, say)
+        return steps(best)
+    # at the ISO capacity: its peak within the local pitting limit where a longer pattern
+    # or one centred lower does it (the pitting capacity of the written case would else
+    # cut the design torque, development_root)
+    best = checked_pitting(best, targets, setup, teeth, say, placed,
+                           slope=slopes.get(bearing_key(best.values)))
+    if foresee:
+        _cut_foreseen(best.case, setup, rated, say)
+    return best
+
+
+def _formate(case: Case | None) -> bool:
+    """Whether ``case``'s gear is cut Formate (no case: False)."""
+    return case is not None and getattr(case.gear, "process", None) == "Formate"
+
+
+def _cut_foreseen(case: Case | None, setup: dict[str, Any], rated: float,
+                  say: Callable[[str], None]) -> None:
+    """Raise :class:`~contact.optimize.development_process.CutForeseen` where the upper
+    estimate of the chosen drive design's local pitting capacity
+    (:func:`contact.optimize.development_root.pitting_capacity_bound`, one analysis at
+    the development's torques ``setup["torques"]`` [N·m], no FE) foresees its design
+    torque cut below half of ``rated`` [N·m]
+    (:func:`contact.optimize.development_process.cut_foreseen`); the bound logged either
+    way (issue 71/75: the spiral bevel 14x36 at Σ 70°'s Formate gear, docs/synthesis.md)."""
+    from contact.optimize.development_process import CutForeseen, cut_foreseen
+    from contact.optimize.development_root import pitting_capacity_bound
+
+    if case is None:
+        return
+    torque = float(setup["torques"][1])
+    bound = pitting_capacity_bound(case, setup["torques"])
+    log.info("development: Formate local pitting bound %.1f N m at %.1f N m (rated %.1f N m)",
+             bound, torque, rated)
+    if cut_foreseen(bound, rated):
+        say(f"  local pitting capacity at most {plain_number(bound)} N m (S_H,loc at "
+            f"{plain_number(torque)} N m), below half the rated {plain_number(rated)} N m "
+            "with the margin: a design torque cut foreseen, stopped")
+        raise CutForeseen(bound, rated)
 
 
 def step_after_cut(before: DevelopmentEvaluation, cut: DevelopmentEvaluation,

@@ -16,11 +16,20 @@ first development's, unchanged. Where both fail, the one of the higher design to
 kept (a spiral bevel 16x24 kept a Formate gear cut to 5.8 of 230.8 N m beside a generated
 gear at 112 N m whose coast LTE spread failed: issue 71). Where the Formate design's torque
 is cut, the generated gear's development stops as soon as its design torque falls below the
-Formate design's (:class:`Outclassed`): it could only rank below it (issue 75).
+Formate design's (:class:`Outclassed`): it could only rank below it (issue 75). And the
+Formate development itself stops at its static-capacity step where the upper estimate of its
+bearing's local pitting capacity (no FE) is already below :data:`FORESEEN_CUT_MARGIN` ×
+:data:`TORQUE_CUT_FRACTION` × the rated torque (:class:`CutForeseen`): its outcome would be a
+design torque cut, and the generated gear is developed at once; only where that fails too is
+the Formate development run in full, so the design kept is the one the two full
+developments rank first (issue 71/75: the spiral bevel 14x36 at Σ 70°).
 
 Public names
 ------------
 TORQUE_CUT_FRACTION   design torque below this share of the rated one: a failed outcome
+FORESEEN_CUT_MARGIN   the share of that torque a Formate pitting bound must fall below
+cut_foreseen          whether a pitting bound foresees the Formate design's torque cut
+CutForeseen           a Formate development stopped there
 failed_outcome        why a developed design fails its own check (empty where it does not)
 outclassing_torque    the design torque below which a second development cannot win
 Outclassed            a development stopped there
@@ -42,8 +51,9 @@ from contact.ltca.plausibility import LTE_SPREAD_LIMIT, PLASTIC_SHARE_LIMIT
 from geometry.core.errors import InputError
 from geometry.core.text import plain_number
 
-__all__ = ["TORQUE_CUT_FRACTION", "Outclassed", "better_outcome", "failed_outcome",
-           "outclassing_torque", "with_generated_gear"]
+__all__ = ["FORESEEN_CUT_MARGIN", "TORQUE_CUT_FRACTION", "CutForeseen", "Outclassed",
+           "better_outcome", "cut_foreseen", "failed_outcome", "outclassing_torque",
+           "with_generated_gear"]
 
 log = logging.getLogger(__name__)
 
@@ -52,6 +62,17 @@ log = logging.getLogger(__name__)
 #: carries less than half of what the blank is rated for. The 20x30's Formate gear: 64.1 of
 #: 251.4 N·m (0.25); its generated gear: 171 of 276.7 N·m (0.62) (docs/synthesis.md)
 TORQUE_CUT_FRACTION = 0.5
+
+#: [1] a Formate development stops at its static-capacity step (:class:`CutForeseen`) where
+#: its bearing's local pitting bound (:func:`contact.optimize.development_root.
+#: pitting_capacity_bound`, b = 1/2) is below this share of TORQUE_CUT_FRACTION × the rated
+#: torque: a margin for the steps after it (the drive steps again at the lowered torque, the
+#: tolerance and edge-peak steps) lowering the bearing's peak. Measured (docs/synthesis.md,
+#: "The Formate gear's torque cut foreseen"): the bound was 1.5-1.8 x the final torque of
+#: the Formate spiral bevels 14x36 at Σ 70° (155.1 / 102.3 N·m), 20x30 (138.0 / 90.4) and
+#: 13x37 at Σ 60° (163.9 / 89.6); a stop is wrong only where the final torque exceeds the
+#: bound by 1/0.9 = 1.11 x, which none did
+FORESEEN_CUT_MARGIN = 0.9
 
 #: the rule of :func:`better_outcome`, as the case's ``gear_process_text`` says it
 _RULE = ("(contact.optimize.development_process.better_outcome: no failed outcome, then the "
@@ -159,6 +180,55 @@ class Outclassed(Exception):
         self.torque = float(torque)
 
 
+class CutForeseen(Exception):
+    """A Formate development stopped at its static-capacity step where its local pitting
+    bound foresees a design torque cut below :data:`TORQUE_CUT_FRACTION` × the rated torque
+    (``develop(..., foresee_cut=True)``, :func:`cut_foreseen`).
+
+    Attributes
+    ----------
+    torque : float — [N·m]
+        The bound: an upper estimate of the design torque the development would end at.
+    rated : float — [N·m]
+        The rated torque (the ISO 10300 capacity) the development started at.
+    """
+
+    def __init__(self, torque: float, rated: float) -> None:
+        super().__init__(f"local pitting capacity at most {plain_number(torque)} of "
+                         f"{plain_number(rated)} N m")
+        self.torque, self.rated = float(torque), float(rated)
+
+
+def cut_foreseen(bound: float, rated: float) -> bool:
+    """Whether a Formate bearing's local pitting bound foresees its design torque cut below
+    :data:`TORQUE_CUT_FRACTION` × ``rated`` (a failed outcome, :func:`failed_outcome`).
+
+    Parameters
+    ----------
+    bound : float — [N·m]
+        The upper estimate of the bearing's local pitting capacity without FE
+        (:func:`contact.optimize.development_root.pitting_capacity_bound`: T (S_H,loc /
+        S_Hmin)^2; inf where S_H,loc ≥ S_Hmin).
+    rated : float — [N·m]
+        The rated torque (NaN: none known, never foreseen).
+
+    Returns
+    -------
+    bool
+        ``bound < FORESEEN_CUT_MARGIN × TORQUE_CUT_FRACTION × rated``.
+
+    Notes
+    -----
+    Source: issue 71/75, measured in docs/synthesis.md ("The Formate gear's torque cut
+    foreseen"). The bound takes S_H,loc ∝ T^(-1/2) (a line contact's Hertz); the bearings'
+    own exponent is lower (b = 0.32 on the 14x36 at Σ 70°), so the bound is above the
+    capacity the FE check ends at; the margin covers the steps after the bound lowering the
+    bearing's peak.
+    """
+    return (math.isfinite(rated) and rated > 0.0 and not math.isnan(bound)
+            and bound < FORESEEN_CUT_MARGIN * TORQUE_CUT_FRACTION * rated)
+
+
 def outclassing_torque(first: Any, rated: float) -> float:
     """[N·m] The design torque below which a second development of the pair cannot rank
     above ``first`` (:func:`better_outcome`), NaN where there is none.
@@ -231,7 +301,8 @@ def with_generated_gear(run: Callable[[Any], Any], basic: Any,
     ----------
     run : callable BasicDesign → DevelopmentResult
         The development itself (:func:`contact.optimize.development.develop` without
-        this fallback).
+        this fallback), called with ``foresee_cut=True`` for the Formate development of a
+        pair ``"auto"`` generates and ``outclassed_below=`` for a generated one.
     basic : BasicDesign
     say : callable, optional
         Called with a line where the generated gear is developed too, and with the
@@ -245,7 +316,11 @@ def with_generated_gear(run: Callable[[Any], Any], basic: Any,
         (:func:`geometry.synthesis.case_synthesis.gear_processes`: face milled, δ2 below
         :data:`~geometry.synthesis.case_synthesis.FORMATE_PITCH_ANGLE_LIMIT`), or where
         its outcome does not fail (:func:`failed_outcome`); else the better of the two
-        (:func:`better_outcome`), its ``gear_process_text`` saying which and why.
+        (:func:`better_outcome`), its ``gear_process_text`` saying which and why. Where
+        the Formate development stops on a foreseen cut (:class:`CutForeseen`), the
+        generated gear's design where it does not fail; else the Formate gear is developed
+        in full and the two ranked as above (the same design kept as without the stop,
+        measured in docs/synthesis.md, "The Formate gear's torque cut foreseen").
 
     Raises
     ------
@@ -259,42 +334,53 @@ def with_generated_gear(run: Callable[[Any], Any], basic: Any,
     from geometry.synthesis.case_synthesis import gear_processes
 
     say = say or (lambda _line: None)
+    auto = gear_processes(basic) == ("Formate", "Generate")
+    second: Any = None  # the generated gear's development where it came first
     try:
-        first = run(basic)
+        # a pair "auto" can generate: its Formate development stops where its torque cut is
+        # foreseen (CutForeseen), the generated gear's developed at once
+        first = run(basic, foresee_cut=True) if auto else run(basic)
+    except CutForeseen as foreseen:
+        second, done = _generated_after_foreseen(run, basic, foreseen, say)
+        if done is not None:
+            return done
+        first = _formate_in_full(run, basic, second)
     except InputError as err:
-        if gear_processes(basic) != ("Formate", "Generate"):
+        if not auto:
             raise
         # the Formate development stopped (a spiral bevel 19x23 at beta_m 46 deg: the
         # written design's pinion tip plane, issue 71's unseen designs): the pair "auto"
         # can generate is developed with the generated gear before the error is given
         return _generated_after_error(run, basic, err, say)
-    if (gear_processes(basic) != ("Formate", "Generate")
-            or first.report.gear.settings.process != "Formate"):
+    if not auto or first.report.gear.settings.process != "Formate":
         return first
     rated = with_design_torque(first.case, basic.options.design_torque)[1]
     why = failed_outcome(first, rated)
     if not why:
         return first
-    say(f"development: the Formate gear's design fails ({why}); developing the pair with "
-        "a generated gear too (gear_process 'auto')")
     below = outclassing_torque(first, rated)
-    try:
-        second = (run(_generated(basic)) if not math.isfinite(below)
-                  else run(_generated(basic), outclassed_below=below))
-    except Outclassed as stop:
+    if second is None or (isinstance(second, Outclassed)
+                          and not float(first.torque[1]) > second.torque):
+        # (a generated development stopped below the Formate's bound, not below its design
+        # torque: developed again as it is without the foresight)
+        if second is None:
+            say(f"development: the Formate gear's design fails ({why}); developing the pair "
+                "with a generated gear too (gear_process 'auto')")
+        second = _developed(run, _generated(basic), below)
+    if isinstance(second, Outclassed):
         text = (f"Gear process (auto): Formate. The Formate gear's developed design fails "
                 f"({why}) at {plain_number(first.torque[1])} N m; the generated gear's development "
-                f"was stopped where its design torque fell to {plain_number(stop.torque)} N m, "
+                f"was stopped where its design torque fell to {plain_number(second.torque)} N m, "
                 f"below the Formate gear's (it is only lowered from there: "
                 "contact.optimize.development_process.outclassing_torque); kept the Formate "
                 "gear " + _RULE)
         say("development: " + text)
         return dataclasses.replace(first, gear_process_text=text)
-    except InputError as err:
-        log.info("development: the generated gear has no developed design: %s", err)
+    if isinstance(second, InputError):
+        log.info("development: the generated gear has no developed design: %s", second)
         return dataclasses.replace(first, gear_process_text=(
             f"Gear process (auto): Formate; its design fails ({why}), the generated gear "
-            f"was developed too and failed ({err})."))
+            f"was developed too and failed ({second})."))
     kept, which = better_outcome(first, second, rated)
     other = failed_outcome(second, rated)
     text = (f"Gear process (auto): {'generated' if which == 'second' else 'Formate'}. The "
@@ -312,6 +398,72 @@ def _generated(basic: Any) -> Any:
     """``basic`` with ``gear_process = "Generate"``."""
     return dataclasses.replace(
         basic, options=dataclasses.replace(basic.options, gear_process="Generate"))
+
+
+def _developed(run: Callable[..., Any], basic: Any, below: float) -> Any:
+    """``run(basic)`` given ``outclassed_below=below`` where that is finite; the
+    :class:`Outclassed` stop or the :class:`~geometry.core.errors.InputError` it raised in
+    its place."""
+    try:
+        return run(basic) if not math.isfinite(below) else run(basic, outclassed_below=below)
+    except (Outclassed, InputError) as stop:
+        return stop
+
+
+def _formate_in_full(run: Callable[..., Any], basic: Any, second: Any) -> Any:
+    """The Formate development of ``basic`` in full (no :class:`CutForeseen` stop) where
+    the generated gear's development ``second`` failed after a foreseen cut (a result, its
+    :class:`Outclassed` stop or its error); where the Formate development raises, the
+    generated gear's result (its text saying so; developed in full where it was stopped),
+    else the Formate development's error."""
+    try:
+        return run(basic)
+    except InputError as err:
+        if isinstance(second, Outclassed):
+            second = _developed(run, _generated(basic), math.nan)
+        if isinstance(second, InputError):
+            raise err from None
+        text = (f"Gear process (auto): generated. The Formate gear's development stopped "
+                f"({err}); the generated gear's developed at {plain_number(second.torque[1])} "
+                "N m.")
+        return dataclasses.replace(second, gear_process_text=text)
+
+
+def _generated_after_foreseen(run: Callable[..., Any], basic: Any, foreseen: CutForeseen,
+                              say: Callable[[str], None]) -> tuple[Any, Any]:
+    """The generated gear's development of ``basic`` where its Formate development stopped
+    at ``foreseen``, and the result to return.
+
+    The generated gear's development is stopped (:class:`Outclassed`) where its design
+    torque falls below the Formate bearing's bound ``foreseen.torque``: it is cut then
+    (below half the rated torque) and can rank above the Formate design only where that
+    ends below it, which the Formate's full development decides. Returns (the generated
+    development, or its :class:`Outclassed` stop or :class:`~geometry.core.errors.
+    InputError`; the generated design with its ``gear_process_text`` where it does not fail
+    (:func:`failed_outcome` at the Formate development's rated torque: it ranks first
+    whatever the Formate design ends at, which fails as foreseen), else None: the caller
+    develops the Formate gear in full and ranks the two as :func:`with_generated_gear`
+    does without the foresight)."""
+    say(f"development: the Formate gear's local pitting capacity is at most "
+        f"{plain_number(foreseen.torque)} N m, below {FORESEEN_CUT_MARGIN:g} of "
+        f"{TORQUE_CUT_FRACTION:g} of its rated {plain_number(foreseen.rated)} N m (a design "
+        "torque cut foreseen); developing the pair with a generated gear (gear_process 'auto')")
+    second = _developed(run, _generated(basic), foreseen.torque)
+    other = (failed_outcome(second, foreseen.rated)
+             if not isinstance(second, (Outclassed, InputError)) else str(second))
+    if other:
+        say(f"development: the generated gear's design fails too ({other}); developing the "
+            "Formate gear in full")
+        return second, None
+    text = (f"Gear process (auto): generated. The Formate gear's development was stopped at "
+            f"its static capacity, its local pitting capacity at most "
+            f"{plain_number(foreseen.torque)} N m, below {FORESEEN_CUT_MARGIN:g} of "
+            f"{TORQUE_CUT_FRACTION:g} of its rated {plain_number(foreseen.rated)} N m (a design "
+            f"torque cut, a failed outcome: contact.optimize.development_process.cut_foreseen); "
+            f"the generated gear's does not fail at {plain_number(second.torque[1])} N m; kept "
+            "the generated gear " + _RULE)
+    say("development: " + text)
+    return second, dataclasses.replace(second, gear_process_text=text)
 
 
 def _generated_after_error(run: Callable[[Any], Any], basic: Any, err: InputError,
