@@ -189,3 +189,26 @@ def test_a_compliance_model_returning_the_wrong_thing_is_refused_naming_it(chang
                                                              rolls_per_cycle=4, segments=8))
     finally:
         contact.unregister_compliance_model(name)
+
+
+@pytest.mark.parametrize(("call", "message"), [
+    (lambda: contact.AnalysisChain.contact_only().with_root_stress("coarse"),
+     r"^root_stress: must be True, False or a contact\.compliance\.fe\.FEOptions, got str "
+     r"'coarse'; the named FE level is FEOptions\.at_level\('coarse'\) \(levels: coarse, "
+     r"coarse10, default\)$"),
+    (lambda: contact.StudyRun(root_stress="coarse10"),
+     r"^root_stress: must be None, True, False or a .*; the named FE level is "
+     r"FEOptions\.at_level\('coarse10'\)"),
+    (lambda: contact.LTCAOptions(compliance="fe", fe="fine"),
+     r"^fe: must be a contact\.compliance\.fe\.FEOptions or None, got a str; a named FE "
+     r"level is given as FEOptions\.at_level\('NAME'\) \(levels: coarse, coarse10, default\)"),
+    (lambda: contact.FEOptions.at_level("fine"),
+     r"^level: must be one of \['coarse', 'coarse10', 'default'\], got 'fine'"),
+])
+def test_an_fe_level_given_by_its_name_where_fe_options_go_says_how(call, message):
+    """api83: ``ltca``'s ``--fe-level coarse`` typed into the API (``with_root_stress(
+    "coarse")``, ``StudyRun(root_stress=…)``, ``LTCAOptions(fe=…)``) was refused without
+    saying how the API names a level; the refusal now says ``FEOptions.at_level(NAME)``
+    and lists the levels."""
+    with pytest.raises(InputError, match=message):
+        call()
