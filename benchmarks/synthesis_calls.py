@@ -31,14 +31,15 @@ One design takes ~20 s of CPU.
 from __future__ import annotations
 
 import argparse
-import importlib
 import os
-import resource
 import sys
 import tempfile
 import traceback
 from collections import defaultdict
 from pathlib import Path
+
+from _common import Wrapped, import_development
+from _common import cpu_seconds as _cpu
 
 ROOT = Path(__file__).resolve().parent.parent
 DESIGN = ROOT / "tests" / "data" / "designs" / "pc_hypoid_10x43.toml"
@@ -52,12 +53,6 @@ WRAPPED = (
     ("contact.optimize.development_root", "both_flanks_built",
      "FE builds of both members (solver worker included)"),
 )
-
-
-def _cpu() -> float:
-    """This process's and its ended children's user + system CPU [s]."""
-    s, c = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
-    return s.ru_utime + s.ru_stime + c.ru_utime + c.ru_stime
 
 
 def _step() -> str:
@@ -88,26 +83,16 @@ class CallClock:
     def __init__(self) -> None:
         self.calls: list[tuple[float, str, tuple[float, ...], str, str]] = []
         self._depth: dict[str, int] = defaultdict(int)
-        self._patches: list[tuple[object, str, object]] = []
+        self._wrapped = Wrapped("synthesis calls")
 
     def install(self) -> CallClock:
         for module, name, kind in WRAPPED:
-            fn = getattr(importlib.import_module(module), name, None)
-            if not callable(fn):
-                raise LookupError(f"synthesis calls: {module}.{name} is not there (moved?); "
-                                  "update benchmarks/synthesis_calls.py WRAPPED")
-            timed = self._timed(fn, name, kind)
-            for mod in list(sys.modules.values()):
-                if (getattr(mod, "__name__", "").split(".")[0] in ("contact", "geometry")
-                        and getattr(mod, name, None) is fn):
-                    setattr(mod, name, timed)
-                    self._patches.append((mod, name, fn))
+            self._wrapped.wrap(module, name,
+                               lambda fn, name=name, kind=kind: self._timed(fn, name, kind))
         return self
 
     def remove(self) -> None:
-        for owner, name, fn in reversed(self._patches):
-            setattr(owner, name, fn)
-        self._patches.clear()
+        self._wrapped.remove()
 
     def _timed(self, fn, name: str, kind: str | None):
         clock = self
@@ -133,7 +118,6 @@ class CallClock:
                 clock.calls.append((seconds, what, torques,
                                     flank if torques else "", _step()))
 
-        timed.__wrapped__ = fn
         return timed
 
 
@@ -146,9 +130,7 @@ def main(argv: list[str] | None = None) -> int:
 
     with tempfile.TemporaryDirectory() as tmp:
         os.environ["HYPOID_LTCA_CACHE"] = args.cache or str(Path(tmp) / "fe")
-        for module in ("contact.commands.synthesize", "contact.optimize.development",
-                       "contact.pipeline", "geometry.synthesis.case_synthesis"):
-            importlib.import_module(module)
+        import_development()
         from contact.cli import main as ltca
 
         clock = CallClock().install()

@@ -36,7 +36,6 @@ Usage: ``python benchmarks/synthesis_stages.py [BASIC.toml ...] [--keep DIR] [--
 from __future__ import annotations
 
 import argparse
-import importlib
 import os
 import re
 import resource
@@ -46,6 +45,9 @@ import tempfile
 import time
 from collections import defaultdict
 from pathlib import Path
+
+from _common import Wrapped, import_development
+from _common import cpu_seconds as _cpu
 
 ROOT = Path(__file__).resolve().parent.parent
 DESIGNS = [ROOT / "tests" / "data" / "designs" / f"{n}.toml" for n in
@@ -85,12 +87,6 @@ STAGES = (
 )
 
 
-def _cpu() -> float:
-    """This process's and its ended children's user + system CPU [s]."""
-    s, c = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
-    return s.ru_utime + s.ru_stime + c.ru_utime + c.ru_stime
-
-
 class StageCPU:
     """Exclusive CPU seconds and calls per stage of :data:`STAGES` while installed, and
     each stage's inclusive CPU (its outermost calls, the stages nested in them included:
@@ -101,26 +97,15 @@ class StageCPU:
         self.inclusive: dict[str, float] = defaultdict(float)
         self.calls: dict[str, int] = defaultdict(int)
         self._stack: list[list] = []
-        self._patches: list[tuple[object, str, object]] = []
+        self._wrapped = Wrapped("synthesis stages")
 
     def install(self) -> StageCPU:
         for module, name, stage in STAGES:
-            fn = getattr(importlib.import_module(module), name, None)
-            if not callable(fn):
-                raise LookupError(f"synthesis stages: {module}.{name} is not there (moved?); "
-                                  "update benchmarks/synthesis_stages.py STAGES")
-            timed = self._timed(fn, stage)
-            for mod in list(sys.modules.values()):
-                if (getattr(mod, "__name__", "").split(".")[0] in ("contact", "geometry")
-                        and getattr(mod, name, None) is fn):
-                    setattr(mod, name, timed)
-                    self._patches.append((mod, name, fn))
+            self._wrapped.wrap(module, name, lambda fn, stage=stage: self._timed(fn, stage))
         return self
 
     def remove(self) -> None:
-        for owner, name, fn in reversed(self._patches):
-            setattr(owner, name, fn)
-        self._patches.clear()
+        self._wrapped.remove()
 
     def _timed(self, fn, stage: str):
         clock = self
@@ -143,16 +128,7 @@ class StageCPU:
                 if clock._stack:
                     clock._stack[-1][1] = now
 
-        timed.__wrapped__ = fn
         return timed
-
-
-def _import_development() -> None:
-    """Import every module whose functions are timed (and the command's), so that each
-    ``from ... import`` copy of a name is there to be wrapped."""
-    for module in ("contact.commands.synthesize", "contact.optimize.development",
-                   "geometry.synthesis.case_synthesis", "contact.compliance.fe.influence"):
-        importlib.import_module(module)
 
 
 def run_design(basic: Path, work: Path, run: bool = True, cache: Path | None = None,
@@ -166,7 +142,7 @@ def run_design(basic: Path, work: Path, run: bool = True, cache: Path | None = N
     if cache is None:
         cache = Path(tempfile.mkdtemp(prefix="ltca-fe-", dir=work))
     os.environ["HYPOID_LTCA_CACHE"] = str(cache)
-    _import_development()
+    import_development()
     clock = StageCPU().install()
     c0, w0 = _cpu(), time.perf_counter()
     try:

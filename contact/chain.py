@@ -642,10 +642,12 @@ class AnalysisChain:
             _check_choice(step, getattr(self, step))
         if self.fe_options is not None:
             from contact.compliance.fe import FEOptions
+            from contact.compliance.fe.options import level_hint
 
             if not isinstance(self.fe_options, FEOptions):
                 raise InputError("fe_options: must be a contact.compliance.fe.FEOptions or "
-                                 f"None, got {type(self.fe_options).__name__}")
+                                 f"None, got {type(self.fe_options).__name__}"
+                                 f"{level_hint(self.fe_options)}")
 
     # ----------------------------------------------------------- named configurations
     # after pvlib's ModelChain.with_pvwatts: one way to say which steps a run makes
@@ -702,10 +704,11 @@ class AnalysisChain:
         if isinstance(on, (bool, np.bool_)):
             return self._on("root_stress", bool(on))
         from contact.compliance.fe import FEOptions
+        from contact.compliance.fe.options import level_hint
 
         if not isinstance(on, FEOptions):
             raise InputError("root_stress: must be True, False or a contact.compliance.fe."
-                             f"FEOptions, got {type(on).__name__} {on!r}")
+                             f"FEOptions, got {type(on).__name__} {on!r}{level_hint(on)}")
         return dataclasses.replace(self._on("root_stress", True), fe_options=on)
 
     def with_geometry(self, on: bool = True) -> AnalysisChain:

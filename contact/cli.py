@@ -9,6 +9,7 @@ sub-command lives in its own module of :mod:`contact.commands` with a
 from __future__ import annotations
 
 import argparse
+import contextlib
 import difflib
 import importlib
 import logging
@@ -18,7 +19,7 @@ import re
 import signal
 import sys
 import threading
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from types import ModuleType
 
 from contact.commands.options import verbosity_options
@@ -217,6 +218,60 @@ def compile_note() -> str | None:
             "docs/environment.md")
 
 
+class _CompileNote(logging.Handler):
+    """Prints the compile note to stderr at the first record it receives, once."""
+
+    def __init__(self, note: str) -> None:
+        super().__init__(logging.INFO)
+        self.note = note
+        self.printed = False
+
+    def emit(self, record: logging.LogRecord) -> None:
+        if not self.printed:
+            self.printed = True
+            print(self.note, file=sys.stderr, flush=True)
+
+
+@contextlib.contextmanager
+def compile_note_when_compiling(note: str | None) -> Iterator[_CompileNote | None]:
+    """Print ``note`` (:func:`compile_note`) when numba starts compiling, not before.
+
+    Within the context, the first record of :data:`geometry.core.kernels.COMPILING_LOGGER`
+    (:func:`geometry.core.kernels.announce_compiling`: a compiled module handed to a hot
+    loop or to a study's workers while numba's cache holds none of its kernels) prints the
+    note to stderr, once; the records themselves are not shown. A command refused on its
+    inputs or outputs before any kernel runs prints its refusal alone: before, the note
+    came first on every fresh cache (issue 71; tests/test_cli.py's ``_refusal`` stripped it).
+
+    Parameters
+    ----------
+    note : str or None
+        The line to print; None: nothing to print (the context does nothing).
+
+    Yields
+    ------
+    handler or None
+        The handler (its ``printed`` says whether the note was printed), None without a note.
+    """
+    if note is None:
+        yield None
+        return
+    from geometry.core.kernels import COMPILING_LOGGER
+
+    logger = logging.getLogger(COMPILING_LOGGER)
+    handler = _CompileNote(note)
+    level, propagate = logger.level, logger.propagate
+    logger.setLevel(logging.INFO)
+    logger.propagate = False
+    logger.addHandler(handler)
+    try:
+        yield handler
+    finally:
+        logger.removeHandler(handler)
+        logger.setLevel(level)
+        logger.propagate = propagate
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of the ``ltca`` console script and ``python -m contact``."""
     parser = build_parser()
@@ -251,6 +306,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     logging.getLogger("distributed").setLevel(distributed_level.upper())
     main_thread = threading.current_thread() is threading.main_thread()
     previous = signal.signal(signal.SIGTERM, _terminate) if main_thread else None
+    stack = contextlib.ExitStack()
     try:
         check_option_bounds(args)  # before any work
         # one BLAS thread for the command's computations (its matrices are small,
@@ -264,9 +320,10 @@ def main(argv: Sequence[str] | None = None) -> int:
             # a command of its own process may name the kernels that earn their compile
             # back in it (``compiled_kernels``: ltca synthesize, the envelope's; issue 75)
             prefer_compiled(getattr(args, "compiled_kernels", None) if as_process else None)
-            note = compile_note()
-            if note is not None and not args.quiet:
-                print(note, file=sys.stderr, flush=True)
+            # said when numba starts compiling: a refusal of the command's inputs or
+            # outputs comes before, alone (issue 71)
+            stack.enter_context(compile_note_when_compiling(
+                None if args.quiet else compile_note()))
         elif as_process and getattr(args, "one_analysis", False):
             # one analysis never earns the compile back: the NumPy path until numba's
             # cache holds the kernels (geometry.core.kernels.prefer_cached, issue 75)
@@ -292,6 +349,7 @@ def main(argv: Sequence[str] | None = None) -> int:
               "files being written were left as they were", file=sys.stderr)
         return 128 + int(signum)
     finally:
+        stack.close()
         if main_thread:
             signal.signal(signal.SIGTERM, previous)
 

@@ -706,10 +706,12 @@ def run_analysis(
     fe_options = None
     if root_stress not in (None, False, True):
         from contact.compliance.fe import FEOptions
+        from contact.compliance.fe.options import level_hint
 
         if not isinstance(root_stress, FEOptions):
             raise InputError("root_stress: must be True, False or a "
-                             f"contact.compliance.fe.FEOptions, got {root_stress!r}")
+                             f"contact.compliance.fe.FEOptions, got {root_stress!r}"
+                             f"{level_hint(root_stress)}")
         fe_options = root_stress
     if operating is not None and operating is not False and not isinstance(
             operating, OperatingConditions):

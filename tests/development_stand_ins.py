@@ -8,18 +8,26 @@ pinion_key=(), flank="drive")`` whose metrics follow a law the test states (numb
 measured on a real design, cited in each test), so that a step's choices are checked
 without an LTCA. :func:`stand_in` installs the stand-in and returns the targets, the
 development setup (light and design torque, centre v) and a scorer of the design the
-check chose, the start a step is handed.
+check chose, the start a step is handed. :func:`law_evaluation` is the checked design of
+a law's metrics that the steps' own tests (tests/test_development_given_root.py,
+tests/test_development_pitting_step.py) hand their step and its stand-in returns.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable
+import types
+from collections.abc import Callable, Iterable, Mapping
 from typing import Any
 
 import numpy as np
 
 from contact.optimize import development as dev
 from contact.optimize.development import DevelopmentTargets, development_score
+from contact.optimize.development_result import DevelopmentEvaluation
+
+#: the flank region a law's metrics are scored over (u toe to heel, v root to tip: the
+#: whole flank, ``development_score``'s ``grid``)
+FLANK_GRID = (0.0, 1.0, 0.0, 1.0)
 
 #: what the check steps call for each design they analyse (replaced by the stand-in)
 ANALYSE = "contact.optimize.development_evaluate.analyse_design"
@@ -119,3 +127,17 @@ def counted_builds(monkeypatch) -> list[str]:
 
     monkeypatch.setattr(development_root, "both_flanks_built", build)
     return levels
+
+
+def law_evaluation(values: Mapping[str, float], metrics: Mapping[str, np.ndarray],
+                   targets: DevelopmentTargets, centre_v: float,
+                   pressure_limit: float = 2400.0) -> DevelopmentEvaluation:
+    """The design with bearing ``values`` as a check step holds it (index 0, checked at
+    ltca run's sampling, a case named ``law``): ``metrics`` (a law's, at light and design
+    torque) scored against ``targets`` over :data:`FLANK_GRID` at the setup's centre v and
+    the flank's pressure limit [MPa] (:func:`development_score`)."""
+    full = development_score(metrics, targets, FLANK_GRID, centre_v=centre_v,
+                             pressure_limit=pressure_limit)
+    return DevelopmentEvaluation(0, dict(values), metrics, full[0], full[1], full[2], "", 0.0,
+                                 case=types.SimpleNamespace(name="law"), full=full,
+                                 checked=True)

@@ -211,3 +211,104 @@ def test_rate_load_capacity_default_method_is_the_cases(tmp_path, monkeypatch, c
                                       np.asarray(api[name].values), err_msg=name)
     # a case naming none: ISO 10300, as before
     assert contact.rate_load_capacity(case).attrs["rating_method"] == "iso10300"
+
+
+def _same_study(api: xr.Dataset, cli: xr.Dataset) -> None:
+    """The same variables and every numeric one equal (rtol 1e-12: the same computation in
+    the same process, equal but for the order of floating-point sums), timings apart."""
+    a, c = _numeric(api), _numeric(cli)
+    timing = {k for k in set(a) | set(c) if "time" in k}
+    assert set(a) - timing == set(c) - timing
+    for name in sorted(set(a) - timing):
+        np.testing.assert_allclose(a[name], c[name], rtol=1e-12, atol=0, equal_nan=True,
+                                   err_msg=name)
+    for dim in ("torque", "delta_E"):
+        if dim in api.coords:
+            np.testing.assert_array_equal(api[dim].values, cli[dim].values)
+
+
+def test_sweep_and_sample_defaults_are_the_commands(coarse_fe, tmp_path, monkeypatch, capsys):
+    """Issue 71 (api83): ``contact.sweep`` and ``contact.sample`` with their defaults ran at
+    250 N·m without the root stress (and ``sample`` with other draws each call) where
+    ``ltca sweep`` and ``ltca tolerance`` with theirs run the case's ``[operating]``
+    torques with the root stress and seed 0. Now the function's result equals the
+    command's file: two points of the default case (its torques 50, 250, 500 N·m), the
+    same sampling, in this process on the NumPy kernels (so both runs take one path)."""
+    import scipy.stats
+
+    from contact.cli import main
+
+    monkeypatch.setenv("LTCA_KERNELS", "numpy")
+    monkeypatch.chdir(tmp_path)
+    run = contact.StudyRun(options=contact.LTCAOptions(rolls_per_cycle=4),
+                           scheduler="synchronous")
+    case = contact.resolve_case(None)
+    out = tmp_path / "sweep.nc"
+    assert main(["sweep", "--dE", "0,0.05", "--rolls-per-cycle", "4", "--scheduler",
+                 "synchronous", "--no-progress", "-o", str(out)]) == 0, \
+        capsys.readouterr().err
+    cli = contact.read_netcdf(out)
+    api = contact.sweep(None, delta_E=[0.0, 0.05], run=run)
+    assert api["torque"].values.tolist() == list(case.operating.torque) == [50.0, 250.0, 500.0]
+    assert "root_stress_max" in api and "root_stress_max" in cli
+    assert np.all(np.isfinite(api["root_stress_max"].values))
+    _same_study(api, cli)
+
+    out = tmp_path / "tolerance.nc"
+    assert main(["tolerance", "--dE", "normal:0:0.02", "-n", "2", "--torque", "250",
+                 "--rolls-per-cycle", "4", "--scheduler", "synchronous", "--no-progress",
+                 "-o", str(out)]) == 0, capsys.readouterr().err
+    cli = contact.read_netcdf(out)
+    api = contact.sample(None, {"delta_E": scipy.stats.norm(0.0, 0.02)}, 2, torque=250.0,
+                         run=run)
+    np.testing.assert_array_equal(api["delta_E"].values, cli["delta_E"].values)  # seed 0
+    assert "root_stress_max" in api and "root_stress_max" in cli
+    _same_study(api, cli)
+
+
+def test_study_run_root_stress_default_and_settings():
+    """``StudyRun.root_stress`` defaults to None (not set): a sweep or a sample computes the
+    root stress (``study_root_stress`` True, the commands' ``--root-stress``), the duty cycle
+    its own default; False and an FEOptions are kept; anything else is refused, named."""
+    from contact.study.duty_cycle import duty_root_stress
+
+    assert contact.StudyRun().root_stress is None
+    assert contact.StudyRun().study_root_stress is True
+    assert contact.StudyRun(root_stress=False).study_root_stress is False
+    assert contact.StudyRun(root_stress=COARSE).study_root_stress == COARSE
+    assert duty_root_stress(None, None) is True and duty_root_stress(False, None) is False
+    with pytest.raises(InputError, match=r"^root_stress: must be None, True, False or a "):
+        contact.StudyRun(root_stress="on")
+    assert inspect.signature(contact.sample).parameters["seed"].default == 0
+    case = contact.resolve_case("iso10300_30_sample1")  # its one [operating] torque
+    from contact.study import study_inputs
+
+    assert study_inputs(case).torque == tuple(case.operating.torque) == (300.0,)
+
+
+def test_optimize_problem_torques_default_to_the_cases():
+    """``OptimizeProblem()`` optimised at 50, 250, 500 N·m whatever the case; ``ltca
+    optimize`` at the case's (the flank's, ``flank_torques``). The default is now no torque,
+    taken from the case by ``with_case`` (which the optimiser calls): the ISO/TR 10300-30
+    sample 1 at its one 300 N·m, the default case at its 50, 250, 500 N·m (the case files'
+    ``[operating]`` tables are the reference). Without torques a per-torque field takes one
+    value; several, or an ``lte_mean_range``, are refused naming the field."""
+    from contact.optimize import OptimizeProblem
+    from contact.pipeline import flank_torques
+
+    sample1 = contact.resolve_case("iso10300_30_sample1")
+    assert OptimizeProblem().torque == ()
+    assert OptimizeProblem().with_case(sample1).torque == tuple(sample1.operating.torque) \
+        == (300.0,)
+    default = contact.resolve_case(None)
+    assert OptimizeProblem().with_case(default).torque == (50.0, 250.0, 500.0)
+    coast = OptimizeProblem(flank="coast").with_case(default)
+    assert coast.torque == flank_torques(default, "coast")[0]
+    one = OptimizeProblem(max_edge_share=(0.05,)).with_case(default)
+    assert one.max_edge_share == (0.05, 0.05, 0.05)
+    assert OptimizeProblem(torque=(100.0,)).with_case(default).torque == (100.0,)
+    with pytest.raises(InputError, match=r"^optimize\.max_edge_share: give one value, or "
+                                         r"torque="):
+        OptimizeProblem(max_edge_share=(0.05, 0.1))
+    with pytest.raises(InputError, match=r"^optimize\.lte_mean_range: one \(low, high\) "):
+        OptimizeProblem(lte_mean_range=((0.0, 50.0),))

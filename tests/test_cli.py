@@ -349,3 +349,67 @@ def test_a_command_of_many_analyses_says_before_numba_compiles(monkeypatch):
     monkeypatch.setattr(kernels, "cache_ready", lambda name: False)
     monkeypatch.setenv("LTCA_KERNELS", "numpy")
     assert contact.cli.compile_note() is None
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["sweep", "--dE", "0", "-o", "{missing}/s.nc"], "-o: directory '{missing}' does not exist"),
+    (["synthesize", _FM_BASIC, "-o", "{basic}"], "-o: '{basic}' is the basic design file"),
+    (["sweep", "{missing}/c.toml", "--dE", "0", "-o", "{tmp}/s.nc"],
+     "case: no such file '{missing}/c.toml'"),
+])
+def test_a_refusal_comes_without_the_compile_note(argv, message, tmp_path, monkeypatch,
+                                                  capsys):
+    """Issue 71 (api83): on a fresh numba cache a command of many analyses printed its
+    one-time compile note ("note: compiling the numba kernels …") and then its refusal of a
+    bad option, output or input — the note announced a wait that never came. The note is
+    now printed when numba starts compiling (``compile_note_when_compiling``): a refusal
+    before any kernel runs is the one line alone (read without ``_refusal``'s filter)."""
+    import contact.cli
+    import geometry.core.kernels as kernels
+
+    monkeypatch.setenv("LTCA_KERNELS", "numba")
+    monkeypatch.setattr(kernels, "cache_ready", lambda name: False)  # a fresh cache
+    assert contact.cli.compile_note() is not None  # the note the commands would print
+    subs = {"missing": str(tmp_path / "missing"), "basic": _FM_BASIC, "tmp": str(tmp_path)}
+    argv = [a.format(**subs) for a in argv]
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip()
+    assert "note: compiling" not in err
+    assert err.count("\n") == 0 and err.startswith(
+        f"ltca {argv[0]}: error: {message.format(**subs)}")
+
+
+def test_the_compile_note_is_printed_once_when_numba_starts_compiling(monkeypatch, capsys):
+    """The note's other half: the first record of ``COMPILING_LOGGER`` — a compiled module
+    handed to a hot loop while numba's cache holds none of its kernels
+    (``kernels_module`` → ``announce_compiling``) — prints it, once however many modules
+    follow; nothing without a note (``-q``, a warm cache); the logger is as before after."""
+    import logging
+
+    import contact.cli
+    import geometry.core.kernels as kernels
+
+    envelope = kernels.KERNEL_MODULES[0]
+    if kernels.compiled_module(envelope) is None:
+        pytest.skip("numba is not installed (the fast extra)")
+    logger = logging.getLogger(kernels.COMPILING_LOGGER)
+    before = (logger.level, logger.propagate, list(logger.handlers))
+    monkeypatch.setattr(kernels, "cache_ready", lambda name: False)
+    kernels.announce_compiling.cache_clear()
+    with contact.cli.compile_note_when_compiling("note: compiling X") as handler:
+        assert capsys.readouterr().err == ""  # nothing before the compiling
+        assert kernels.kernels_module(envelope, "numba") is kernels.compiled_module(envelope)
+        for name in kernels.KERNEL_MODULES:
+            kernels.announce_compiling(name)
+        assert handler.printed
+    assert capsys.readouterr().err == "note: compiling X\n"
+    assert (logger.level, logger.propagate, list(logger.handlers)) == before
+    with contact.cli.compile_note_when_compiling(None) as handler:
+        logger.info("compiling")
+    assert handler is None and "note" not in capsys.readouterr().err
+    kernels.announce_compiling.cache_clear()
+    monkeypatch.setattr(kernels, "cache_ready", lambda name: True)  # cached: no record
+    with contact.cli.compile_note_when_compiling("note: compiling X") as handler:
+        assert not kernels.announce_compiling(envelope)
+    assert not handler.printed
+    kernels.announce_compiling.cache_clear()

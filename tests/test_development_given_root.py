@@ -17,24 +17,19 @@ from __future__ import annotations
 
 import dataclasses
 import math
-import types
 
 import numpy as np
 import pytest
+from development_stand_ins import law_evaluation
 
 from contact.optimize import development_given_root as dg
 from contact.optimize.development_result import DevelopmentEvaluation
-from contact.optimize.development_targets import (
-    HEIGHT_NAME,
-    DevelopmentTargets,
-    development_score,
-)
+from contact.optimize.development_targets import HEIGHT_NAME, DevelopmentTargets
 from geometry.core.errors import InputError
 
 TARGETS = DevelopmentTargets(pattern_centre_v=0.541)  # the 8×47's target centre v
 SETUP = {"torques": [264.7, 1765.0], "centre_v": 0.541}
 BOUNDS = {HEIGHT_NAME: (-3.0, 3.0), "tip_relief": (0.0, 60.0)}
-GRID = (0.0, 1.0, 0.0, 1.0)
 V0, SLOPE = 0.636, 0.5  # the written design's centre v [1]; d(centre v)/d(blade) [1/deg]
 
 
@@ -98,12 +93,7 @@ def _metrics(v: float, plastic: float) -> dict[str, np.ndarray]:
 
 def _evaluation(values, state) -> DevelopmentEvaluation:
     v, plastic, _ = _law(values, state)
-    ms = _metrics(v, plastic)
-    full = development_score(ms, TARGETS, GRID, centre_v=SETUP["centre_v"],
-                             pressure_limit=2400.0)
-    return DevelopmentEvaluation(0, dict(values), ms, full[0], full[1], full[2], "", 0.0,
-                                 case=types.SimpleNamespace(name="law"), full=full,
-                                 checked=True)
+    return law_evaluation(values, _metrics(v, plastic), TARGETS, SETUP["centre_v"])
 
 
 @pytest.fixture

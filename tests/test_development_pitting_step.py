@@ -14,19 +14,15 @@ the design torque kept at the ISO capacity where a longer or lower pattern carri
 from __future__ import annotations
 
 import math
-import types
 
 import numpy as np
 import pytest
 import xarray as xr
+from development_stand_ins import FLANK_GRID, law_evaluation
 
 from contact.optimize import development_pitting as dp
 from contact.optimize.development_result import DevelopmentEvaluation
-from contact.optimize.development_targets import (
-    HEIGHT_NAME,
-    DevelopmentTargets,
-    development_score,
-)
+from contact.optimize.development_targets import HEIGHT_NAME, DevelopmentTargets
 
 
 def test_the_pitting_limit_is_the_trs_permissible_stress_over_its_factors():
@@ -63,7 +59,6 @@ def _metrics(peak: float, centre_v: float, length: float) -> dict[str, np.ndarra
             "plastic_share": np.zeros(2), "lte_spread": np.zeros(2)}
 
 
-GRID = (0.0, 1.0, 0.0, 1.0)
 TARGETS = DevelopmentTargets()
 SETUP = {"torques": [15.0, 100.0], "centre_v": 0.56}
 
@@ -80,12 +75,7 @@ def _law(values):
 
 def _evaluation(values) -> DevelopmentEvaluation:
     peak, v, length = _law(values)
-    ms = _metrics(peak, v, length)
-    full = development_score(ms, TARGETS, GRID, centre_v=SETUP["centre_v"],
-                             pressure_limit=2400.0)
-    return DevelopmentEvaluation(0, dict(values), ms, full[0], full[1], full[2], "", 0.0,
-                                 case=types.SimpleNamespace(name="law"), full=full,
-                                 checked=True)
+    return law_evaluation(values, _metrics(peak, v, length), TARGETS, SETUP["centre_v"])
 
 
 @pytest.fixture
@@ -97,7 +87,7 @@ def stubbed(monkeypatch):
     def analysis(setup, placed, values, teeth, key, flank="drive", *, case=None):
         seen.append(dict(values))
         e = _evaluation(values)
-        return e.case, e.metrics, (*GRID, 2400.0)
+        return e.case, e.metrics, (*FLANK_GRID, 2400.0)
 
     monkeypatch.setattr(dp, "checked_analysis", analysis)
     monkeypatch.setattr(dp, "pitting_pressure_limit", lambda case, torque: 1550.0)

@@ -149,3 +149,66 @@ def test_a_name_that_exists_is_refused_naming_it(cleanup):
 def test_a_bad_name_is_refused_naming_the_field(call, message):
     with pytest.raises(InputError, match=message):
         call()
+
+
+def _assembling(change):
+    """A compliance model's preparation: the shell's assembler with ``change`` applied to
+    what it returns (the list of ``(C, info)`` of the rolls asked for)."""
+    from contact.ltca.compliance_models import shell_assembler
+
+    def prepare(case, easeoff, options):
+        inner = shell_assembler(case, easeoff, options)
+        return lambda segments: change(inner(segments))
+    return prepare
+
+
+@pytest.mark.parametrize(("change", "message"), [
+    (lambda out: [("abc", info) for _, info in out],
+     r"gave C str 'abc'; it must be numbers \(\[mm/N\] for C and weber"),
+    (lambda out: [(c, {**info, "weber": object()}) for c, info in out],
+     r"gave weber object '<object object"),
+    (lambda out: [(c, {**info, "time": "fast"}) for c, info in out],
+     r"gave time str 'fast'; it must be numbers"),
+    (lambda out: [(c, {**info, "asymmetry": np.ones(2)}) for c, info in out],
+     r"gave info\['asymmetry'\] array\(\[1\., 1\.\]\); it must be one finite number >= 0"),
+    (lambda out: list(out)[:-1],
+     r"must return one \(C, info\) per roll position \(\d+\), got list of \d+"),
+])
+def test_a_compliance_model_returning_the_wrong_thing_is_refused_naming_it(change, message):
+    """api83: a registered compliance model whose assembler returned a string for C (or
+    for ``info["time"]``) failed with NumPy's ``ValueError: could not convert string to
+    float`` inside the pool (contact/ltca/pool.py), naming neither the model nor the
+    field; now an InputError (``ComplianceModelError``) names the model, the field and
+    what it must be, before the contact problem is solved."""
+    name = "user_wrong_return"
+    contact.register_compliance_model(name, _assembling(change), replace=True)
+    try:
+        with pytest.raises(InputError, match=rf"^compliance: model '{name}' {message}"):
+            contact.run_analysis(None, [250.0], steps=contact.AnalysisChain.contact_only(),
+                                 options=contact.LTCAOptions(compliance=name,
+                                                             rolls_per_cycle=4, segments=8))
+    finally:
+        contact.unregister_compliance_model(name)
+
+
+@pytest.mark.parametrize(("call", "message"), [
+    (lambda: contact.AnalysisChain.contact_only().with_root_stress("coarse"),
+     r"^root_stress: must be True, False or a contact\.compliance\.fe\.FEOptions, got str "
+     r"'coarse'; the named FE level is FEOptions\.at_level\('coarse'\) \(levels: coarse, "
+     r"coarse10, default\)$"),
+    (lambda: contact.StudyRun(root_stress="coarse10"),
+     r"^root_stress: must be None, True, False or a .*; the named FE level is "
+     r"FEOptions\.at_level\('coarse10'\)"),
+    (lambda: contact.LTCAOptions(compliance="fe", fe="fine"),
+     r"^fe: must be a contact\.compliance\.fe\.FEOptions or None, got a str; a named FE "
+     r"level is given as FEOptions\.at_level\('NAME'\) \(levels: coarse, coarse10, default\)"),
+    (lambda: contact.FEOptions.at_level("fine"),
+     r"^level: must be one of \['coarse', 'coarse10', 'default'\], got 'fine'"),
+])
+def test_an_fe_level_given_by_its_name_where_fe_options_go_says_how(call, message):
+    """api83: ``ltca``'s ``--fe-level coarse`` typed into the API (``with_root_stress(
+    "coarse")``, ``StudyRun(root_stress=…)``, ``LTCAOptions(fe=…)``) was refused without
+    saying how the API names a level; the refusal now says ``FEOptions.at_level(NAME)``
+    and lists the levels."""
+    with pytest.raises(InputError, match=message):
+        call()

@@ -18,8 +18,9 @@ import pytest
 from contact.cli import main
 from contact.ltca.summary import edge_load_share
 from contact.plots import analysis_figures
-from contact.plots.report import SUMMARY_COLUMNS
+from contact.plots.report import SUMMARY_COLUMNS, page_units
 from geometry.core.io import read_netcdf
+from geometry.core.text import plain_number
 
 QUICK = ["--torque", "50", "250", "--rolls-per-cycle", "4", "--segments", "10",
          "--no-progress"]
@@ -74,7 +75,8 @@ def test_report_is_valid_html_whose_summary_equals_the_file(run_files, tmp_path)
                 continue
             # the exact value (repr round-trips a float) and its text at the table's decimals
             assert float(cells[key].get("data-value")) == float(value), key
-            assert cells[key].text == f"{float(value):.{decimals[key]}f}", key
+            assert cells[key].text == (plain_number(float(value)) if decimals[key] is None
+                                       else f"{float(value):.{decimals[key]}f}"), key
     # the misalignment once above the table, not repeated in a column of every row
     said = [p for p in doc.iter(f"{{{NS['h']}}}p")
             if p.text and "Misalignment of every row" in p.text]
@@ -260,3 +262,41 @@ def test_gear_torque_of_an_industrial_pair_has_no_exponent():
     small = xr.Dataset(coords={"torque": [0.3], "gear_torque": ("torque", [0.3 * 41 / 14])})
     assert dict(_operating(xr.DataTree(), small, None, xr.Dataset()))["gear torque"] == (
         "0.8786 N·m (lossless)")
+
+
+def test_the_verdict_box_says_what_was_not_checked_as_ltca_run_does(run_files):
+    """Issue 71 (api83), a design the project does not bundle (the unseen
+    hypoid_6x35_a36, synthesised, run, reported): ``ltca run`` ended its verdict with
+    ``not checked: micropitting (micropitting_safety NaN at every torque: the oil 75W90
+    gives no permissible_specific_film …)``, the page's verdict box left that line out —
+    the micropitting check read as passed. The box now has one ``Not checked:`` line per
+    reason, the same checks and reason as the command's text (``Verdict.lines``, the
+    independent reference here); the default case's 75W90 lacks λ_GFP alike."""
+    from contact.study.verdicts import verdict
+
+    nc, html = run_files
+    tree = read_netcdf(nc, tree=True)
+    expected = [line.strip()[len("not checked: "):] for line in verdict(tree).lines()
+                if line.startswith("  not checked: ")]
+    assert expected and any(e.startswith("micropitting (") for e in expected)
+    doc = _parse(html.read_text(encoding="utf-8"))
+    shown = ["".join(p.itertext()).strip()[len("Not checked: "):] for p in
+             doc.findall(".//h:section[@id='verdict']/h:p[@class='note not-checked']", NS)]
+    # the page writes the checks with spaces (root stress) and its units (µ, N·m)
+    assert [s.replace("_", " ") for s in shown] == \
+        [page_units(e).replace("_", " ") for e in expected]
+
+
+def test_the_summary_table_writes_the_torque_as_the_verdict_does(run_files):
+    """api83: the unseen hypoid_6x35_a36's design torque 127.1 N·m read "127" in the summary
+    table (0 decimals) and "127.1 N·m" in the verdict and every other table; the torque
+    cell is now ``plain_number`` of the file's torque (4 significant figures)."""
+    from contact.plots.report import _cell
+
+    assert _cell(127.1, None)["text"] == "127.1" and _cell(19.0, None)["text"] == "19"
+    assert _cell(float("nan"), None)["text"] == "–"
+    nc, html = run_files
+    lt = read_netcdf(nc, tree=True)["ltca"].to_dataset()
+    doc = _parse(html.read_text(encoding="utf-8"))
+    cells = doc.findall(".//h:table[@id='summary-table']//h:td[@data-key='torque']", NS)
+    assert [c.text for c in cells] == [plain_number(t) for t in lt["torque"].values]

@@ -84,7 +84,7 @@ def test_sweep_on_a_local_cluster_equals_single_analyses(case):
                                   dashboard_address=None) as cluster, \
             distributed.Client(cluster) as client:
         grid = sweep(case, delta_E=dE, delta_P=dP, torque=TORQUE,
-                     run=StudyRun(options=OPTIONS, scheduler=client))
+                     run=StudyRun(options=OPTIONS, scheduler=client, root_stress=False))
         caches = client.run(model_cache_info)
     assert grid["lte_peak_to_peak"].dims == ("delta_E", "delta_P", "torque")
     assert (grid["status"].values == 0).all()
@@ -104,7 +104,8 @@ def test_failing_point_comes_back_with_its_status(case):
     computed; no exception escapes. (ΔE = 50 mm is beyond the blank's plausible range: run
     only with force=True, and its input flagged in ``plausibility`` although it failed.)"""
     grid = sweep(case, delta_E=[0.0, 50.0], torque=TORQUE,
-                 run=StudyRun(options=OPTIONS, scheduler="synchronous", force=True))
+                 run=StudyRun(options=OPTIONS, scheduler="synchronous", force=True,
+                              root_stress=False))
     st = grid["status"].values
     assert st.tolist() == [0, 2]
     assert grid["reason"].values[0] == ""
@@ -161,7 +162,7 @@ def test_monte_carlo_is_reproducible(case):
     d = {"delta_E": parse_distribution("dE", "normal:0:0.05"),
          "delta_P": parse_distribution("dP", "uniform:-0.05:0.05")}
     r1 = sample(case, d, 5, seed=7, torque=TORQUE,
-                run=StudyRun(options=OPTIONS, scheduler="synchronous"))
+                run=StudyRun(options=OPTIONS, scheduler="synchronous", root_stress=False))
     drawn = draw_points(d, 5, seed=7)
     np.testing.assert_array_equal(r1["delta_E"].values, drawn["delta_E"])
     np.testing.assert_array_equal(r1["delta_P"].values, drawn["delta_P"])
@@ -223,7 +224,7 @@ def test_vh_check_moves_the_pattern_to_toe_and_heel(case):
     (seed Fig. 2.11: ΔE moves the pattern lengthwise)."""
     vh = vh_check(case, torque=50.0, delta_E=np.linspace(-0.3, 0.3, 4),
                   delta_P=np.linspace(-0.2, 0.2, 3),
-                  run=StudyRun(options=OPTIONS, scheduler="synchronous"))
+                  run=StudyRun(options=OPTIONS, scheduler="synchronous", root_stress=False))
     for pos in ("toe", "heel"):
         r = vh.sel(position=pos)
         V, H = float(r["V"]), float(r["H"])

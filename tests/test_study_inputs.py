@@ -136,7 +136,8 @@ def test_forced_points_are_flagged_as_ltca_run_warns(tmp_path, capsys):
 def test_the_library_refuses_unless_forced():
     with pytest.raises(InputError, match=r"delta_P 2 mm \(1 point\).*force=True"):
         sweep(None, delta_P=[0.0, 2.0], torque=50.0,
-              run=StudyRun(options=OPTS, scheduler="synchronous"))
+              run=StudyRun(options=OPTS, scheduler="synchronous",
+                           root_stress=False))
 
 
 def test_a_failed_point_keeps_its_input_flag(monkeypatch):

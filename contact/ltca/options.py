@@ -187,10 +187,11 @@ class LTCAOptions:
 
     def _check_fe(self) -> None:
         from contact.compliance.fe import FEOptions
+        from contact.compliance.fe.options import level_hint
 
         if not isinstance(self.fe, FEOptions):
             raise InputError(f"fe: must be a contact.compliance.fe.FEOptions or None, got a "
-                             f"{type(self.fe).__name__}")
+                             f"{type(self.fe).__name__}{level_hint(self.fe)}")
         if self.compliance != "fe":
             raise InputError(f"fe: FE options are used only with compliance='fe', got "
                              f"compliance={self.compliance!r}")

@@ -60,8 +60,9 @@ def _checked(name: str, jobs: list, mats: Any) -> list[tuple[np.ndarray, dict[st
                                     "(contact.ltca.compliance_models)")
 
     if not isinstance(mats, (list, tuple)) or len(mats) != len(jobs):
-        raise fail(f"must return one (C, info) per roll position ({len(jobs)}), got "
-                   f"{type(mats).__name__}")
+        got = (f"{type(mats).__name__} of {len(mats)}" if isinstance(mats, (list, tuple))
+               else type(mats).__name__)
+        raise fail(f"must return one (C, info) per roll position ({len(jobs)}), got {got}")
     out = []
     for (_, mask), item in zip(jobs, mats, strict=True):
         p = int(np.count_nonzero(mask))
@@ -69,10 +70,27 @@ def _checked(name: str, jobs: list, mats: Any) -> list[tuple[np.ndarray, dict[st
             c, info = item
         except (TypeError, ValueError):
             raise fail("must return (C, info) pairs") from None
-        c = np.asarray(c, dtype=float)
         missing = [k for k in REQUIRED_INFO if not isinstance(info, dict) or k not in info]
         if missing:
             raise fail(f"gave no {missing} in its info")
+        # numbers where numbers go: a string or an object there failed inside NumPy or the
+        # pool's sums, a ValueError naming neither the model nor the field (api83)
+        arrays = {}
+        for field, value in (("C", c), ("weber", info["weber"]),
+                             ("weber_depth", info["weber_depth"]),
+                             ("time", info["time"]), ("asymmetry", info["asymmetry"])):
+            try:
+                arrays[field] = np.asarray(value, dtype=float)
+            except (TypeError, ValueError):
+                raise fail(f"gave {field} {type(value).__name__} {str(value)[:40]!r}; "
+                           "it must be numbers ([mm/N] for C and weber, [mm] weber_depth, "
+                           "[s] time, [1] asymmetry)") from None
+        for field in ("time", "asymmetry"):
+            x = arrays[field]
+            if x.ndim != 0 or not (np.isfinite(x) and x >= 0.0):
+                raise fail(f"gave info[{field!r}] {info[field]!r}; it must be one finite "
+                           f"number >= 0 ({'[s]' if field == 'time' else '[1]'})")
+        c = arrays["C"]
         if (c.shape != (p, p) or np.shape(info["weber"]) != (p, p)
                 or np.shape(info["weber_depth"]) != (p, 2)):
             raise fail(f"gave C {c.shape}, weber {np.shape(info['weber'])}, weber_depth "

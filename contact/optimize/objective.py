@@ -69,7 +69,11 @@ class OptimizeProblem:
     Parameters
     ----------
     torque : tuple of float — [N·m]
-        Pinion torques, ascending; default the seed's Table 3.1 (50, 250, 500).
+        Pinion torques, ascending; default ``()``: the case's torques of the flank
+        (:func:`contact.pipeline.flank_torques`, taken by :meth:`with_case`), as ``ltca
+        optimize`` without ``--torque`` or an ``[optimize]`` torque (api83; before, the
+        seed's Table 3.1 50, 250, 500 N·m whatever the case). Without torques the
+        per-torque fields take one value (for every torque) and ``lte_mean_range`` none.
     misalignments : tuple of Misalignment
         Analysed assemblies; default the case's own misalignment.
     max_edge_share : tuple of float — [1]
@@ -103,7 +107,7 @@ class OptimizeProblem:
         unknown term in ``weights``.
     """
 
-    torque: tuple[float, ...] = (50.0, 250.0, 500.0)
+    torque: tuple[float, ...] = ()
     misalignments: tuple[Misalignment, ...] = ()
     max_edge_share: tuple[float, ...] = ()
     max_flank_pressure: tuple[float, ...] = ()
@@ -119,9 +123,13 @@ class OptimizeProblem:
     flank: str | None = None
 
     def __post_init__(self) -> None:
-        nt = len(self.torque)
-        if nt < 1:
-            raise InputError("optimize.torque: give at least one torque [N m]")
+        if isinstance(self.torque, (int, float)):  # one torque given as a number
+            object.__setattr__(self, "torque", (self.torque,))
+        try:
+            nt = len(self.torque)
+        except TypeError:
+            raise InputError("optimize.torque: must be a sequence of pinion torques [N m], "
+                             f"got {self.torque!r}") from None
         torque = tuple(real("optimize.torque", t, unit="N m", low=0.0, low_open=True)
                        for t in self.torque)
         if list(torque) != sorted(torque):
@@ -130,6 +138,14 @@ class OptimizeProblem:
 
         def per_torque(name, value, default, unit, low, high):
             vals = tuple(value) if value else (default,)
+            if nt == 0:  # the case's torques, taken by with_case: one value for all
+                if len(vals) != 1:
+                    raise InputError(f"optimize.{name}: give one value, or torque= with one "
+                                     f"value per torque; without torque= the torques are "
+                                     f"the case's (with_case), got {len(vals)} values")
+                return tuple(math.inf if v == math.inf else
+                             real(f"optimize.{name}", v, unit=unit, low=low, high=high)
+                             for v in vals) if value else ()
             if len(vals) == 1:
                 vals = vals * nt
             if len(vals) != nt:
@@ -145,7 +161,7 @@ class OptimizeProblem:
             "max_flank_pressure", self.max_flank_pressure, math.inf, "MPa", 0.0, None))
         object.__setattr__(self, "torque_weights", per_torque(
             "torque_weights", self.torque_weights, 1.0, "1", 0.0, None))
-        if sum(self.torque_weights) <= 0:
+        if self.torque_weights and sum(self.torque_weights) <= 0:
             raise InputError("optimize.torque_weights: must not all be 0")
         lo, hi = (math.inf if v == math.inf else
                   real("optimize.lte_peak_to_peak_range", v, unit="urad", low=0.0)
@@ -155,6 +171,10 @@ class OptimizeProblem:
                              f"({lo:g}, {hi:g}) urad")
         object.__setattr__(self, "lte_peak_to_peak_range", (lo, hi))
         if self.lte_mean_range is not None:
+            if nt == 0:
+                raise InputError("optimize.lte_mean_range: one (low, high) pair per torque: "
+                                 "give torque= as well (without it the torques are the "
+                                 "case's, taken by with_case)")
             rng = tuple(tuple(r) for r in self.lte_mean_range)
             if len(rng) != nt or any(len(r) != 2 or not 0 <= r[0] < r[1] for r in rng):
                 raise InputError(f"optimize.lte_mean_range: give one (low, high) pair per "
@@ -174,10 +194,18 @@ class OptimizeProblem:
             raise InputError(f"optimize.flank: must be 'drive' or 'coast', got {self.flank!r}")
 
     def with_case(self, case: Case) -> OptimizeProblem:
-        """The problem with the case's misalignment where none is given."""
-        if self.misalignments:
-            return self
-        return dataclasses.replace(self, misalignments=(case.misalignment,))
+        """The problem with the case's misalignment where none is given, and the case's
+        torques of the problem's flank where none are given
+        (:func:`contact.pipeline.flank_torques`: the ``[operating]`` torques, the coast
+        flank's up to its coast design torque; as ``ltca optimize``)."""
+        changes: dict = {}
+        if not self.misalignments:
+            changes["misalignments"] = (case.misalignment,)
+        if not self.torque:
+            from contact.pipeline import flank_torques
+
+            changes["torque"] = tuple(sorted(flank_torques(case, self.flank)[0]))
+        return dataclasses.replace(self, **changes) if changes else self
 
 
 def constraint_names(problem: OptimizeProblem) -> tuple[str, ...]:

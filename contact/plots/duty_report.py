@@ -174,7 +174,11 @@ def _verdict(ds: xr.Dataset) -> dict[str, Any]:
             "findings": [{"severity": f.severity, "check": f.check, "reason": f.reason}
                          for f in v.findings],
             "checks": [c.replace("_", " ") for c in v.checks],
-            "notes": list(v.notes)}  # what a check left out (a flank corner's curve)
+            "notes": list(v.notes),  # what a check left out (a flank corner's curve)
+            # the checks it could not make and why, as `ltca run` prints them: a page
+            # that left them out read as if they had passed (issue 71, api83)
+            "not_checked": [{"checks": ", ".join(c.replace("_", " ") for c in checks),
+                             "why": why} for checks, why in v.not_checked()]}
 
 
 def render_duty_report(result: xr.DataTree | xr.Dataset, *, figures: bool = True) -> str:

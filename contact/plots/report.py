@@ -67,8 +67,9 @@ class SummaryColumn:
         Identifier (the cell's ``data-key`` on the page).
     heading, unit : str
         Column heading and unit as shown ([µrad], [MPa] …).
-    decimals : int
-        Decimals shown.
+    decimals : int or None
+        Decimals shown; None: the number as the page's text writes it
+        (:func:`geometry.core.text.plain_number`, the torque).
     value : callable
         ``value(groups, i)`` → the number at torque index ``i`` (NaN where the file lacks
         it: shown as "–"); ``groups`` maps ``"ltca"``, ``"friction"``,
@@ -78,7 +79,7 @@ class SummaryColumn:
     key: str
     heading: str
     unit: str
-    decimals: int
+    decimals: int | None
     value: Callable[[Mapping[str, xr.Dataset | None], int], float]
 
 
@@ -119,7 +120,9 @@ def _edge_share(groups: Mapping[str, xr.Dataset | None], i: int) -> float:
 #: (e.g. the tooth-root stress of a stress stage, ``_var("stress", "root_stress_max")``)
 #: appears on every report; its ``value`` returns NaN for files that lack it.
 SUMMARY_COLUMNS: tuple[SummaryColumn, ...] = (
-    SummaryColumn("torque", "T_p", "N·m", 0, lambda g, i: float(g["ltca"]["torque"].values[i])),
+    # the torque as every other table and the verdict write it (127.1, not 127: api83)
+    SummaryColumn("torque", "T_p", "N·m", None,
+                  lambda g, i: float(g["ltca"]["torque"].values[i])),
     SummaryColumn("lte_mean", "LTE mean", "µrad", 1, _var("ltca", "lte_mean")),
     SummaryColumn("lte_peak_to_peak", "p-p", "µrad", 1, _var("ltca", "lte_peak_to_peak")),
     SummaryColumn("harmonic_1", "1st", "µrad", 1, _var("ltca", "lte_harmonics", index=0)),
@@ -234,9 +237,10 @@ def _num(value: Any) -> float:
     return float(np.asarray(value, float))
 
 
-def _cell(value: float, decimals: int) -> dict:
+def _cell(value: float, decimals: int | None) -> dict:
     v = _num(value)
-    return {"text": f"{v:.{decimals}f}" if np.isfinite(v) else "–",
+    text = plain_number(v) if decimals is None else f"{v:.{decimals}f}"
+    return {"text": text if np.isfinite(v) else "–",
             "value": repr(v) if np.isfinite(v) else ""}
 
 
@@ -513,7 +517,11 @@ def _verdict(tree: xr.DataTree) -> dict:
             "findings": [{"severity": f.severity, "check": f.check, "reason": f.reason}
                          for f in v.findings],
             "checks": [c.replace("_", " ") for c in v.checks],
-            "notes": list(v.notes)}  # what a check left out (a flank corner's curve)
+            "notes": list(v.notes),  # what a check left out (a flank corner's curve)
+            # the checks it could not make and why, as `ltca run` prints them: a page
+            # that left them out read as if they had passed (issue 71, api83)
+            "not_checked": [{"checks": ", ".join(c.replace("_", " ") for c in checks),
+                             "why": why} for checks, why in v.not_checked()]}
 
 
 def _pattern(lt: xr.Dataset | None, inputs_text: str) -> list[dict] | None:

@@ -802,7 +802,7 @@ def run_duty_cycle(case: Case | str | os.PathLike[str] | None, duty: DutyCycle,
     return out
 
 
-def duty_root_stress(root_stress: Any, run_root_stress: Any = False) -> Any:
+def duty_root_stress(root_stress: Any, run_root_stress: Any = None) -> Any:
     """The root stress a duty cycle runs with: :func:`run_duty_cycle`'s ``root_stress``
     as given, else the StudyRun's where it is set, else True (``ltca duty-cycle``'s
     default, ``--root-stress``).
@@ -811,8 +811,9 @@ def duty_root_stress(root_stress: Any, run_root_stress: Any = False) -> Any:
     ----------
     root_stress : None, bool or contact.compliance.fe.FEOptions
         The call's keyword (None: not given).
-    run_root_stress : bool or contact.compliance.fe.FEOptions
-        The call's ``StudyRun.root_stress`` (its default False: not set).
+    run_root_stress : None, bool or contact.compliance.fe.FEOptions
+        The call's ``StudyRun.root_stress`` (its default None, or False, the default
+        before api83: not set).
 
     Returns
     -------
@@ -837,7 +838,7 @@ def duty_root_stress(root_stress: Any, run_root_stress: Any = False) -> Any:
         if not isinstance(root_stress, FEOptions):
             raise InputError("root_stress: must be None, True, False or a "
                              f"contact.compliance.fe.FEOptions, got {root_stress!r}")
-    if run_root_stress is False:
+    if run_root_stress is None or run_root_stress is False:
         return True if root_stress is None else root_stress
     if root_stress is not None and root_stress != run_root_stress:
         raise InputError(f"root_stress, run.root_stress: two different root stresses "

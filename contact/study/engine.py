@@ -217,8 +217,12 @@ def worker_environment() -> Iterator[None]:
     """
     import dask
 
-    from geometry.core.kernels import process_choice
+    from geometry.core.kernels import announce_compiling, compiled_modules, process_choice
 
+    # numba compiles in the workers where its cache holds no kernels yet: said now, as the
+    # workers start (the command line's compile note, issue 71)
+    for name in compiled_modules():
+        announce_compiling(name)
     # the workers run the kernels this process runs (numba's cache may fill meanwhile):
     # a study's points equal this process's analyses to round-off and below
     with dask.config.set({f"distributed.nanny.pre-spawn-environ.{name}": None

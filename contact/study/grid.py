@@ -30,7 +30,9 @@ from geometry.core.validation import real_array
 
 __all__ = ["DEFAULT_TORQUE", "study_inputs", "sweep"]
 
-#: Default pinion torque of a study [N·m]: the middle of the seed's Table 3.1 torques.
+#: The studies' former default pinion torque [N·m] (the middle of the seed's Table 3.1
+#: torques), kept for the scripts that name it: the default is now the case's
+#: ``[operating]`` torques, as ``ltca sweep`` and ``ltca tolerance`` take them (api83).
 DEFAULT_TORQUE = (250.0,)
 
 
@@ -62,7 +64,7 @@ def study_inputs(
     ----------
     case : Case, path, bundled name or None (the default case)
     torque : float or sequence — [N·m], optional
-        Pinion torques (default :data:`DEFAULT_TORQUE`).
+        Pinion torques (default the case's ``[operating]`` torques, as ``ltca sweep``).
     speed : float or sequence — [rpm], optional
         Pinion speeds of an efficiency stage (default none).
     operating : friction.operating.OperatingConditions, optional
@@ -89,7 +91,9 @@ def study_inputs(
     """
 
     c = resolve_case(case)
-    torques = _values("torque", DEFAULT_TORQUE if torque is None else torque, "N m")
+    if torque is None:  # the command's default (contact.commands.study._torques)
+        torque = tuple(c.operating.torque)
+    torques = _values("torque", torque, "N m")
     if np.any(torques <= 0):
         raise InputError(f"torque: must be > 0 [N m], got {torques.tolist()}")
     speeds = () if speed is None else tuple(float(x) for x in _values("speed", speed, "rpm"))
@@ -139,7 +143,8 @@ def sweep(
     deviation_scale : float or sequence — [1], optional
         Factors on the case's ``[deviations]`` (0 theoretical, 1 as measured).
     torque : float or sequence — [N·m], optional
-        Pinion torques (default :data:`DEFAULT_TORQUE`).
+        Pinion torques (default the case's ``[operating]`` torques, as ``ltca sweep``;
+        before api83 :data:`DEFAULT_TORQUE`, 250 N·m).
     pinion_speed : float or sequence — [rpm], optional
         Pinion speeds (the result's ``speed`` dimension; old name ``speed``, deprecated):
         adds efficiency and power loss (default none).
@@ -182,7 +187,7 @@ def sweep(
         raise InputError("sweep: give at least one of delta_E, delta_P, delta_G, "
                          "delta_Sigma, deviation_scale")
     shared = study_inputs(case, torque, pinion_speed, operating=run.operating, options=run.options,
-                          flank=run.flank, root_stress=run.root_stress)
+                          flank=run.flank, root_stress=run.study_root_stress)
     names = list(axes)
     points = [dict(zip(names, map(float, combo), strict=True))
               for combo in itertools.product(*(axes[n] for n in names))]

@@ -162,7 +162,7 @@ def sample(
     n: int,
     *,
     method: str = "sobol",
-    seed: int | None = None,
+    seed: int | None = 0,
     torque: Any = None,
     pinion_speed: Any = None,
     run: StudyRun | None = None,
@@ -180,10 +180,12 @@ def sample(
         Number of draws.
     method : str
         ``"sobol"`` (default), ``"lhs"`` or ``"random"``, as :func:`draw_points`.
-    seed : int, optional
-        Seed of the draws (a fixed seed makes the study reproducible).
+    seed : int or None, optional
+        Seed of the draws: default 0, as ``ltca tolerance --seed`` (the same draws each
+        call; before api83 None); None: other draws each call.
     torque : float or sequence — [N·m], optional
-        Pinion torques, as :func:`contact.study.sweep`.
+        Pinion torques, as :func:`contact.study.sweep` (default the case's
+        ``[operating]`` torques).
     pinion_speed : float or sequence — [rpm], optional
         Pinion speeds (old name ``speed``, deprecated), as :func:`contact.study.sweep`.
     run : contact.study.StudyRun, optional
@@ -206,7 +208,7 @@ def sample(
     run = study_run(run, legacy, "sample")
     draws = draw_points(distributions, n, method=method, seed=seed)
     shared = study_inputs(case, torque, pinion_speed, operating=run.operating, options=run.options,
-                          flank=run.flank, root_stress=run.root_stress)
+                          flank=run.flank, root_stress=run.study_root_stress)
     names = list(draws)
     points = [{k: float(draws[k][i]) for k in names} for i in range(int(n))]
     flat = run_points(shared, points, names=names, output=run.output, scheduler=run.scheduler,

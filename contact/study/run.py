@@ -55,10 +55,11 @@ class StudyRun:
         Also the peak tooth-root stress of both members at every point
         (``root_stress_max`` over (point…, torque, member) [MPa]; :func:`contact.run_analysis`'s
         ``root_stress``: True the default FE model — with ``options.compliance == "fe"``
-        that of the compliance —, or an FEOptions). Default False (the sweeps' and the
-        sample's; ``ltca sweep`` and ``ltca tolerance`` turn it on).
-        :func:`contact.study.duty_cycle.run_duty_cycle` reads it where set (True or
-        FEOptions); its own default is True, as ``ltca duty-cycle``'s.
+        that of the compliance —, or an FEOptions; False off). Default None, not set:
+        the sweeps and the sample compute it (:attr:`study_root_stress` True), as
+        ``ltca sweep`` and ``ltca tolerance`` (``--root-stress`` on; before api83 the
+        API's default was off). :func:`contact.study.duty_cycle.run_duty_cycle` reads it
+        where set (True or FEOptions); its own default is True, as ``ltca duty-cycle``'s.
     force : bool
         Run points whose misalignment is beyond the plausible range of the pair's blanks
         (flagged in the output's ``plausibility``); default False refuses them before any
@@ -78,8 +79,14 @@ class StudyRun:
     scheduler: Any = None
     n_workers: int | None = None
     progress: bool | str = False
-    root_stress: Any = False
+    root_stress: Any = None
     force: bool = False
+
+    @property
+    def study_root_stress(self) -> Any:
+        """The root stress a sweep or a sample computes: :attr:`root_stress` where set,
+        else True (``ltca sweep``'s and ``ltca tolerance``'s ``--root-stress``)."""
+        return True if self.root_stress is None else self.root_stress
 
     def __post_init__(self) -> None:
         if not (isinstance(self.progress, bool) or self.progress == "lines"):
@@ -90,12 +97,15 @@ class StudyRun:
         if self.operating is not None and not isinstance(self.operating, OperatingConditions):
             raise InputError("operating: must be a friction.operating.OperatingConditions or "
                              f"None, got {type(self.operating).__name__}")
-        if not isinstance(self.root_stress, bool):
+        if self.root_stress is not None and not isinstance(self.root_stress, bool):
             from contact.compliance.fe import FEOptions
 
             if not isinstance(self.root_stress, FEOptions):
-                raise InputError("root_stress: must be True, False or a "
-                                 f"contact.compliance.fe.FEOptions, got {self.root_stress!r}")
+                from contact.compliance.fe.options import level_hint
+
+                raise InputError("root_stress: must be None, True, False or a "
+                                 f"contact.compliance.fe.FEOptions, got {self.root_stress!r}"
+                                 f"{level_hint(self.root_stress)}")
 
 
 #: the keywords the entry points took before :class:`StudyRun`

@@ -280,6 +280,15 @@ class Verdict:
         return max((f.severity for f in self.findings), key=SEVERITIES.index,
                    default="pass")
 
+    def not_checked(self) -> list[tuple[tuple[str, ...], str]]:
+        """The checks that could not be made (:attr:`unchecked`), grouped by why: one
+        ``(checks, why)`` per reason, in the order of the first check of each — the
+        ``not checked`` lines of :meth:`lines` and of the HTML reports' verdict boxes."""
+        whys: dict[str, list[str]] = {}
+        for check, why in self.unchecked:
+            whys.setdefault(why, []).append(check)
+        return [(tuple(checks), why) for why, checks in whys.items()]
+
     def lines(self, limit: int | None = None, rest: str | None = None) -> list[str]:
         """The verdict as text lines: ``VERDICT: <severity>`` with the count, then one
         line per finding (``  fail: <reason>``), one per note (``  note: <note>``,
@@ -294,10 +303,8 @@ class Verdict:
         shown = self.findings if limit is None else self.findings[:limit]
         out = [head] + [f"  {f.severity}: {f.reason}" for f in shown]
         out += [f"  note: {n}" for n in self.notes]
-        whys: dict[str, list[str]] = {}
-        for check, why in self.unchecked:
-            whys.setdefault(why, []).append(check)
-        out += [f"  not checked: {', '.join(checks)} ({why})" for why, checks in whys.items()]
+        out += [f"  not checked: {', '.join(checks)} ({why})"
+                for checks, why in self.not_checked()]
         if len(shown) < n:
             out.append(f"  … and {n - len(shown)} more "
                        f"({rest or 'the report lists them all'})")

@@ -45,6 +45,8 @@ prefer_compiled   make ``auto`` mean ``numba`` in this process (commands of many
                   or numba for the modules that pay (``ltca synthesize`` on a fresh cache)
 compiled_modules  the kernel modules this process runs compiled
 prefer_cached     make ``auto`` the default in this process (a command of one analysis)
+announce_compiling  log (once per module and process, :data:`COMPILING_LOGGER`) that numba
+                  is about to compile a module's kernels
 """
 
 from __future__ import annotations
@@ -58,8 +60,9 @@ from types import ModuleType
 from geometry.core.caches import memoised
 from geometry.core.errors import InputError
 
-__all__ = ["KERNELS", "KERNEL_MODULES", "cache_ready", "compiled_module", "compiled_modules",
-           "kernels_module", "prefer_cached", "prefer_compiled", "process_choice"]
+__all__ = ["COMPILING_LOGGER", "KERNELS", "KERNEL_MODULES", "announce_compiling", "cache_ready",
+           "compiled_module", "compiled_modules", "kernels_module", "prefer_cached",
+           "prefer_compiled", "process_choice"]
 
 #: the implementations: ``numpy`` (the reference), ``numba`` (compiled; the ``fast``
 #: extra) and ``auto`` (numba where its cache holds the kernels, :func:`cache_ready`)
@@ -68,6 +71,12 @@ KERNELS = ("numpy", "numba", "auto")
 #: the compiled kernel modules of the four hot loops
 KERNEL_MODULES = ("geometry.machine.envelope_numba", "contact.utca.isoline_numba",
                   "contact.compliance.tooth_map_numba", "contact.qp.solvers.pivoting_numba")
+
+
+#: the logger :func:`announce_compiling` tells that numba is about to compile a module's
+#: kernels (at INFO, once per module and process): the command line prints its one-time
+#: compile note at that record, not before a command has checked its inputs (issue 71)
+COMPILING_LOGGER = "geometry.core.kernels.compiling"
 
 
 @memoised(maxsize=None)
@@ -249,6 +258,38 @@ def compiled_modules() -> tuple[str, ...]:
     return ()
 
 
+@memoised(maxsize=None)
+def announce_compiling(name: str) -> bool:
+    """Log at INFO on :data:`COMPILING_LOGGER` that numba is about to compile the kernels of
+    module ``name`` (its cache holds none for this machine, :func:`cache_ready`), once per
+    module and process: called where a compiled module is handed to a hot loop
+    (:func:`kernels_module`) or to a study's workers. The command line prints its compile
+    note at the first such record, so that a command refused on its inputs prints the
+    refusal alone (issue 71: the note used to come first, on every fresh cache).
+
+    Parameters
+    ----------
+    name : str
+        The kernel module's import name (one of :data:`KERNEL_MODULES`).
+
+    Returns
+    -------
+    bool
+        True where numba will compile the module (logged), False where it is cached.
+    """
+    if cache_ready(name):
+        return False
+    logging.getLogger(COMPILING_LOGGER).info("compiling the numba kernels of %s", name)
+    return True
+
+
+def _handed(module: ModuleType | None, name: str) -> ModuleType | None:
+    """``module`` (compiled kernels about to run, or None: the NumPy path), announced."""
+    if module is not None:
+        announce_compiling(name)
+    return module
+
+
 def prefer_cached() -> None:
     """Make ``auto`` the choice of this process (and the processes it starts): the
     compiled kernels where numba's cache holds them (:func:`cache_ready`), the NumPy path
@@ -290,17 +331,18 @@ def kernels_module(name: str, kernels: str | None = None) -> ModuleType | None:
         kernels = os.environ.get("LTCA_KERNELS") or None
         source = "LTCA_KERNELS"
         if kernels is None:  # the default: numba where it is installed
-            return compiled_module(name)
+            return _handed(compiled_module(name), name)
     if kernels not in KERNELS:
         raise InputError(f"{source}: must be one of {', '.join(KERNELS)}, got {kernels!r}")
     if kernels == "numpy":
         return None
     if kernels == "auto":
         anyway = name in _COMPILED_ANYWAY.get("modules", ())
-        return compiled_module(name) if anyway or _auto_choice() == "numba" else None
+        return (_handed(compiled_module(name), name)
+                if anyway or _auto_choice() == "numba" else None)
     mod = compiled_module(name)
     if mod is None:
         raise InputError(f"{source}: 'numba' needs numba installed "
                          "(pip install 'hypoid-ltca[fast]', from a clone: pip install "
                          "'.[fast]')")
-    return mod
+    return _handed(mod, name)

@@ -15,6 +15,7 @@ SYNTHESIS_LEVEL    the level ``ltca synthesize`` writes into a new design's case
 fe_level_of        the FE level a case's ``[root_stress]`` table names, validated
 case_fe_options    the FE model of a case's root stress: its level's FEOptions
 level_name         the level an FEOptions is (None for another model)
+level_hint         how to give a level name where an FEOptions goes (for refusals)
 with_fe_level      a case with the FE level of its root stress written
 ELEMENTS           element name → (scikit-fem element class, nodes per element)
 CONSTRAINTS        support name → what is held fixed (words; the facets are chosen in
@@ -51,6 +52,7 @@ __all__ = [
     "FEOptions",
     "case_fe_options",
     "fe_level_of",
+    "level_hint",
     "level_name",
     "member_flank",
     "with_fe_level",
@@ -188,6 +190,30 @@ def level_name(options: FEOptions) -> str | None:
         if options == FEOptions.at_level(name):
             return name
     return None
+
+
+def level_hint(value: Any) -> str:
+    """The end of a refusal where an FEOptions goes and ``value`` was given: where it is
+    a string (``ltca``'s ``--fe-level`` spelling), how the API says it —
+    ``FEOptions.at_level(NAME)`` — and the levels (:data:`LEVELS`); else ``""``.
+
+    Parameters
+    ----------
+    value : object
+        What the caller gave.
+
+    Returns
+    -------
+    str
+        ``"; a named FE level is FEOptions.at_level('coarse') (levels: …)"`` or ``""``.
+    """
+    if not isinstance(value, str):
+        return ""
+    known = value in LEVELS
+    return (f"; {'the' if known else 'a'} named FE level "
+            f"{'is' if known else 'is given as'} "
+            f"FEOptions.at_level({value if known else 'NAME'!r}) (levels: "
+            f"{', '.join(sorted(LEVELS))})")
 
 
 def with_fe_level(case, level: str):
