@@ -250,8 +250,7 @@ def ellipse_between_designs(best: DevelopmentEvaluation, targets: DevelopmentTar
             if moved is None:
                 break
             here = tried(moved, f"the ellipse {x:.3g} with its light-load pattern's height "
-                                f"back at v {aim:.2f} by the blade angle, "
-                                f"{HEIGHT_NAME} {moved[HEIGHT_NAME]:.3g} deg")
+                                f"back at v {aim:.2f} by the blade angle")
             if here is None:
                 break
             if kept(here):
