@@ -40,6 +40,7 @@ from typing import Any
 import numpy as np
 
 from contact.optimize.development_coast import CoastCapacity
+from contact.optimize.development_coast_ellipse_between import ellipse_between_designs
 from contact.optimize.development_coast_flank import (
     coast_flank_capacity,
     pitting_pressure,
@@ -394,6 +395,52 @@ def coast_range_peak(e: DevelopmentEvaluation | None, setup: Mapping[str, Any],
     return range_peak(range_lte(e, setup, teeth, flank="coast", key_prefix=key_prefix))
 
 
+def between_wanted(best: DevelopmentEvaluation, longest: DevelopmentEvaluation | None,
+                   targets: DevelopmentTargets, limit: float, static: float) -> bool:
+    """Whether :func:`checked_coast_capacity_lte`, having kept none of its designs, tries
+    the ellipses between the design's and the longest
+    (:func:`~contact.optimize.development_coast_ellipse_between.ellipse_between_designs`):
+    where the longest ellipse was analysed, keeps ``limit`` at its two torques and was
+    refused for something else (:func:`capacity_kept` with no LTE limit: a plastic
+    segment, a target the design met lost, its peak above ``static``).
+
+    Parameters
+    ----------
+    best : DevelopmentEvaluation
+        The coast design, checked.
+    longest : DevelopmentEvaluation or None
+        Its longest ellipse as analysed (None: not tried, or it failed).
+    targets : DevelopmentTargets
+        The development's.
+    limit : float — [µrad]
+        The verdict's LTE limit.
+    static : float — [MPa]
+        The coast flank's static strength.
+
+    Returns
+    -------
+    bool
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    The LTE falls as the ellipse lengthens (Litvin & Fuentes 2004, §9.4): where the
+    longest ellipse is above the limit at a torque the shorter ones between are not tried
+    (the 10x31 z0 3: 62 µrad; the 20x24 at Σ 100°: 87), which keeps the step's cost where
+    it was on those. On the 25x31 of m_et 9.52 mm the longest was 23 / 31 µrad at 567 /
+    3780 N m with 0.5 % of the torque on plastic segments (docs/synthesis.md, "The coast
+    ellipse between, its height kept").
+    """
+    if longest is None or longest.metrics is None or longest.full is None:
+        return False
+    if not float(np.nanmax(longest.metrics["lte_peak_to_peak"])) <= limit:
+        return False
+    return bool(capacity_kept(best, longest, targets, math.inf, static))
+
+
 def checked_coast_capacity_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                                setup: Mapping[str, Any], teeth: KeptTeeth | None,
                                say: Callable[[str], None],
@@ -413,7 +460,12 @@ def checked_coast_capacity_lte(best: DevelopmentEvaluation, targets: Development
     coast``'s ``lte_range`` torques, one analysis of the two torques between and the
     crossing's bisections); of those kept (each within the limit over the range), the one
     of least flank peak pressure at the design torque (the capacity the LTE is bought
-    with).
+    with). Where none is kept and the longest ellipse kept the limit at its torques but
+    was refused for what it costs (:func:`between_wanted`), the ellipses between the
+    design's and the longest, each with its light-load pattern's height kept by the blade
+    angle (:func:`~contact.optimize.development_coast_ellipse_between.
+    ellipse_between_designs`: at most three ellipses of up to three designs each), the
+    first kept.
 
     Parameters
     ----------
@@ -495,8 +547,9 @@ def checked_coast_capacity_lte(best: DevelopmentEvaluation, targets: Development
         return e
 
     base = best
+    longest = None
     if any(abs(float(first[k]) - float(best.values[k])) > 1e-9 for k in first):
-        base = tried(first, "the longest ellipse")
+        base = longest = tried(first, "the longest ellipse")
     if base is not None:
         x = clearance_shift(base, targets)
         if (math.isfinite(x)
@@ -511,6 +564,15 @@ def checked_coast_capacity_lte(best: DevelopmentEvaluation, targets: Development
             base = best
         for values in lighter_reliefs(base.values, targets):
             tried(values, "lighter relief")
+    if not kept and between_wanted(best, longest, targets, limit, static):
+        # none kept, the longest ellipse within the limit at its torques but refused for
+        # what the longer ellipse costs: an ellipse between the design's and the longest,
+        # its light-load pattern's height kept by the blade angle (the 25x31 of m_et 9.52
+        # mm: the longest 23 / 31 urad with 0.5 % plastic, the lighter reliefs plastic;
+        # the ellipse 0.5 re-centred 57 urad at most over the range against the design's
+        # 68.6)
+        ellipse_between_designs(best, targets, tried, lambda e: any(k is e for k in kept),
+                                limit)
     if not kept:
         return best
     return min(kept, key=lambda e: float(e.metrics["pressure_max_flank"][-1]))
@@ -559,8 +621,9 @@ def coast_lte_within_capacity(developed: BasicDesign, drive: DevelopmentEvaluati
     The step runs where the coast design's LTE exceeds the limit at its torques or between
     them (:func:`coast_largest`; it read the two torques alone, as the coast flank of the
     25x31 of m_et 9.52 mm of benchmarks/data/unseen_designs shows, 59 / 53 µrad at 567 /
-    3780 N·m and 69 µrad at 1638 N·m between — whose given coast design torque has no
-    capacity search, hence no static strength, so the step does not run on it). The
+    3780 N·m and 69 µrad at 1638 N·m between; its coast design torque, the given design
+    torque, is checked by the coast capacity search, which holds there: the step runs on
+    it, and keeps the ellipse between, :func:`between_wanted`). The
     designs are judged on their LTE at the coast torques and between them
     (:func:`coast_range_peak`); where none is kept and the coast design's LTE fails the
     verdict, the one written nearest the limit is the one of least LTE over that range,
