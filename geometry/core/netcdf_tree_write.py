@@ -10,13 +10,15 @@ spent ≈ 0.4 s of its ≈ 0.9 s write there; 391 tiny variables written in turn
 The file is the same: the same groups, variables (defined in the same order), encodings
 and attributes; only the order in which the library writes the data blocks differs.
 
-Memory (issue 75, helper speed83): the variables are defined group by group from their
-CF-encoded form (xarray's ``store.store``), but the encoded data are not kept; once every
-group is defined, each variable is encoded again and written, one at a time. The write's
-extra memory is then one group's encoded data while the groups are defined, one
-variable's while they are written, not every variable's encoded copy until the end (the
-default case's run tree, 31 MB: +32 → +13 MB over the tree; docs/performance.md). The
-second encoding costs ≈ 0.01 s for ``ltca run``'s 392 variables.
+Memory (issue 75, helper speed83): HDF5 keeps a written chunk in its dataset's chunk
+cache until the file is closed (the define-mode flushes of xarray's order emptied them),
+so writing every variable after every definition held all the data once more until
+``close`` (+26 MB for the default case's 31 MB run tree). The variables of at least
+:data:`UNCACHED_BYTES` are therefore written past the chunk cache (filtered and written
+when their data are), and their encoded data are not kept from their definition: encoded
+again by the same store when written, one at a time. Smaller variables keep both (1.0 of
+the 31 MB). The write's peak over the tree: +34 → +7 MB, its CPU unchanged
+(docs/performance.md, helper speed83).
 
 Public functions
 ----------------
@@ -191,11 +193,13 @@ def write_tree_defined_first(tree: xr.DataTree, path: str | os.PathLike[str],
     2025–2026): one store on the file, a child store per group, ``dump_to_store`` of each
     node's own dataset (the root's with the coordinates it would pass down), one array
     writer for all. Here ``dump_to_store``'s variables are taken before the store encodes
-    them; the store defines each group's variables from them (its own encoding, the data
-    dropped), and once every group is defined each variable is encoded again by the same
-    store and written, one at a time (a group whose variables name ``bounds`` of each
-    other, as a whole: xarray's ``cf_encoder`` encodes those together). Source: xarray's
-    ``backends.common.AbstractWritableDataStore.store``; netCDF-C ``nc_enddef``.
+    them; the store defines each group's variables from them (its own encoding; the data
+    kept only where below :data:`UNCACHED_BYTES`), and once every group is defined each
+    larger variable is encoded again by the same store and written past the chunk cache,
+    one at a time (a group whose variables name ``bounds`` of each other, as a whole:
+    xarray's ``cf_encoder`` encodes those together). Source: xarray's
+    ``backends.common.AbstractWritableDataStore.store``; netCDF-C ``nc_enddef``; HDF5
+    ``H5Pset_chunk_cache`` (a chunk larger than the cache is written directly).
     """
     pieces = _xarray_pieces()
     if pieces is None:
