@@ -283,3 +283,32 @@ def test_the_written_coast_flank_relieved(monkeypatch, tmp_path):
     assert "the flank peak bound 2400 MPa" in lines[0]
     # two variants, each at its torques and between them (the LTE over the range)
     assert all(f == "coast" for f, _, _ in calls) and len(calls) == 4
+
+
+def test_a_relief_refused_for_local_pitting_is_not_analysed_between_the_torques(
+        monkeypatch):
+    """A variant that already misses a hard target (here local pitting: the deeper tip
+    relief lifts the flank peak 1500 → 1700 MPa above the bound 1600) is refused whatever
+    its LTE between the torques, so that range is not analysed (issue 75, speed83): the
+    tip relief is analysed at its two torques only, the root relief kept before it at
+    its torques and between them (its LTE there judged), the later tip-relief start after
+    it too. Independent check: the designs the stand-in analysed, one per call."""
+    seen, fake = seen_designs(_between({40.0: (35.0, 32.0), 60.0: (45.0, 40.0)}))
+    tip = functools.partial(fake, flank_tip=1700.0)
+    targets, setup, chosen = stand_in(monkeypatch, tip, TORQUES)
+    start = dataclasses.replace(chosen(dict(COAST)), case=dict(COAST))
+    seen.clear()
+    lines = []
+    got = dce.checked_coast_edge_peak(start, targets, setup, None, lines.append, dict,
+                                      bound=1600.0, key_prefix=PREFIX)
+    assert got.values == COAST | {"root_relief": 60.0}
+    assert any("tip_relief 22.5 um for the pinion edge misses local pitting" == s.strip()
+               .removeprefix("not kept: the ") for s in lines), lines
+    # the root relief at its torques and between them (within 60: no bisection); the tip
+    # relief on it at its torques only (before: between them too); the later tip-relief
+    # start, refused for no hard target, at its torques and between them
+    assert [{k: v for k, v in d.items() if v != COAST[k]} for d in seen] == [
+        {"root_relief": 60.0}, {"root_relief": 60.0},
+        {"root_relief": 60.0, "tip_relief": 22.5},
+        {"root_relief": 60.0, "tip_relief_start": 0.75},
+        {"root_relief": 60.0, "tip_relief_start": 0.75}]

@@ -131,3 +131,65 @@ def test_write_netcdf_of_a_tree_goes_the_defined_first_way(tmp_path, monkeypatch
     for node in tree.subtree:
         for name, var in node.to_dataset(inherit=False).data_vars.items():
             np.testing.assert_array_equal(back[node.path][name].values, var.values)
+
+
+def _large_tree() -> xr.DataTree:
+    """A tree with variables above the writer's ``UNCACHED_BYTES`` (80 kB floats with
+    missing values, 80 kB integers) beside small ones, and a time coordinate with bounds
+    (xarray's ``cf_encoder`` encodes a bounds variable with its parent's time units)."""
+    rng = np.random.default_rng(7)
+    big = rng.normal(size=(100, 100))
+    big[3, 5] = np.nan
+    times = np.array(["2026-01-01", "2026-01-02", "2026-01-03"], dtype="datetime64[ns]")
+    bounds = np.stack([times, times + np.timedelta64(1, "D")], axis=1)
+    timed = xr.Dataset(
+        {"level": (("time",), np.array([1.0, 2.0, 4.0]), {"units": "mm"}),
+         "time_bnds": (("time", "nv"), bounds)},
+        coords={"time": ("time", times, {"bounds": "time_bnds"})})
+    tree = _tree()
+    tree["ltca/big"] = xr.DataTree(xr.Dataset({
+        "pressure": (("row", "col"), big, {"units": "MPa"}),
+        "count": (("row", "col"), np.arange(10_000, dtype=np.int64).reshape(100, 100),
+                  {"units": "1"})}))
+    tree["timed"] = xr.DataTree(timed)
+    return tree
+
+
+@pytest.mark.parametrize("uncached_bytes", [0, 1 << 16])
+def test_variables_encoded_again_give_xarrays_file(tmp_path, monkeypatch, uncached_bytes):
+    """Independent reference: xarray's ``DataTree.to_netcdf`` of the same tree and
+    encoding. The variables above ``UNCACHED_BYTES`` are encoded a second time when
+    written (all of them at 0, the 80 kB ones at the default): the data read back are
+    identical (exact: the same encoder on the same input) and the layout (order, dtypes,
+    filters, chunking, attributes, the time bounds' units) is the same."""
+    monkeypatch.setattr(tree_write, "UNCACHED_BYTES", uncached_bytes)
+    tree = _large_tree()
+    enc = _encoding(tree)
+    enc["/timed"]["time"] = {"_FillValue": None, "units": "hours since 2026-01-01"}
+    assert write_tree_defined_first(tree, tmp_path / "new.nc", enc)
+    tree.to_netcdf(tmp_path / "old.nc", engine="netcdf4", encoding=enc)
+    with xr.open_datatree(tmp_path / "new.nc") as new, \
+            xr.open_datatree(tmp_path / "old.nc") as old:
+        assert new.load().identical(old.load())
+    assert _layout(tmp_path / "new.nc") == _layout(tmp_path / "old.nc")
+
+
+def test_only_large_variables_bypass_the_chunk_cache(tmp_path, monkeypatch):
+    """The chunk cache is switched off for the variables of at least ``UNCACHED_BYTES``
+    (their data written, compressed, when they are written, not all held until the
+    file closes) and for those only (setting it reopens the HDF5 dataset): the two
+    80 kB variables of the tree, nothing else."""
+    seen = []
+    real = tree_write._uncached
+
+    def spy(target, nbytes):
+        if nbytes >= tree_write.UNCACHED_BYTES:
+            seen.append((target.variable_name, nbytes))
+        return real(target, nbytes)
+
+    monkeypatch.setattr(tree_write, "_uncached", spy)
+    tree = _large_tree()
+    enc = _encoding(tree)
+    enc["/timed"]["time"] = {"_FillValue": None, "units": "hours since 2026-01-01"}
+    assert write_tree_defined_first(tree, tmp_path / "t.nc", enc)
+    assert sorted(seen) == [("count", 80_000), ("pressure", 80_000)]

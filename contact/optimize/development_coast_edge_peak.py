@@ -43,6 +43,7 @@ from contact.optimize.development_edge_peak import (
     pitting_lost,
 )
 from contact.optimize.development_evaluate import KeptTeeth
+from contact.optimize.development_keep import SOFT_TARGETS
 from contact.optimize.development_range_lte import SAME_PEAK
 from contact.optimize.development_relief_lte import checked_relief_variants
 from contact.optimize.development_result import DevelopmentEvaluation
@@ -109,7 +110,9 @@ def checked_coast_edge_peak(best: DevelopmentEvaluation, targets: DevelopmentTar
     coast``'s ``lte_range``, :func:`~contact.optimize.development_range_lte.range_lte`) is
     above :data:`~contact.study.verdicts.LTE_LIMIT` is not kept where the design it would
     replace is within it there, nor where it is above the replaced design's by more than
-    :data:`~contact.optimize.development_range_lte.SAME_PEAK` (said with both numbers).
+    :data:`~contact.optimize.development_range_lte.SAME_PEAK` (said with both numbers). Its
+    LTE between the torques is not analysed where it already misses a target beyond
+    :data:`~contact.optimize.development_keep.SOFT_TARGETS` (it is refused either way).
 
     Parameters
     ----------
@@ -154,6 +157,11 @@ def checked_coast_edge_peak(best: DevelopmentEvaluation, targets: DevelopmentTar
         # is above the kept design's by more than SAME_PEAK (the LTE's stated round-off):
         # the FH 20x24 Σ 100° remedied's tip relief back to 15 um went 80.7 -> 94.4 urad
         gone = pitting(kept, e)
+        if any(k not in SOFT_TARGETS for k in gone):  # refused whatever its LTE between
+            # the torques (kept_why and verdict_lost both refuse on a target beyond the
+            # soft ones): that range's analyses not run (issue 75, speed83: ≈ 0.2 s a
+            # variant; the refusal's line then names the targets above only)
+            return gone
         peak = coast_range_peak(e, setup, teeth, key_prefix)[0]
         if peak > LTE_LIMIT:
             was = coast_range_peak(kept, setup, teeth, key_prefix)[0]
