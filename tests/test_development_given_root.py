@@ -431,7 +431,7 @@ def test_the_development_writes_the_larger_fillet_and_says_it(monkeypatch):
 
         monkeypatch.setattr(dg, "checked_given_root", variants)
         s = {"torques": [264.7, 1765.0], "source": "[synthesis] design_torque",
-             "given_root": (1.246, 1.3, "gear")}
+             "given_root": (1.246, 1.3, "gear"), "fe_level_why": "root stress limits"}
         out = dev._given_root_bearing(written, TARGETS, s, None, lambda line: None, "placed",
                                       write, lambda c: calls.append(("built", c)), 1.246,
                                       "FAIL at 1765", "concave", True, None,
@@ -449,3 +449,7 @@ def test_the_development_writes_the_larger_fillet_and_says_it(monkeypatch):
             assert calls[0][1:] == ("given root", 1.28, "placed 2.36")
         assert "the blade edge radius made the largest the slots allow" in s["source"]
         assert "S_F,FE 1.25 -> 1.45 >= S_Fmin 1.3" in s["source"]
+        # (the variants' stand-in keeps none: the edge radius alone said)
+        assert s["fe_level_why"] == (
+            "root stress limits, of the design before the gear root's step; the blade "
+            "edge radius made the largest the slots allow, S_F,FE 1.45 on it")

@@ -786,6 +786,9 @@ def _given_root_bearing(written: tuple, targets: DevelopmentTargets, setup: dict
         how = f"the blade edge radius made the largest the slots allow and {how[4:]}"
     setup["source"] = (f"{setup['source']}; {how} for the gear root, which binds there: "
                        f"S_F,FE {s0:.2f} -> {safety:.2f} >= S_Fmin {s_min:g}")
+    if setup.get("fe_level_why"):  # the FE level's note was of the design before
+        setup["fe_level_why"] = (f"{setup['fe_level_why']}, of the design before the gear "
+                                 f"root's step; {how}, S_F,FE {safety:.2f} on it")
     return kept, developed, case, report, safety, ""
 
 
