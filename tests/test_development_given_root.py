@@ -390,11 +390,12 @@ def test_a_larger_fillet_that_loses_a_target_or_no_root_is_not_kept(stubbed):
 def test_the_development_writes_the_larger_fillet_and_says_it(monkeypatch):
     """``develop``'s wiring of the fillet (:func:`contact.optimize.development.
     _given_root_bearing` with ``edged``), the steps and the synthesis replaced: the edge
-    radius 2.36 mm kept at S_F,FE 1.45 >= 1.3 with every target met: the pattern's
-    variants not tried, the basic design written with ``[synthesis] edge_radius`` 2.36,
-    the source saying so; kept at 1.28 (short of S_Fmin): the pattern's variants tried
-    from it, with its synthesis (``edged(2.36)``); not kept: the variants from the written
-    design, the note saying both."""
+    radius 2.36 mm kept at S_F,FE 1.45 >= 1.3, with every target met or with the centre v
+    missed as written (the 8×47): the pattern's variants not tried (the root holds), the
+    basic design written with ``[synthesis] edge_radius`` 2.36, the source saying so; kept
+    at 1.28 (short of S_Fmin): the pattern's variants tried from it, with its synthesis
+    (``edged(2.36)``); not kept: the variants from the written design, the note saying
+    both."""
     from pathlib import Path
 
     from contact.optimize import development as dev
@@ -420,6 +421,7 @@ def test_the_development_writes_the_larger_fillet_and_says_it(monkeypatch):
     trial = dg.RootTrial("edge radius 2.36 mm (was 1.574; the largest the slots allow)",
                          1.45, "gear", (), 0.636)
     for edge_out, expect_variants in (((edged_met, 1.45, trial), False),
+                                      ((edged, 1.45, trial), False),
                                       ((edged, 1.28, trial), True),
                                       ((best, 1.246, trial), True)):
         calls.clear()

@@ -758,7 +758,7 @@ def _given_root_bearing(written: tuple, targets: DevelopmentTargets, setup: dict
             edged(radius), root_with(widened))
         if start is not best:
             edge_kept, developed, placed = True, widened, edged(radius)
-    if edge_kept and s_start >= s_min and start.full is not None and start.full[2]:
+    if edge_kept and s_start >= s_min:  # the root holds: the pattern is not its lever
         kept, s_kept, trials = start, s_start, []
     else:
         kept, s_kept, trials = checked_given_root(start, s_start, s_min, targets, setup,
