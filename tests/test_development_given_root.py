@@ -113,6 +113,7 @@ def stubbed(monkeypatch):
     monkeypatch.setattr(dg, "said_variant", said)
     monkeypatch.setattr(dg, "kept_why", lambda *a, **k: "")
     state["root_of"] = root_of
+    state["monkeypatch"] = monkeypatch
     return state
 
 
@@ -287,3 +288,160 @@ def test_the_development_writes_the_kept_bearing_and_says_it(monkeypatch):
         assert out[4] == again[0] and out[5].startswith(text)
         if not again[1]:
             assert out[5] == "" and "S_F,FE 1.25 -> 1.31 >= S_Fmin 1.3" in s["source"]
+
+
+# --------------------------------------------------------------------------- the fillet
+def test_the_largest_edge_radius_is_tried_where_the_basic_file_gives_none():
+    """The rule of :func:`larger_edge_radius`: the 8×47's largest 2.36 mm against the
+    written default 1.574 mm (0.25 m_mn) is tried; not where the basic file gives a
+    radius (the user's tool), nor where the largest is within EDGE_GAIN (5 %) of the
+    written one (1.65 mm against 1.574: 4.8 % larger); bad input named."""
+    assert dg.larger_edge_radius(1.574, 2.36, False) == 2.36
+    assert dg.larger_edge_radius(1.574, 2.36, True) is None
+    assert dg.larger_edge_radius(1.574, 1.65, False) is None
+    assert dg.larger_edge_radius(1.574, 1.6527, False) == 1.6527  # 1.05 x 1.574 = 1.6527
+    with pytest.raises(InputError, match="written edge radius"):
+        dg.larger_edge_radius(0.0, 2.36, False)
+    with pytest.raises(InputError, match="largest edge radius"):
+        dg.larger_edge_radius(1.574, math.nan, False)
+
+
+def test_the_edge_radius_to_try_of_a_basic_design():
+    """:func:`edge_radius_to_try` on the 8×47's basic file (no edge radius given): 2.36
+    mm, the pinion's slot (tests/test_synthesis_edge_radius.py); with ``[synthesis]
+    edge_radius`` given, or a face-hobbed design (z0 13), none."""
+    from pathlib import Path
+
+    from geometry.synthesis.basic_design import load_basic
+
+    root = Path(__file__).resolve().parents[1]
+    basic = load_basic(root / "benchmarks" / "data" / "unseen_designs"
+                       / "truck_hypoid_8x47_a45.toml")
+    assert dg.edge_radius_to_try(basic, 1.574) == 2.36
+    given = dataclasses.replace(basic, options=dataclasses.replace(basic.options,
+                                                                   edge_radius=1.574))
+    assert dg.edge_radius_to_try(given, 1.574) is None
+    fh = load_basic(root / "cases" / "basic" / "kolivand2009_fh_12x41.toml")
+    assert dg.edge_radius_to_try(fh, 0.5) is None
+
+
+def _edged(stubbed, sf, centre_v=None, plastic=0.0):
+    """:func:`checked_edge_radius` with the analysis replaced: the written bearing at the
+    larger radius with ``centre_v`` (default the written design's) and ``plastic``, its
+    root safety ``sf``."""
+    best = _evaluation(WRITTEN, stubbed)
+    v = V0 if centre_v is None else centre_v
+
+    def said(base, values, stage, label, targets, setup, teeth, say, placed, **kw):
+        stubbed["analysed"].append((dict(values), kw.get("key_prefix")))
+        ms = _metrics(v, plastic)
+        full = development_score(ms, TARGETS, GRID, centre_v=SETUP["centre_v"],
+                                 pressure_limit=2400.0)
+        return DevelopmentEvaluation(0, dict(values), ms, full[0], full[1], full[2], "",
+                                     0.0, case=types.SimpleNamespace(name="edged"),
+                                     full=full, checked=True, stage=stage)
+
+    stubbed["monkeypatch"].setattr(dg, "said_variant", said)
+    lines: list[str] = []
+    out = dg.checked_edge_radius(best, 1.246, 2.36, 1.574, TARGETS, dict(SETUP), None,
+                                 lines.append, lambda v: None, lambda v: (sf, "gear"))
+    return best, out, lines
+
+
+def test_a_larger_fillet_that_loses_no_target_is_kept(stubbed):
+    """The written bearing (its prescriptions, the pinion tooth keyed apart by the radius)
+    with the edge radius 2.36 mm: S_F,FE 1.246 -> 1.45 (the 8×47's synthesize with 2.36
+    mm read 1.45 on its own development), the same pattern: kept, and said."""
+    best, (kept, sf, trial), lines = _edged(stubbed, 1.45)
+    assert stubbed["analysed"] == [(WRITTEN, ("edge_radius", 2.36))]
+    assert kept is not best and kept.values == WRITTEN and sf == 1.45
+    assert trial.safety == 1.45 and trial.member == "gear" and not trial.missed
+    assert any("edge radius 2.36 mm (was 1.574" in line and "S_F,FE 1.450" in line
+               for line in lines)
+    text = dg.edge_text(trial, True)
+    assert text.startswith("a larger fillet was tried (the blade's edge radius 2.36 mm")
+    assert "S_F,FE 1.45" in text and text.endswith("kept")
+
+
+def test_a_larger_fillet_that_loses_a_target_or_no_root_is_not_kept(stubbed):
+    """Plastic at the design torque (a target the written design met): not kept, its root
+    safety said; a root safety no higher (1.248 < 1.246 + ROOT_GAIN, the same pattern):
+    not kept; a root not computed (NaN): not kept."""
+    best, (kept, sf, trial), _ = _edged(stubbed, 1.45, plastic=0.025)
+    assert kept is best and sf == 1.246 and trial.missed == ("plastic",)
+    assert "misses plastic" in dg.edge_text(trial, False)
+    best, (kept, sf, _), _ = _edged(stubbed, 1.248)
+    assert kept is best and sf == 1.246
+    best, (kept, sf, trial), _ = _edged(stubbed, math.nan)
+    assert kept is best and "S_F,FE not computed" in dg.edge_text(trial, False)
+    assert dg.edge_text(None, False) == ""
+
+
+def test_the_development_writes_the_larger_fillet_and_says_it(monkeypatch):
+    """``develop``'s wiring of the fillet (:func:`contact.optimize.development.
+    _given_root_bearing` with ``edged``), the steps and the synthesis replaced: the edge
+    radius 2.36 mm kept at S_F,FE 1.45 >= 1.3, with every target met or with the centre v
+    missed as written (the 8×47): the pattern's variants not tried (the root holds), the
+    basic design written with ``[synthesis] edge_radius`` 2.36, the source saying so; kept
+    at 1.28 (short of S_Fmin): the pattern's variants tried from it, with its synthesis
+    (``edged(2.36)``); not kept: the variants from the written design, the note saying
+    both."""
+    from pathlib import Path
+
+    from contact.optimize import development as dev
+    from geometry.synthesis.basic_design import load_basic
+
+    basic = load_basic(Path(__file__).resolve().parents[1] / "benchmarks" / "data"
+                       / "unseen_designs" / "truck_hypoid_8x47_a45.toml")
+    best = _evaluation(WRITTEN, {"plastic_above_v": 0.0, "tip_clears": 30.0})
+    edged = dataclasses.replace(best, values=dict(WRITTEN), stage="given root")
+    assert edged.full[2] is False  # the written design misses its centre v
+    edged_met = dataclasses.replace(edged, full=(0.0, edged.full[1], True))
+    written = (best, basic, "case", "report")
+    calls: list = []
+    monkeypatch.setattr(dev, "with_flank_options", lambda b, f, v: b)
+    monkeypatch.setattr(dev, "_edge_radius_of", lambda case: 1.574)
+    monkeypatch.setattr(dg, "edge_radius_to_try", lambda b, current: 2.36)
+    monkeypatch.setattr(dev, "given_torque_root", lambda c, s, say: (1.45, ""))
+
+    def write(b, **kw):
+        calls.append(("write", b.options.edge_radius))
+        return "case2", "report2"
+
+    trial = dg.RootTrial("edge radius 2.36 mm (was 1.574; the largest the slots allow)",
+                         1.45, "gear", (), 0.636)
+    for edge_out, expect_variants in (((edged_met, 1.45, trial), False),
+                                      ((edged, 1.45, trial), False),
+                                      ((edged, 1.28, trial), True),
+                                      ((best, 1.246, trial), True)):
+        calls.clear()
+        monkeypatch.setattr(dg, "checked_edge_radius", lambda *a, r=edge_out: r)
+
+        def variants(start, s0, s_min, targets, setup, teeth, say, placed, root_of, slope):
+            calls.append(("variants", start.stage, s0, placed))
+            return start, s0, []
+
+        monkeypatch.setattr(dg, "checked_given_root", variants)
+        s = {"torques": [264.7, 1765.0], "source": "[synthesis] design_torque",
+             "given_root": (1.246, 1.3, "gear"), "fe_level_why": "root stress limits"}
+        out = dev._given_root_bearing(written, TARGETS, s, None, lambda line: None, "placed",
+                                      write, lambda c: calls.append(("built", c)), 1.246,
+                                      "FAIL at 1765", "concave", True, None,
+                                      lambda r: f"placed {r}")
+        if edge_out[0] is best:  # not kept: the variants from the written design
+            assert calls == [("variants", "", 1.246, "placed")]
+            assert out[:5] == (*written, 1.246)
+            assert out[5].startswith("FAIL at 1765; a larger fillet was tried")
+            assert out[5].endswith("not kept")
+            continue
+        assert out[1].options.edge_radius == 2.36 and out[2:4] == ("case2", "report2")
+        assert calls[-2:] == [("write", 2.36), ("built", "case2")]
+        assert (calls[0][0] == "variants") == expect_variants
+        if expect_variants:
+            assert calls[0][1:] == ("given root", 1.28, "placed 2.36")
+        assert "the blade edge radius made the largest the slots allow" in s["source"]
+        assert "S_F,FE 1.25 -> 1.45 >= S_Fmin 1.3" in s["source"]
+        # (the variants' stand-in keeps none: the edge radius alone said)
+        assert s["fe_level_why"] == (
+            "root stress limits, of the design before the gear root's step; the blade "
+            "edge radius made the largest the slots allow, S_F,FE 1.45 on it")

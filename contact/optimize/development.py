@@ -106,6 +106,7 @@ design_torque_of     the torque the bearing is checked at
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import logging
 import math
@@ -558,7 +559,12 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                               and coast.best is not None, built=built, say=say,
                               setup=setup),
             root_safety, given_root_text, flank, root_stress,
-            evaluate.slopes.get(bearing_key(best.values)))
+            evaluate.slopes.get(bearing_key(best.values)),
+            lambda radius: functools.partial(placed_case, _with_edge_radius(basic, radius),
+                                             flank, memo))
+        # a larger fillet kept: the coast flank's steps below synthesise with it too
+        pre_coast, basic = (_with_edge_radius(b, developed.options.edge_radius)
+                            for b in (pre_coast, basic))
     # the coast flank at its own design torque as `ltca run --flank coast` analyses it,
     # the coast design torque lowered to what its developed bearing carries (flank static
     # strength, no plastic segment, root stress) where that is less
@@ -706,14 +712,24 @@ def _given_root_bearing(written: tuple, targets: DevelopmentTargets, setup: dict
                         teeth: KeptTeeth, say: Callable[[str], None],
                         placed: Callable, write: Callable[[BasicDesign], tuple],
                         built: Callable[[Case], Any], safety: float, text: str, flank: str,
-                        root_stress: bool, slope: float | None) -> tuple:
-    """The written (drive design, basic design, case, report, S_F,FE, note) with the drive
-    bearing of :func:`~contact.optimize.development_given_root.checked_given_root` where it
-    keeps one (written, its FE models built, its root stress at the given torque checked
-    again as ``ltca run`` judges it), the note extended by what was tried. ``written``
-    itself with ``safety`` and ``text`` where the root is not the binding limit
-    (``setup["given_root"]`` unset) or nothing was tried."""
-    from contact.optimize.development_given_root import checked_given_root, tried_text
+                        root_stress: bool, slope: float | None,
+                        edged: Callable[[float], Callable] | None = None) -> tuple:
+    """The written (drive design, basic design, case, report, S_F,FE, note) with the
+    larger fillet of :func:`~contact.optimize.development_given_root.checked_edge_radius`
+    and the drive bearing of :func:`~contact.optimize.development_given_root.
+    checked_given_root` where they keep one (written, its FE models built, its root stress
+    at the given torque checked again as ``ltca run`` judges it), the note extended by
+    what was tried. ``written`` itself with ``safety`` and ``text`` where the root is not
+    the binding limit (``setup["given_root"]`` unset) or nothing was tried. ``edged``: the
+    synthesis as written (``placed``) with another edge radius [mm] given; None: the edge
+    radius is not tried."""
+    from contact.optimize.development_given_root import (
+        checked_edge_radius,
+        checked_given_root,
+        edge_radius_to_try,
+        edge_text,
+        tried_text,
+    )
     from contact.optimize.development_root import decided_case, root_safety
 
     best, developed, case, report = written
@@ -723,31 +739,75 @@ def _given_root_bearing(written: tuple, targets: DevelopmentTargets, setup: dict
     s0, s_min, _ = given
     torques = [float(t) for t in setup["torques"]]
 
-    def root_of(values):
-        c = write(with_flank_options(developed, flank, values), progress=None)[0]
-        s, _, member = root_safety(_root_tree_of(decided_case(c, setup), torques))
-        return float(s[-1]), member
+    def root_with(basic: BasicDesign):
+        def root_of(values):
+            c = write(with_flank_options(basic, flank, values), progress=None)[0]
+            s, _, member = root_safety(_root_tree_of(decided_case(c, setup), torques))
+            return float(s[-1]), member
+        return root_of
 
-    kept, s_kept, trials = checked_given_root(best, s0, s_min, targets, setup, teeth, say,
-                                              placed, root_of, slope)
+    # the fillet first: the largest edge radius the slots and the clearance allow, the
+    # bearing as written (development_given_root.larger_edge_radius)
+    start, s_start, edge, edge_kept = best, s0, None, False
+    radius = (edge_radius_to_try(developed, _edge_radius_of(case)) if edged is not None
+              else None)
+    if radius is not None:
+        widened = _with_edge_radius(developed, radius)
+        say(f"development: the given design torque {plain_number(torques[1])} N m is above "
+            f"the written bearing's root capacity (S_F,FE {s0:.3f} < {s_min:g}); the "
+            f"largest edge radius the slots allow tried (the fillet)")
+        start, s_start, edge = checked_edge_radius(
+            best, s0, radius, _edge_radius_of(case), targets, setup, teeth, say,
+            edged(radius), root_with(widened))
+        if start is not best:
+            edge_kept, developed, placed = True, widened, edged(radius)
+    if edge_kept and s_start >= s_min:  # the root holds: the pattern is not its lever
+        kept, s_kept, trials = start, s_start, []
+    else:
+        kept, s_kept, trials = checked_given_root(start, s_start, s_min, targets, setup,
+                                                  teeth, say, placed, root_with(developed),
+                                                  slope)
+    fillet = edge_text(edge, edge_kept)
     if kept is best:
-        tried = tried_text(trials, s0, s_min, False)
+        tried = "; ".join(t for t in (fillet, tried_text(trials, s0, s_min, False)) if t)
         return (*written, safety, f"{text}; {tried}" if tried else text)
     developed = with_flank_options(developed, flank, kept.values)
     case, report = write(developed)
     built(case)
     setup.pop("given_root", None)
     safety, again = given_torque_root(case, setup, say)
-    tried = tried_text(trials, s_kept, s_min, True)
+    tried = "; ".join(t for t in (fillet, tried_text(trials, s_kept, s_min, kept is not start))
+                      if t)
     if again:
         return kept, developed, case, report, safety, f"{again}; {tried}"
     say(f"development: {tried}; it holds the given design torque "
         f"{plain_number(torques[1])} N m")
     # the design torque's source line says it (the note on a failing root is gone)
-    setup["source"] = (f"{setup['source']}; the drive pattern centred lower for the gear "
-                       f"root, which binds there: S_F,FE {s0:.2f} -> {safety:.2f} >= "
-                       f"S_Fmin {s_min:g}")
+    how = ("the blade edge radius made the largest the slots allow"
+           if kept is start else "the drive pattern centred lower")
+    if edge_kept and kept is not start:
+        how = f"the blade edge radius made the largest the slots allow and {how[4:]}"
+    setup["source"] = (f"{setup['source']}; {how} for the gear root, which binds there: "
+                       f"S_F,FE {s0:.2f} -> {safety:.2f} >= S_Fmin {s_min:g}")
+    if setup.get("fe_level_why"):  # the FE level's note was of the design before
+        setup["fe_level_why"] = (f"{setup['fe_level_why']}, of the design before the gear "
+                                 f"root's step; {how}, S_F,FE {safety:.2f} on it")
     return kept, developed, case, report, safety, ""
+
+
+def _edge_radius_of(case: Case) -> float:
+    """[mm] the written case's blade edge radius (the gear's drive blade: the synthesis
+    gives both members one)."""
+    return float(case.gear.flank("concave").blade.edge_radius)
+
+
+def _with_edge_radius(basic: BasicDesign, radius: float) -> BasicDesign:
+    """``basic`` with ``[synthesis] edge_radius`` = ``radius`` [mm] (``basic`` itself where
+    it gives that one)."""
+    if basic.options.edge_radius == radius:
+        return basic
+    return dataclasses.replace(basic, options=dataclasses.replace(basic.options,
+                                                                  edge_radius=radius))
 
 
 def _root_tree_of(case: Case, torques: list[float]):

@@ -5,7 +5,12 @@ A design torque the basic file gives (``[synthesis]`` or ``[rating] design_torqu
 stands as given: the development does not lower it
 (:func:`contact.optimize.development_root.given_torque_root` checks the root stress of
 the written case there and says when ``ltca run`` will rate it FAIL). Where the root is
-the binding limit, the bearing itself is the lever left: the FE root stress follows where
+the binding limit, the fillet is the first lever (:func:`checked_edge_radius`: the written
+bearing with the largest blade edge radius the point widths and the clearance allow,
+:func:`geometry.synthesis.edge_radius.largest_edge_radius`, where the basic file gives
+none; on the 8×47 2.36 mm against the default 1.574 took the gear's FE fillet stress 657 →
+576 MPa, S_F,FE 1.246 → 1.40, the bearing unchanged), then the bearing itself: the FE
+root stress follows where
 the load sits on the tooth height. :func:`checked_given_root` tries the drive pattern
 centred lower by the pinion blade's pressure-angle change (the pattern's height lever,
 :data:`~contact.optimize.development_targets.HEIGHT_NAME`), alone and with a longer tip
@@ -70,6 +75,10 @@ LATER_START = 0.1
 
 #: [1] the least rise of S_F,FE for which a variant replaces the written design
 ROOT_GAIN = 0.005
+
+#: [1] the least ratio of the largest allowed edge radius to the written one for which
+#: :func:`larger_edge_radius` tries it (a few per cent is within the FE model's accuracy)
+EDGE_GAIN = 1.05
 
 
 @dataclass(frozen=True)
@@ -187,6 +196,131 @@ def _later_start(values: Mapping[str, float], bounds: Mapping[str, tuple[float, 
     v = dict(values) | {HEIGHT_NAME: blade, "tip_relief": tip, "tip_relief_start": start}
     return v, (f"centred lower ({HEIGHT_NAME} {blade:.3g} deg, aimed at v {aim:.2f}), tip "
                f"relief {tip:.3g} um from {start:.3g}")
+
+
+def larger_edge_radius(current: float, largest: float, given: bool) -> float | None:
+    """The blade edge radius :func:`checked_edge_radius` tries: the largest the design's
+    point widths and clearance allow, where the basic file gives none (the synthesis'
+    default ``min(0.25 m_mn, 0.4 W)`` written) and it is at least :data:`EDGE_GAIN` × the
+    written one.
+
+    Parameters
+    ----------
+    current : float — [mm] the written case's edge radius (> 0)
+    largest : float — [mm] :func:`geometry.synthesis.edge_radius.largest_edge_radius`'s
+    given : bool — whether the basic file gives ``[synthesis] edge_radius`` (the user's
+        tool: kept)
+
+    Returns
+    -------
+    float or None — [mm] ``largest``; None where not tried
+
+    Raises
+    ------
+    InputError
+        ``current`` not > 0 or a radius not finite, named.
+
+    Notes
+    -----
+    Source: the fillet radius ρ_F of the root's notch grows with the tool's edge radius
+    ρ_a0 (ISO 10300-3:2014, the stress correction factor Y_S), and a gear engineer takes
+    the largest the blade point and the clearance allow first where the root binds
+    (Stadtfeld, *Gleason Bevel Gear Technology*, 2014; AGMA 929-A06). Measured on the 8×47
+    (docs/own_gear_set.md, "The cutter edge radius as the root's lever").
+    """
+    if not (math.isfinite(current) and current > 0.0):
+        raise InputError(f"edge radius: the written edge radius must be finite and > 0 mm, "
+                         f"got {current}")
+    if not math.isfinite(largest):
+        raise InputError(f"edge radius: the largest edge radius must be finite, got {largest}")
+    if given or largest < EDGE_GAIN * current:
+        return None
+    return float(largest)
+
+
+def edge_radius_to_try(basic: Any, current: float) -> float | None:
+    """[mm] :func:`larger_edge_radius` of a developed basic design whose written case has
+    the edge radius ``current`` [mm]: the largest of
+    :func:`geometry.synthesis.edge_radius.largest_edge_radius` (the basic file's blade
+    angles, else the generated pressure angles); None where not tried (a face-hobbed
+    design, a radius the basic file gives, one not larger by :data:`EDGE_GAIN`, a slot
+    that closes: logged)."""
+    from geometry.synthesis.edge_radius import largest_edge_radius
+
+    opt = basic.options
+    if opt.edge_radius is not None or basic.design.z0 != 0:
+        return None
+    try:
+        limit = largest_edge_radius(basic.blank(), opt.blade_angle_drive,
+                                    opt.blade_angle_coast)
+        return larger_edge_radius(current, limit.radius, False)
+    except InputError as exc:
+        log.info("development given root: no larger edge radius (%s)", exc)
+        return None
+
+
+def checked_edge_radius(best: DevelopmentEvaluation, safety: float, radius: float,
+                        current: float, targets: DevelopmentTargets,
+                        setup: Mapping[str, Any], teeth: KeptTeeth | None,
+                        say: Callable[[str], None],
+                        placed: Callable[[Mapping[str, float]], Case],
+                        root_of: Callable[[Mapping[str, float]], tuple[float, str]]
+                        ) -> tuple[DevelopmentEvaluation, float, RootTrial]:
+    """The written drive design with the blade edge radius ``radius`` (both members'
+    blades, the prescriptions as written): checked at ``ltca run``'s sampling, its FE root
+    safety at the given torque computed (the lever's effect, said), kept where it misses no
+    target the written design met, its S_F,FE is higher by :data:`ROOT_GAIN` (or within
+    it while more targets are met) and it is tolerant.
+
+    Parameters
+    ----------
+    best : DevelopmentEvaluation — the written drive design, checked
+    safety : float — [1] its S_F,FE at the given torque
+    radius, current : float — [mm] the edge radius tried (:func:`larger_edge_radius`) and
+        the written one
+    targets, setup, teeth, say
+        As :func:`checked_given_root`'s.
+    placed : callable values → Case
+        The synthesis as written with the edge radius ``radius``.
+    root_of : callable values → (S_F,FE [1], member)
+        The weaker member's FE root safety at the given torque of the case written with
+        the edge radius ``radius`` and the drive prescriptions ``values``.
+
+    Returns
+    -------
+    (DevelopmentEvaluation, float, RootTrial)
+        The design kept (``best`` where not) and its S_F,FE, and the trial for the note.
+
+    Raises
+    ------
+    Nothing: a synthesis or analysis that fails is said and the written design stands.
+
+    Notes
+    -----
+    Source: :func:`larger_edge_radius`; the keep rule of :func:`checked_given_root`.
+    """
+    label = f"edge radius {radius:.3g} mm (was {current:.4g}; the largest the slots allow)"
+    e = said_variant(best, best.values, "given root", label, targets, setup, teeth, say,
+                     placed, key_prefix=("edge_radius", float(radius)))
+    if e is None or e.full is None or e.metrics is None:
+        return best, safety, RootTrial(label, math.nan, "", ("analysis",), math.nan)
+    gone = tuple(lost_targets(best, e))
+    cv = float(e.metrics["pattern_centre_v"][0])
+    try:
+        sf, member = root_of(best.values)
+    except Exception as exc:  # said, never fatal: the written design stands
+        raise_if_interrupted(exc)
+        log.info("development given root: %s not computed: %s", label, exc)
+        sf, member = math.nan, ""
+    trial = RootTrial(label, sf, member, gone, cv)
+    say(f"  {label}: S_F,FE {sf:.3f} ({member or 'n/a'}) at the given torque"
+        + (f"; misses {', '.join(gone)}" if gone else ""))
+    if gone or not _better(best, safety, e, sf):
+        return best, safety, trial
+    if kept_why(best, e, targets, setup, teeth, say, label, better=lambda *_: True,
+                lost=lost_targets):
+        return best, safety, trial
+    return e, sf, trial
 
 
 def checked_given_root(best: DevelopmentEvaluation, safety: float, s_min: float,
@@ -349,3 +483,17 @@ def tried_text(trials: list[RootTrial], safety: float, s_min: float, kept: bool)
                        f"kept (S_F,FE {safety:.2f}, S_Fmin {s_min:g})")
     return head + ("; none kept (each raising the root safety misses a target the "
                    f"written design meets, S_Fmin {s_min:g})")
+
+
+def edge_text(trial: RootTrial | None, kept: bool) -> str:
+    """The sentence of :func:`checked_edge_radius`'s trial, for the note on the given
+    torque: its S_F,FE, the targets it misses and whether it was kept; empty where none was
+    tried."""
+    if trial is None:
+        return ""
+    sf = (f"S_F,FE {trial.safety:.2f}" if math.isfinite(trial.safety)
+          else "S_F,FE not computed")
+    cv = f"centre v {trial.centre_v:.2f}, " if math.isfinite(trial.centre_v) else ""
+    miss = f", misses {', '.join(trial.missed)}" if trial.missed else ""
+    return (f"a larger fillet was tried (the blade's {trial.label}): {cv}{sf}{miss}; "
+            + ("kept" if kept else "not kept"))
