@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import types
 
 import numpy as np
 import pytest
@@ -335,11 +336,8 @@ def _edged(stubbed, sf, centre_v=None, plastic=0.0):
     def said(base, values, stage, label, targets, setup, teeth, say, placed, **kw):
         stubbed["analysed"].append((dict(values), kw.get("key_prefix")))
         ms = _metrics(v, plastic)
-        full = development_score(ms, TARGETS, GRID, centre_v=SETUP["centre_v"],
-                                 pressure_limit=2400.0)
-        return DevelopmentEvaluation(0, dict(values), ms, full[0], full[1], full[2], "",
-                                     0.0, case=types.SimpleNamespace(name="edged"),
-                                     full=full, checked=True, stage=stage)
+        ev = law_evaluation(values, ms, TARGETS, SETUP["centre_v"])
+        return dataclasses.replace(ev, case=types.SimpleNamespace(name="edged"), stage=stage)
 
     stubbed["monkeypatch"].setattr(dg, "said_variant", said)
     lines: list[str] = []
