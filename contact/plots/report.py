@@ -298,8 +298,9 @@ def _lte_between(lt: xr.Dataset | None) -> list[dict]:
     alone = np.asarray(lt["lte_range_source"].values) == 1
     torque = np.asarray(lt["lte_torque"].values, float)[alone]
     value = np.asarray(lt["lte_range_peak_to_peak"].values, float)[alone]
+    # the torque as `ltca run`'s line writes it (plain_number)
     return [{"torque": float(t), "value": float(v), "text": _cell(float(v), 1)["text"],
-             "torque_text": _cell(float(t), 1)["text"]}
+             "torque_text": plain_number(float(t))}
             for t, v in zip(torque, value, strict=True)]
 
 
