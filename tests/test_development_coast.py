@@ -870,6 +870,28 @@ def test_a_coast_peak_that_set_the_coast_torque_gets_a_lighter_tip_relief(monkey
     assert seen == []
 
 
+def test_the_coast_peak_relief_line_names_the_criterion_the_peak_failed():
+    """peak_relief_text: round 23's 7x43 (given 0.8 of its ISO capacity) printed "coast
+    flank's peak 1703 MPa at 105.8 N m set its design torque 57.1 N m" while every summary
+    line gives the flank's limit 2400 MPa — the peak was below it; the criterion was the
+    pinion's local pitting safety S_H,loc 0.86 < 1. The line now names it (the check's own
+    ``failures`` phrase, the numbers of the CoastCheck given: exact text), and the static
+    strength where that is what the peak exceeded."""
+    from contact.optimize.development_coast import CoastCapacity
+    from contact.optimize.development_coast_flank import peak_relief_text
+
+    first = CoastCheck(105.8, 1703.0, LIMIT, pitting_safety=0.86, s_h_min=1.0,
+                       pitting_member="pinion")
+    cap = CoastCapacity(57.1, 105.8, (first,), "", True)
+    line = peak_relief_text(first, cap)
+    assert line == ("development: coast flank's peak 1703 MPa at 105.8 N m (local pitting "
+                    "safety S_H,loc 0.86 (pinion) below S_Hmin 1) set its design torque "
+                    "57.1 N m: a lighter tip relief")
+    over = CoastCheck(300.0, 2650.0, LIMIT)
+    line = peak_relief_text(over, CoastCapacity(250.0, 300.0, (over,), "", True))
+    assert "(flank peak pressure 2650 MPa above the static strength 2400 MPa) set its" in line
+
+
 def test_a_coast_pattern_too_long_gets_the_length_step_on_the_coast_flank(monkeypatch):
     """checked_length on the coast flank (``flank="coast"``): the spiral bevel 13x39 at
     Σ 80°'s coast flank developed again at 48.9 / 197 N m (path −45°, ellipse 0.55; ``ltca

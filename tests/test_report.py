@@ -14,6 +14,7 @@ import re
 import html5lib
 import numpy as np
 import pytest
+import xarray as xr
 
 from contact.cli import main
 from contact.ltca.summary import edge_load_share
@@ -151,6 +152,31 @@ def test_a_summary_column_is_added_in_one_place(run_files, monkeypatch):
     cells = [c for c in doc.findall(".//h:table[@id='summary-table']//h:td", NS)
              if c.get("data-key") == "root_stress_max"]
     assert len(cells) == tree["ltca"].sizes["torque"] and all(c.text == "–" for c in cells)
+
+
+def test_the_lte_between_the_torques_is_on_the_page_as_in_the_file(run_files):
+    """The LTE p-p the ``lte_range`` step analysed between the run's torques (which the
+    verdict judges, and ``ltca run`` prints under its table) is on the page, each value and
+    torque equal to the file's ``/ltca/lte_range_peak_to_peak`` where ``lte_range_source``
+    is 1 (exact: the page carries the file's float, its text to 0.05 µrad). Round 23: the
+    13x39's report showed 48.5 µrad at its design torque and not the 51.6 µrad between
+    its torques. A file without them: no paragraph."""
+    from contact.plots.report import render_report
+
+    tree = read_netcdf(run_files[0], tree=True)
+    lt = tree["ltca"].to_dataset()
+    alone = lt["lte_range_source"].values == 1
+    assert alone.any()  # the quick run's 50/250 N·m have torques between them
+    doc = _parse(render_report(tree, figures=[]))
+    spans = doc.findall(".//h:p[@id='lte-between']/h:span", NS)
+    assert [float(x.get("data-torque")) for x in spans] == list(lt["lte_torque"].values[alone])
+    values = lt["lte_range_peak_to_peak"].values[alone]
+    assert [float(x.get("data-value")) for x in spans] == list(values)
+    for x, v in zip(spans, values, strict=True):
+        assert abs(float(x.text.split(" ")[0]) - v) <= 0.05 + 1e-12
+    lean = tree.copy()
+    lean["ltca"] = xr.DataTree(lt.drop_vars(["lte_range_peak_to_peak", "lte_range_source"]))
+    assert "lte-between" not in render_report(lean, figures=[])
 
 
 def test_basic_data_table_of_the_pair(run_files):

@@ -6,6 +6,7 @@ then negative for any addendum angle)."""
 
 from __future__ import annotations
 
+import math
 import re
 from pathlib import Path
 
@@ -410,3 +411,27 @@ def test_a_given_torque_above_its_root_capacity_is_noted():
     assert _given_torque_note(case, 0.9 * capacity, None) is None
     above = _given_torque_note(case, 2.0 * capacity, said)
     assert above.startswith("the design torque") and "ISO 10300 long-life capacity" in above
+
+
+def test_a_shaft_angle_past_the_internal_gear_names_its_limit_in_degrees(tmp_path, capsys):
+    """A shaft angle whose gear pitch angle would pass 90° (an internal bevel gear) is
+    refused naming the largest Σ in degrees, the field's unit, not only the cosine bound
+    (round 23: a 9x41 typed at Σ 105° read "must have cos Σ > −z1/z2 = -0.2195", leaving
+    the user to work out 102.68°). Independent value: arccos(−13/39) = 109.47° (exact to
+    the 2 decimals printed); rc 2 and one line from the command."""
+    from geometry.synthesis.basic_design import load_basic
+
+    text = (DESIGNS / "spiral_bevel_13x39.toml").read_text(encoding="utf-8")
+    text, n = re.subn(r"(?m)^Sigma = .*$", "Sigma = 110.0", text)
+    assert n == 1
+    path = tmp_path / "sigma110.toml"
+    path.write_text(text, encoding="utf-8")
+    limit = f"{math.degrees(math.acos(-13 / 39)):.2f}"
+    assert limit == "109.47"
+    with pytest.raises(InputError, match=rf"^design\.Sigma: must be below {limit} for 13x39 "
+                                         r"\(cos Σ > −z1/z2 = -0\.3333.*\[deg\], got 110$"):
+        load_basic(path)
+    rc = main(["synthesize", str(path), "-o", str(tmp_path / "case.toml")])
+    err = capsys.readouterr().err
+    assert rc == 2 and f"must be below {limit} for 13x39" in err
+    assert not (tmp_path / "case.toml").exists()

@@ -451,9 +451,13 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
             # same", which wrote its case with the raised relief)
             raise
         except InputError as err:
+            from contact.optimize.development_basic_error import levers_tried_text
+
+            levers = levers_tried_text(err, [e.reason for e in evals],
+                                       [e.values for e in evals])
             raise InputError(f"{err}{tried_text(err)} (the basic design as given, before "
                              "any development; ltca synthesize --no-development says the "
-                             "same)") from err
+                             f"same{levers})") from err
         # a tooth the FE model finds too thin at the toe is the basic data's face width,
         # which no bounds change (tooth_measurement._toe_hint names it)
         change = ("change the basic data's design.b2" if "design.b2" in reasons

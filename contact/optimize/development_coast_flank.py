@@ -719,6 +719,35 @@ def coast_lte_at_its_torques(developed: BasicDesign, drive: DevelopmentEvaluatio
     return written.outcome(coast, got)
 
 
+def peak_relief_text(first: CoastCheck, cap: CoastCapacity) -> str:
+    """The progress line of :func:`coast_peak_relief`: the coast flank's peak at the torque
+    its capacity search started at, the criterion that peak failed (the static strength
+    or the local pitting safety, with their numbers) and the design torque it set.
+
+    Round 23 (issue 71): the 7x43 at 0.8 of its ISO capacity printed "coast flank's peak
+    1703 MPa at 105.8 N m set its design torque 57.1 N m" where the flank's limit the
+    summary prints is 2400 MPa; the criterion was the pinion's local pitting safety 0.86.
+
+    Parameters
+    ----------
+    first : CoastCheck
+        The check at ``cap.start`` (its ``failures`` name the criterion).
+    cap : CoastCapacity
+        The coast capacity search (its ``start`` and ``torque``, [N·m]).
+
+    Returns
+    -------
+    str
+        One line, ``development: coast flank's peak … MPa at … N m (<criterion>) set its
+        design torque … N m: a lighter tip relief``.
+    """
+    failures = first.failures
+    why = "; ".join(failures[k] for k in ("flank", "pitting") if k in failures)
+    return (f"development: coast flank's peak {first.pressure:.0f} MPa at "
+            f"{plain_number(cap.start)} N m" + (f" ({why})" if why else "")
+            + f" set its design torque {plain_number(cap.torque)} N m: a lighter tip relief")
+
+
 def coast_peak_relief(developed: BasicDesign, drive: DevelopmentEvaluation,
                       targets: DevelopmentTargets, setup: dict[str, Any],
                       teeth: KeptTeeth, memo: dict, say: Callable[[str], None],
@@ -753,8 +782,7 @@ def coast_peak_relief(developed: BasicDesign, drive: DevelopmentEvaluation,
         return None
     met = {k for k, v in old.full[1].items() if v == 0.0}
     lte = max(LTE_LIMIT, float(np.nanmax(old.metrics["lte_peak_to_peak"])))
-    say(f"development: coast flank's peak {first.pressure:.0f} MPa at {plain_number(cap.start)} N "
-        f"m set its design torque {plain_number(cap.torque)} N m: a lighter tip relief")
+    say(peak_relief_text(first, cap))
     written = written_coast(developed, drive, memo)
     got = checked_coast_peak(old, targets, coast_setup(setup, cap.start),
                              teeth, say, written.placed, peak=first.pressure, met=met,

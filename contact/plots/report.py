@@ -287,6 +287,27 @@ def _summary(tree: xr.DataTree, lt: xr.Dataset) -> list[dict]:
     return rows
 
 
+def _lte_between(lt: xr.Dataset | None) -> list[dict]:
+    """The LTE p-p [µrad] the ``lte_range`` step analysed between the run's torques (the
+    contact alone, ``/ltca/lte_range_peak_to_peak`` where ``lte_range_source`` is 1), each
+    with its torque [N·m] — what ``ltca run`` prints under its table and the verdict's
+    ``lte`` check judges beside the table's; empty where the file has none.
+
+    Round 23 (issue 71): the 13x39's report showed 18.7 / 48.5 µrad at its two torques and
+    not the 51.6 µrad at 368.6 N·m between them, its largest LTE, which ``ltca run``
+    printed.
+    """
+    if lt is None or "lte_range_source" not in lt or "lte_range_peak_to_peak" not in lt:
+        return []
+    alone = np.asarray(lt["lte_range_source"].values) == 1
+    torque = np.asarray(lt["lte_torque"].values, float)[alone]
+    value = np.asarray(lt["lte_range_peak_to_peak"].values, float)[alone]
+    # the torque as `ltca run`'s line writes it (plain_number)
+    return [{"torque": float(t), "value": float(v), "text": _cell(float(v), 1)["text"],
+             "torque_text": plain_number(float(t))}
+            for t, v in zip(torque, value, strict=True)]
+
+
 def _durability(lt: xr.Dataset | None, fr: xr.Dataset | None,
                 standard: xr.Dataset | None = None) -> dict | None:
     """The scuffing and micropitting table (:data:`DURABILITY_COLUMNS` per torque; the
@@ -599,7 +620,8 @@ def report_context(tree: xr.DataTree,
         loaded pattern in mm and the contact ratio; None without ``/ltca``), ``figures``
         (each with its size in CSS pixels and ``wide``),
         ``provenance``, ``operating``, ``misalignment``, ``columns`` and ``summary`` (the
-        table of :data:`SUMMARY_COLUMNS`), ``te_table``, ``solver``, ``absent``,
+        table of :data:`SUMMARY_COLUMNS`), ``lte_between`` (the LTE p-p between the
+        run's torques, :func:`_lte_between`), ``te_table``, ``solver``, ``absent``,
         ``durability`` (the scuffing and micropitting table, None for a file without
         it), ``rating`` (the ISO 10300 rating beside the LTCA, None for a file without
         ``/rating``), ``figures``, ``warnings`` (the efficiency stage's model-range warnings),
@@ -644,6 +666,7 @@ def report_context(tree: xr.DataTree,
         "operating": _operating(tree, lt, fr, eo),
         "columns": [(c.heading, c.unit) for c in SUMMARY_COLUMNS],
         "summary": _summary(tree, lt) if lt is not None else [],
+        "lte_between": _lte_between(lt),
         "misalignment": (misalignment_text(tree.attrs) or misalignment_text(eo.attrs)
                          or "not recorded"),
         "basic_data": _basic_data(inputs_text),

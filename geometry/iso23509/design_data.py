@@ -216,9 +216,12 @@ class BevelGearDesign:
         sigma = real("Sigma", self.Sigma, unit="deg", low=0.0, high=math.pi,
                      low_open=True, high_open=True, scale=_DEG)
         if math.cos(sigma) <= -z1 / z2:
+            # the bound in the field's own unit: a user typing Σ reads the degrees, not the
+            # cosine (issue 71, round 23: 9x41 typed at Σ 105° where 102.68° is the limit)
             raise InputError(
-                f"Sigma: must have cos Σ > −z1/z2 = {-z1 / z2:.4f} (gear pitch angle below "
-                f"90°; internal bevel gears are not modelled) [deg], got {sigma / _DEG:g}"
+                f"Sigma: must be below {math.degrees(math.acos(-z1 / z2)):.2f} for "
+                f"{z1}x{z2} (cos Σ > −z1/z2 = {-z1 / z2:.4f}: gear pitch angle below 90°; "
+                f"internal bevel gears are not modelled) [deg], got {sigma / _DEG:g}"
             )
         set_(self, "Sigma", sigma)
         given, absent = ("dm2", "de2") if method == 2 else ("de2", "dm2")
