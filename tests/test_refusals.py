@@ -475,8 +475,8 @@ def test_the_verdict_of_a_tree_without_ltca_names_the_checks_it_could_not_make()
                         + " (no /ltca group: the tree holds no loaded contact)")
     # the root stress with the reason of its own check (contact.study.verdict_checks)
     assert any(line.startswith("  not checked: root_stress") for line in lines)
-    assert any(line.startswith("  not checked: friction_extrapolated (no /friction group")
-               for line in lines)
+    assert any(line.startswith("  not checked: friction_extrapolated, efficiency (no "
+                               "/friction group") for line in lines)
     # scuffing and micropitting are the load-capacity step's group (issue 63)
     assert any(line.startswith("  not checked: scuffing, micropitting (no "
                                "/scuffing_micropitting group") for line in lines)
