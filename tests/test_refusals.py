@@ -178,7 +178,7 @@ def test_combining_studies_names_the_setting_in_plain_numbers():
     (["optimize", "--max-evaluations", "0"],
      r"--max-evaluations: must be an integer in \[2, 1000000\], got 0"),
     (["sweep", "--workers", "0"], r"--workers: must be an integer in \[1, 1024\]"),
-    (["tolerance", "-n", "-5"], r"-n: must be an integer in \[1, 10000000\], got -5"),
+    (["tolerance", "-n", "-5"], r"-n: must be an integer in \[2, 10000000\], got -5"),  # plugin83
     (["friction-study", "-n", "0"], r"--points: must be an integer"),
     (["run", "--rolls-per-cycle", "2"], r"--rolls-per-cycle: must be an integer in \[4, 400\]"),
     (["ehl", "--pressure", "1", "--radius", "20", "--speed", "1", "--nodes", "8"],
