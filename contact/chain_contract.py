@@ -15,7 +15,10 @@ Checked:
   dict whose keys are paths (``"/name"``) and whose values are ``xarray.Dataset``; the
   groups the later steps read exist: ``/easeoff`` and ``/utca`` after the ``utca`` step,
   ``/ltca`` (with its ``torque`` dimension) from the ``ltca`` step on — a step that deletes
-  ``/ltca`` is named, not the ``KeyError`` of the step after it;
+  ``/ltca`` is named, not the ``KeyError`` of the step after it; a ``/friction`` group
+  holds ``efficiency_mean`` over ``torque`` (as ``/ltca``), finite, 0 < η <= 1
+  (:func:`check_efficiency`; issue 71: a NaN printed as a blank, a per-roll array
+  printed as its first value);
 * **when it raises** (:func:`run_step`): a user's step's exception is re-raised as a
   :class:`geometry.core.errors.PluginError` naming the step and the callable, the original
   chained as its cause (``raise … from exc``); the built-in steps' own errors pass
@@ -25,6 +28,7 @@ Public names
 ------------
 check_step_callable  refuse a step callable that cannot take the state
 check_step_output    refuse what a step left in the state
+check_efficiency     refuse a /friction group without a printable efficiency_mean
 run_step             run one step, its misuse and its exceptions said with its name
 READS                the groups each built-in step reads
 """
@@ -35,11 +39,13 @@ import inspect
 from collections.abc import Callable, Mapping
 from typing import Any
 
+import numpy as np
 import xarray as xr
 
 from geometry.core.errors import PluginError
 
-__all__ = ["READS", "check_step_callable", "check_step_output", "run_step"]
+__all__ = ["READS", "check_efficiency", "check_step_callable", "check_step_output",
+           "run_step"]
 
 #: the groups each step leaves for the steps after it (a step's output is checked for
 #: those of its own and of every earlier step; the ``ltca`` step's ``/ltca`` is read by
@@ -124,7 +130,7 @@ def check_step_output(step: str, f: Callable[..., Any], state: Any, returned: An
         A value returned; ``state.groups`` no dict; a key that is no path ``"/…"``; a value
         that is no ``xarray.Dataset`` (a list, a dict, a DataTree); a group the later steps
         read (:data:`MAKES` of this and every earlier step) missing; ``/ltca`` without its
-        ``torque`` dimension.
+        ``torque`` dimension; a ``/friction`` group refused by :func:`check_efficiency`.
     """
     who = f"steps.{step}: the callable {_name(f)}"
     if returned is not None:
@@ -152,6 +158,48 @@ def check_step_output(step: str, f: Callable[..., Any], state: Any, returned: An
     if "ltca" in done and "torque" not in groups["/ltca"].dims:
         raise PluginError(f"{who} left a /ltca group without the dimension 'torque' (the "
                           "later steps and the file read the LTCA per torque)")
+    if "/friction" in groups and "/ltca" in groups:
+        check_efficiency(who, groups["/friction"], groups["/ltca"].sizes["torque"])
+
+
+def check_efficiency(who: str, friction: xr.Dataset, n_torque: int) -> None:
+    """Refuse a ``/friction`` group whose ``efficiency_mean`` the report and the summary
+    table could not print as the mean mechanical efficiency per torque (issue 71).
+
+    Parameters
+    ----------
+    who : str
+        The step and callable that left it (the message's subject).
+    friction : xarray.Dataset
+        The ``/friction`` group.
+    n_torque : int
+        The number of torques of ``/ltca``.
+
+    Raises
+    ------
+    PluginError
+        ``efficiency_mean`` [1] missing, not over the one dimension ``torque`` of
+        ``n_torque`` values, or a value NaN, infinite or outside 0 < η <= 1 (a mechanical
+        efficiency is the output power over the input power, seed Eq. 5.1).
+    """
+    where = f"{who} left /friction with efficiency_mean"
+    if "efficiency_mean" not in friction:
+        raise PluginError(f"{who} left /friction without efficiency_mean (the mean mechanical "
+                          "efficiency [1] per torque the report and ltca run print; "
+                          "docs/extending.md)")
+    eff = friction["efficiency_mean"]
+    if eff.dims != ("torque",) or eff.size != n_torque:
+        raise PluginError(f"{where} over {eff.dims} (shape {eff.shape}); it must be over "
+                          f"('torque',) with the /ltca group's {n_torque} torque(s)")
+    try:
+        values = np.asarray(eff.values, dtype=float)
+    except (TypeError, ValueError):
+        raise PluginError(f"{where} of dtype {eff.dtype}; it must be numbers [1]") from None
+    bad = ~(np.isfinite(values) & (values > 0.0) & (values <= 1.0))
+    if np.any(bad):
+        raise PluginError(f"{where} {float(values[bad][0]):.6g} at {int(np.count_nonzero(bad))} of "
+                          f"{values.size} torque(s); accepted a finite 0 < efficiency_mean "
+                          "<= 1 [1] (a fraction, not %)")
 
 
 def run_step(step: str, f: Callable[..., Any], state: Any, *, builtin: bool,

@@ -75,6 +75,7 @@ __all__ = [
     "ENTRY_POINT_GROUP",
     "ISO_TR_14179_2_RANGE",
     "MU_CAP",
+    "MU_MAX",
     "STANDARD_INPUTS",
     "UNAVAILABLE_MODELS",
     "XU2007_COEFFICIENTS",
@@ -147,6 +148,17 @@ def _warn_outside(model: str, name: str, values: Array, low: float, high: float,
 #: Upper clip of every regression: no lubricated steel contact reaches it, so a larger
 #: value means the formula is far outside its fitted range (a warning says so).
 MU_CAP = 0.3
+
+
+#: Hard upper bound of any model's μ, bundled or a user's (:func:`friction_coefficient`
+#: refuses above it, warns above :data:`MU_CAP`): above the static coefficient of clean,
+#: dry steel on steel, ~0.74-0.8, and its kinetic ~0.42-0.57 (Bowden & Tabor, *The
+#: Friction and Lubrication of Solids*, 1950; Rabinowicz, *Friction and Wear of
+#: Materials*, 2nd ed. 1995, ch. 4); lubricated gear contacts run at 0.01-0.1 and in
+#: boundary lubrication at 0.1-0.15 (ISO/TR 14179-2:2001; Xu et al. 2007). A μ above 1 is
+#: a unit or definition error (a percentage, a friction force), never a gear contact's.
+#: The same bound as the ``constant`` model's ``value``.
+MU_MAX = 1.0
 
 
 def _cap(model: str, mu: Array) -> Array:
@@ -795,7 +807,8 @@ def as_friction_model(function: Callable[..., Any], *, name: str | None = None,
     function : callable
         ``mu = function(*, <inputs>)``: keyword inputs from :data:`STANDARD_INPUTS` (units
         there; those without a default are required) and model parameters with defaults;
-        returns μ [1], float or an array broadcasting with the inputs, finite.
+        returns μ [1], float or an array broadcasting with the inputs, finite, in
+        [0, :data:`MU_MAX`] (warned above :data:`MU_CAP`; checked at each call).
     name : str, optional
         The name the model is recorded by (default the function's ``__name__``).
     validity : callable, optional
@@ -984,12 +997,35 @@ def _evaluate(model: FrictionModel, inputs: Mapping[str, Any]) -> NDArray[np.flo
         raise PluginError(f"friction model {model.name!r} returned a negative μ (least "
                           f"{float(out.min()):.3g}); a sliding friction coefficient is >= 0 "
                           "(its direction is the sliding velocity's)")
-    return scalar_or_array(out.astype(float))
+    return scalar_or_array(_bounded(model, out).astype(float))
+
+
+def _bounded(model: FrictionModel, mu: Array) -> Array:
+    """``mu`` of ``model`` after the physical bounds every model's μ is held to: refused
+    above :data:`MU_MAX`, warned above :data:`MU_CAP` (issue 71)."""
+    if np.any(mu > MU_MAX):
+        raise PluginError(
+            f"friction model {model.name!r} returned friction_coefficient μ = "
+            f"{float(mu.max()):.3g} at {int(np.count_nonzero(mu > MU_MAX))} of {mu.size} "
+            f"point(s); accepted 0 <= μ <= {MU_MAX:g} (dry steel on steel stays below ~0.8, "
+            f"lubricated gear contacts 0.01-0.15; μ in % or a friction force instead of a "
+            "coefficient?) (docs/extending.md)")
+    above = mu > MU_CAP
+    if np.any(above):
+        warnings.warn(
+            f"{model.name}: friction_coefficient μ up to {float(mu.max()):.3g} above "
+            f"{MU_CAP:g} at {int(np.count_nonzero(above))} of {mu.size} point(s): beyond "
+            "any lubricated steel gear contact (boundary friction 0.1-0.15), the range of "
+            "dry steel; the efficiency and the flash temperature rest on it",
+            FrictionModelRangeWarning,
+            stacklevel=4,
+        )
+    return mu
 
 
 def _returned(value: Any) -> str:
     """What a plug-in returned, short: type, shape and the first characters."""
-    text = repr(value)
+    text = " ".join(repr(value).split())  # one line: a 2-D array's repr has newlines
     text = text if len(text) <= 50 else text[:49] + "…"
     shape = np.shape(value) if isinstance(value, np.ndarray) else None
     return f"{type(value).__name__}{'' if shape is None else f' of shape {shape}'} {text}"
@@ -1037,11 +1073,15 @@ def friction_coefficient(name: FrictionModelLike, **inputs: Any) -> NDArray[np.f
         Unknown or unavailable model.
     InputError
         A missing, unknown or out-of-range input.
+    PluginError
+        The model raised, or returned μ of the wrong shape, non-finite, negative or above
+        :data:`MU_MAX` (1; the message names the model and ``friction_coefficient``).
 
     Warns
     -----
     FrictionModelRangeWarning
-        Inputs outside the model's fitted range.
+        Inputs outside the model's fitted range; a μ above :data:`MU_CAP` (0.3, beyond
+        lubricated steel contacts).
 
     Notes
     -----

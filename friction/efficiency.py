@@ -41,6 +41,7 @@ import numpy as np
 import xarray as xr
 
 from friction.coefficient import (
+    MU_CAP,
     FrictionModelLike,
     FrictionModelRangeWarning,
     friction_coefficient,
@@ -536,6 +537,9 @@ def _film_and_friction(
         mu = np.asarray(friction_coefficient(op.friction_model, **inputs), float)
         outside = ~np.broadcast_to(friction_model_validity(op.friction_model, **inputs),
                                    seg.force.shape)
+        # a μ beyond lubricated steel contacts (the model's warning says it; issue 71):
+        # flagged as outside the model's range, so that the verdict names it
+        outside = outside | np.broadcast_to(mu > MU_CAP, seg.force.shape)
         fr = np.asarray(rolling_traction(vr, sr, eta0, alpha, w, R, e_prime, beta, k_oil), float)
     range_notes = {str(w.message) for w in caught
                    if issubclass(w.category, FrictionModelRangeWarning)}

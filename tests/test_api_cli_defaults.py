@@ -312,3 +312,53 @@ def test_optimize_problem_torques_default_to_the_cases():
         OptimizeProblem(max_edge_share=(0.05, 0.1))
     with pytest.raises(InputError, match=r"^optimize\.lte_mean_range: one \(low, high\) "):
         OptimizeProblem(lte_mean_range=((0.0, 50.0),))
+
+
+def test_sample_takes_the_commands_number_of_draws():
+    """Issue 71 (plugin83): ``contact.sample`` required ``n`` where ``ltca tolerance`` defaults
+    to 256; now the function's default is the parser's (read from the parser itself)."""
+    from contact.cli import build_parser
+    from contact.study.sample_size import DEFAULT_SAMPLES
+
+    args = build_parser().parse_args(["tolerance", "--dE", "normal:0:0.02"])
+    assert inspect.signature(contact.sample).parameters["n"].default == args.n \
+        == DEFAULT_SAMPLES == 256
+    assert inspect.signature(contact.sample).parameters["n"].kind \
+        is inspect.Parameter.POSITIONAL_OR_KEYWORD  # sample(case, dists, 64) still works
+
+
+@pytest.mark.parametrize("n", [1, 0, -3, 10_000_001])
+def test_sample_and_tolerance_refuse_the_same_numbers_of_draws_alike(n, capsys):
+    """Issue 71 (plugin83): the command's parser accepted ``-n 1`` (count(1, 10^7)), printed
+    its header and then failed on the function's ``n: must be an integer >= 2``; the
+    function had no upper bound. Now both accept [2, 10^7] and refuse anything else before
+    any work with the same text: the API after ``n: ``, the command after ``argument -n: ``."""
+    import scipy.stats
+
+    from contact.cli import main
+
+    said = f"must be an integer in [2, 10000000], got {n}"
+    with pytest.raises(InputError) as info:
+        contact.sample(None, {"delta_E": scipy.stats.norm(0.0, 0.02)}, n)
+    assert str(info.value) == f"n: {said}"
+    with pytest.raises(SystemExit) as exit_:  # the parser's refusal: argparse's exit 2
+        main(["tolerance", "--dE", "normal:0:0.02", "-n", str(n), "--no-progress"])
+    out, err = capsys.readouterr()
+    assert exit_.value.code == 2 and out == ""  # no header: refused by the parser
+    assert err.strip().splitlines()[-1] == f"ltca tolerance: error: argument -n: {said}"
+
+
+def test_the_smallest_number_of_draws_is_accepted_by_both():
+    """n = 2, the least both accept: the draws the command makes (``draw_points`` is what
+    ``ltca tolerance`` prints the range of) are those of ``sample``'s (seed 0), and the
+    parser takes ``-n 2`` (the full 2-draw study of both is run by
+    test_sweep_and_sample_defaults_are_the_commands)."""
+    import scipy.stats
+
+    from contact.cli import build_parser
+    from contact.study import draw_points
+
+    args = build_parser().parse_args(["tolerance", "--dE", "normal:0:0.02", "-n", "2"])
+    assert args.n == 2
+    draws = draw_points({"delta_E": scipy.stats.norm(0.0, 0.02)}, 2, seed=0)
+    assert draws["delta_E"].shape == (2,) and np.all(np.isfinite(draws["delta_E"]))

@@ -117,6 +117,80 @@ def test_an_ltca_without_torque_is_refused():
         _run(ltca=flat)
 
 
+def _friction(efficiency_mean, dims=("torque",)):
+    """A user's efficiency step writing ``/friction`` with this ``efficiency_mean``."""
+    def mine(state):
+        state.groups["/friction"] = xr.Dataset(
+            {"efficiency_mean": (dims, np.asarray(efficiency_mean, float))},
+            coords={"torque": [TORQUE]})
+    return mine
+
+
+@pytest.mark.parametrize("efficiency_mean, dims, said", [
+    # issue 71 (plugin83): before, ``efficiency nan %`` in the summary and a verdict
+    # without a word on it
+    ([np.nan], ("torque",), r"efficiency_mean nan at 1 of 1 torque\(s\); "
+                            r"accepted a finite 0 < efficiency_mean <= 1 \[1\] \(a fraction, "
+                            r"not %\)$"),
+    ([np.inf], ("torque",), r"efficiency_mean inf at 1 of 1"),
+    # before: ``efficiency 9741.92 %``
+    ([97.42], ("torque",), r"efficiency_mean 97\.42 at 1 of 1 torque\(s\); accepted"),
+    ([0.0], ("torque",), r"efficiency_mean 0 at 1 of 1"),
+    ([-0.2], ("torque",), r"efficiency_mean -0\.2 at 1 of 1"),
+    # before: NumPy's "only 0-dimensional arrays can be converted to Python scalars" from
+    # contact/pipeline.py; over roll without torque, the first roll's value
+    ([[0.97, 0.98]], ("torque", "roll"),
+     r"efficiency_mean over \('torque', 'roll'\) \(shape \(1, 2\)\); it must be over "
+     r"\('torque',\) with the /ltca group's 1 torque\(s\)$"),
+    ([0.97, 0.98], ("roll",), r"efficiency_mean over \('roll',\) \(shape \(2,\)\)"),
+])
+def test_an_efficiency_step_leaving_an_unprintable_efficiency_is_named(efficiency_mean, dims,
+                                                                       said):
+    with pytest.raises(PluginError, match=r"^steps\.efficiency: the callable .*mine left "
+                                          r"/friction with " + said) \
+            as info:
+        _run(efficiency=_friction(efficiency_mean, dims))
+    _one_sentence(info.value)
+
+
+def test_an_efficiency_step_without_efficiency_mean_is_named():
+    def other(state):
+        state.groups["/friction"] = xr.Dataset({"power_loss_mean": ("torque", [300.0])})
+
+    with pytest.raises(PluginError, match=r"^steps\.efficiency: the callable .*other left "
+                                          r"/friction without efficiency_mean"):
+        _run(efficiency=other)
+
+
+def test_the_efficiency_bounds_take_a_fraction_of_one():
+    """0 < η <= 1 inclusive of 1 (no loss): the check refuses what the report could not
+    print as a fraction, nothing more."""
+    from contact.chain_contract import check_efficiency
+
+    for good in ([1.0], [0.5], [0.9742]):
+        check_efficiency("steps.efficiency", xr.Dataset({"efficiency_mean": ("torque", good)}),
+                         1)
+    with pytest.raises(PluginError, match=r"over \('torque',\) \(shape \(1,\)\); it must "
+                                          r"be over \('torque',\) with the /ltca group's 2"):
+        check_efficiency("steps.efficiency",
+                         xr.Dataset({"efficiency_mean": ("torque", [0.97])}), 2)
+
+
+def test_the_built_in_efficiency_passes_the_check():
+    """The built-in step's /friction on the default case passes (97.42 % at 250 N·m, the
+    value ``ltca run`` prints with these settings) and a user step wrapping it too."""
+    from contact.chain import efficiency_local_friction
+
+    def wrapped(state):
+        efficiency_local_friction(state)
+
+    chain = AnalysisChain.contact_only().with_steps(efficiency=wrapped)
+    tree = run_analysis(None, [TORQUE], options=SMALL, steps=chain)
+    # 97.42 % is what `ltca run --rolls-per-cycle 4 --segments 8 --torque 250` prints;
+    # 0.005 % is its last printed digit
+    assert float(tree["friction"]["efficiency_mean"][0]) == pytest.approx(0.9742, abs=5e-5)
+
+
 def test_a_user_step_that_raises_is_wrapped_with_its_name_and_cause():
     def broken(state):
         return 1 / 0

@@ -7,6 +7,7 @@ friction model and the compliance model alike (docs/extending.md).
 from __future__ import annotations
 
 import re
+import warnings
 
 import numpy as np
 import pytest
@@ -23,6 +24,9 @@ from contact.qp import solve_contact
 from contact.qp.benchmark_problems import hertz_cylinder_problem
 from contact.qp.solvers import SOLVERS_EXTRA, register_backend, unregister_backend
 from friction.coefficient import (
+    MU_CAP,
+    MU_MAX,
+    FrictionModelRangeWarning,
     friction_coefficient,
     register_friction_model,
     unregister_friction_model,
@@ -109,6 +113,16 @@ def _boom(*, slide_to_roll):
      r"^friction model 'mu' returned a non-finite μ \(2 of 2 values\)"),
     (lambda *, slide_to_roll: "low",
      r"^friction model 'mu' returned str 'low' for inputs of shape \(2,\)"),
+    # issue 71 (plugin83): μ = 5 went into the efficiency (-120.51 %) and S_B (0.0405)
+    (lambda *, slide_to_roll: 5.0 * np.ones_like(slide_to_roll),
+     r"^friction model 'mu' returned friction_coefficient μ = 5 at 2 of 2 point\(s\); "
+     r"accepted 0 <= μ <= 1 "),
+    (lambda *, slide_to_roll: np.array([0.05, 1.2]),
+     r"^friction model 'mu' returned friction_coefficient μ = 1\.2 at 1 of 2 point\(s\)"),
+    (lambda *, slide_to_roll: np.array([0.05, np.inf]),
+     r"^friction model 'mu' returned a non-finite μ \(1 of 2 values\)"),
+    (lambda *, slide_to_roll: np.ones((2, 1)) * 0.05,
+     r"^friction model 'mu' returned ndarray of shape \(2, 1\) .* for inputs of shape \(2,\)"),
 ])
 def test_a_friction_model_failing_at_call_time_is_named(function, pattern):
     register_friction_model("mu", function, replace=True)
@@ -130,6 +144,55 @@ def test_a_good_friction_model_still_broadcasts():
     finally:
         unregister_friction_model("flat")
     np.testing.assert_array_equal(mu, [0.04, 0.04, 0.04])
+
+
+@pytest.mark.parametrize("top", [0.31, 0.6, 1.0])
+def test_a_friction_coefficient_above_lubricated_steel_is_warned_not_refused(top):
+    """Between :data:`MU_CAP` (0.3: no lubricated steel gear contact; boundary friction is
+    0.1-0.15) and :data:`MU_MAX` (1: above dry steel on steel, ~0.8 static) μ is that of a
+    dry contact: kept as returned — the exact values, no clipping — with a
+    FrictionModelRangeWarning naming the model and the count, which the efficiency stage
+    records in ``model_range_warnings``."""
+    register_friction_model("mu", lambda *, slide_to_roll: np.array([0.05, top]),
+                            replace=True)
+    try:
+        with pytest.warns(FrictionModelRangeWarning,
+                          match=rf"^mu: friction_coefficient μ up to {top:g} above 0\.3 at "
+                                r"1 of 2 point\(s\)"):
+            mu = friction_coefficient("mu", slide_to_roll=np.array([0.1, 0.3]))
+    finally:
+        unregister_friction_model("mu")
+    np.testing.assert_array_equal(mu, [0.05, top])
+
+
+def test_the_bounds_hold_the_bundled_models_as_before():
+    """The bounds are those of the bundled models: ``constant`` accepts its value up to 1
+    (its own range, now :data:`MU_MAX`), and the regressions clip at :data:`MU_CAP`, so a
+    bundled model is never refused by the new bound; at 0.3 exactly, no warning."""
+    assert MU_MAX == 1.0 and MU_CAP == 0.3
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert friction_coefficient("constant", value=0.3) == 0.3
+    with pytest.warns(FrictionModelRangeWarning, match=r"^constant: friction_coefficient μ"):
+        assert friction_coefficient("constant", value=1.0) == 1.0
+
+
+def test_ltca_run_with_a_friction_coefficient_of_five_is_one_line(tmp_path, capsys):
+    """Before plugin83 this run printed an efficiency of -120.51 % and a scuffing safety S_B
+    of 0.0405 and wrote its file (exit 0)."""
+    register_friction_model("mu5", lambda *, slide_to_roll: 5.0 * np.ones_like(slide_to_roll),
+                            replace=True)
+    try:
+        code = main(["run", "--friction-model", "mu5", "--rolls-per-cycle", "4",
+                     "--segments", "8", "--torque", "250", "--no-rating", "--no-root-stress",
+                     "--no-progress", "-o", str(tmp_path / "r.nc")])
+    finally:
+        unregister_friction_model("mu5")
+    err = capsys.readouterr().err.strip()
+    assert code == 2
+    assert re.fullmatch(r"ltca run: error: friction model 'mu5' returned friction_coefficient "
+                        r"μ = 5 at \d+ of \d+ point\(s\); accepted 0 <= μ <= 1 .*", err), err
+    assert not (tmp_path / "r.nc").exists()
 
 
 def test_ltca_run_with_a_friction_model_that_raises_is_one_line(tmp_path, capsys):

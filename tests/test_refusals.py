@@ -178,7 +178,7 @@ def test_combining_studies_names_the_setting_in_plain_numbers():
     (["optimize", "--max-evaluations", "0"],
      r"--max-evaluations: must be an integer in \[2, 1000000\], got 0"),
     (["sweep", "--workers", "0"], r"--workers: must be an integer in \[1, 1024\]"),
-    (["tolerance", "-n", "-5"], r"-n: must be an integer in \[1, 10000000\], got -5"),
+    (["tolerance", "-n", "-5"], r"-n: must be an integer in \[2, 10000000\], got -5"),  # plugin83
     (["friction-study", "-n", "0"], r"--points: must be an integer"),
     (["run", "--rolls-per-cycle", "2"], r"--rolls-per-cycle: must be an integer in \[4, 400\]"),
     (["ehl", "--pressure", "1", "--radius", "20", "--speed", "1", "--nodes", "8"],
@@ -475,8 +475,8 @@ def test_the_verdict_of_a_tree_without_ltca_names_the_checks_it_could_not_make()
                         + " (no /ltca group: the tree holds no loaded contact)")
     # the root stress with the reason of its own check (contact.study.verdict_checks)
     assert any(line.startswith("  not checked: root_stress") for line in lines)
-    assert any(line.startswith("  not checked: friction_extrapolated (no /friction group")
-               for line in lines)
+    assert any(line.startswith("  not checked: friction_extrapolated, efficiency (no "
+                               "/friction group") for line in lines)
     # scuffing and micropitting are the load-capacity step's group (issue 63)
     assert any(line.startswith("  not checked: scuffing, micropitting (no "
                                "/scuffing_micropitting group") for line in lines)

@@ -26,7 +26,13 @@ from contact.catalogue import resolve_case
 from contact.ltca import LTCAOptions
 from contact.ltca.summary import edge_load_share, flank_peak_pressure
 from contact.pipeline import run_analysis
-from contact.study.verdicts import SEVERITIES, Finding, Verdict, verdict
+from contact.study.verdicts import (
+    EFFICIENCY_NOT_JUDGED,
+    SEVERITIES,
+    Finding,
+    Verdict,
+    verdict,
+)
 from geometry.core.errors import InputError
 
 OPTS = LTCAOptions(rolls_per_cycle=6, cycles=1)
@@ -89,11 +95,14 @@ def test_the_default_case_is_flagged_for_its_flank_pressure_and_heel_contact(def
     # but micropitting: the default oil gives no λ_GFP, its S_λ NaN at every torque, which
     # no check can judge (said, not passed: "the verdict judges all it prints")
     assert {"scuffing", "rating"} <= set(v.checks) and "micropitting" not in v.checks
-    ((check, why),) = v.unchecked
+    # and the efficiency, printed but judged by no limit (issue 71, plugin83)
+    ((check, why), (printed, not_judged)) = v.unchecked
     assert check == "micropitting" and why.startswith("micropitting_safety NaN at every torque")
     assert "gives no permissible_specific_film" in why
+    assert (printed, not_judged) == ("efficiency", EFFICIENCY_NOT_JUDGED)
     assert lines[3].startswith("  not checked: micropitting (")
-    assert lines[4].startswith("  … and ") and lines[-1] == lines[4]
+    assert lines[4] == f"  not checked: efficiency ({EFFICIENCY_NOT_JUDGED})"
+    assert lines[5].startswith("  … and ") and lines[-1] == lines[5]
 
 
 def _tree(**groups: xr.Dataset) -> xr.DataTree:

@@ -36,6 +36,7 @@ from contact.commands.options import (
 )
 from contact.commands.output_paths import check_output_dir, check_output_file
 from contact.commands.run import print_verdict
+from contact.study.sample_size import DEFAULT_SAMPLES, SAMPLES_RANGE
 from geometry.core.errors import InputError
 from geometry.core.text import plain_number
 
@@ -165,7 +166,7 @@ def register(sub) -> None:
                          "a distribution e.g. normal:0:0.05")
     t.add_argument("--deviation-scale", metavar="DIST",
                    help="distribution of the factor on the case's [deviations]")
-    t.add_argument("-n", type=count(1, 10_000_000), default=256,
+    t.add_argument("-n", type=count(*SAMPLES_RANGE), default=DEFAULT_SAMPLES,
                    help="number of draws (default %(default)s)")
     t.add_argument("--method", choices=["sobol", "lhs", "random"], default="sobol",
                    help="how the draws are placed: scrambled Sobol or Latin-hypercube "

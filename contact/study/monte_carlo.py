@@ -25,6 +25,7 @@ from contact.study.engine import run_points, write_study
 from contact.study.grid import study_inputs
 from contact.study.points import POINT_INPUTS
 from contact.study.run import StudyRun, study_run
+from contact.study.sample_size import DEFAULT_SAMPLES, SAMPLES_RANGE, samples_message
 from geometry.case import Case
 from geometry.core.errors import InputError
 from geometry.core.renamed import renamed_keywords
@@ -105,7 +106,8 @@ def draw_points(distributions: Mapping[str, Any], n: int, *, method: str = "sobo
     distributions : mapping of str to scipy.stats frozen distribution
         Input name (:data:`POINT_INPUTS`) → its distribution, in the input's units.
     n : int
-        Number of draws (≥ 2; Sobol' balances best at powers of two).
+        Number of draws, in :data:`contact.study.sample_size.SAMPLES_RANGE` ([2, 10^7], as
+        ``ltca tolerance -n``; Sobol' balances best at powers of two).
     method : str
         ``"sobol"`` (scrambled, :class:`scipy.stats.qmc.Sobol`), ``"lhs"``
         (:class:`scipy.stats.qmc.LatinHypercube`) or ``"random"``.
@@ -131,8 +133,9 @@ def draw_points(distributions: Mapping[str, Any], n: int, *, method: str = "sobo
         if not callable(getattr(dist, "ppf", None)):
             raise InputError(f"{name}: must be a scipy.stats distribution (with ppf), got "
                              f"{type(dist).__name__}")
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2:
-        raise InputError(f"n: must be an integer >= 2, got {n!r}")
+    low, high = SAMPLES_RANGE
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not low <= n <= high:
+        raise InputError(f"n: {samples_message(n)}")
     if method not in METHODS:
         raise InputError(f"method: must be one of {', '.join(METHODS)}, got {method!r}")
     d = len(distributions)
@@ -159,7 +162,7 @@ def draw_points(distributions: Mapping[str, Any], n: int, *, method: str = "sobo
 def sample(
     case: Case | str | os.PathLike[str] | None,
     distributions: Mapping[str, Any],
-    n: int,
+    n: int = DEFAULT_SAMPLES,
     *,
     method: str = "sobol",
     seed: int | None = 0,
@@ -176,8 +179,11 @@ def sample(
     distributions : mapping of str to scipy.stats frozen distribution
         e.g. ``{"delta_E": scipy.stats.norm(0, 0.05), "delta_P": …}`` ([mm], [rad]
         for ``delta_Sigma``, [1] for ``deviation_scale``; :data:`POINT_INPUTS`).
-    n : int
-        Number of draws.
+    n : int, optional
+        Number of draws: default 256 (:data:`contact.study.sample_size.DEFAULT_SAMPLES`),
+        as ``ltca tolerance -n``; accepted 2 to 10^7 as the command accepts (before
+        plugin83 ``n`` was required and the command's parser let ``-n 1`` through to
+        this function's refusal).
     method : str
         ``"sobol"`` (default), ``"lhs"`` or ``"random"``, as :func:`draw_points`.
     seed : int or None, optional

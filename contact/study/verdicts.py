@@ -88,6 +88,13 @@ The checks and their thresholds, per kind of result (:data:`CHECKS`):
 * ``root_stress`` (fail/attention): the FE peak root stress against ISO 10300-3's σ_FP;
   ``scuffing_standard`` (attention): the standard's S_B below 1 beside the judged one —
   :mod:`contact.study.verdict_checks` (issue 72).
+* ``efficiency`` (never made): ``ltca run``'s table and the report print the mean
+  mechanical efficiency (``/friction/efficiency_mean``), which no limit judges — a gear
+  set's efficiency has no standard's minimum, it is a target of the design's — so every
+  analysis with ``/friction`` says it among its ``not checked`` lines
+  (:data:`EFFICIENCY_NOT_JUDGED`; issue 71, plugin83). The chain refuses an efficiency
+  step's NaN or out-of-range value before it is written
+  (:func:`contact.chain_contract.check_efficiency`).
 
 Findings a reader trusts: an edge share below :data:`EDGE_SHARE_MIN` is no finding (the
 discretisation's); findings are worst first, then in :data:`CHECK_ORDER`; the
@@ -171,8 +178,9 @@ from geometry.core.text import plain_number
 if TYPE_CHECKING:
     from contact.load_capacity.durability import StaticContactStrength
 
-__all__ = ["CHECKS", "CHECK_ORDER", "DUTY_MIN_SAFETY", "EDGE_SHARE_MIN", "GRADE",
-           "LTE_FAIL_FACTOR", "LTE_LIMIT", "MICROPITTING_MIN", "SCUFFING_MIN", "SEVERITIES",
+__all__ = ["CHECKS", "CHECK_ORDER", "DUTY_MIN_SAFETY", "EDGE_SHARE_MIN",
+           "EFFICIENCY_NOT_JUDGED", "GRADE", "LTE_FAIL_FACTOR", "LTE_LIMIT",
+           "MICROPITTING_MIN", "SCUFFING_MIN", "SEVERITIES",
            "VH_SAME_POSITION", "VH_TARGET_TOLERANCE", "EdgePeaks", "Finding", "Verdict",
            "edge_peaks", "flank_static_strength", "quiet_transfer", "shown_above",
            "shown_below", "verdict", "weaker_contact_curve"]
@@ -1513,7 +1521,7 @@ _KINDS: Mapping[str, Callable[..., tuple[list[Finding], list[str]]]] = {
 CHECKS: Mapping[str, tuple[str, ...]] = {
     "analysis": ("implausible", "flank_pressure", "edge_contact", "plastic_edges",
                  "edge_pressure", "certification", "lte", "friction_extrapolated", "scuffing",
-                 "micropitting", "rating", "root_stress", "scuffing_standard"),
+                 "micropitting", "rating", "root_stress", "scuffing_standard", "efficiency"),
     "duty cycle": ("damage", "safety", "implausible", "static", "edge_contact",
                    "plastic_edges", "edge_pressure", "certification", "bending",
                    "illustrative", "lte"),
@@ -1574,6 +1582,12 @@ def verdict(result: xr.DataTree | xr.Dataset, *, lte_limit: float = LTE_LIMIT) -
                    _unchecked(result, kind, checks), tuple(notes))
 
 
+#: why the ``efficiency`` check is never made (module docstring): the number is printed
+#: (``ltca run``'s table, the report's summary) but judged by no limit
+EFFICIENCY_NOT_JUDGED = ("efficiency_mean printed, judged by no limit: a gear set's "
+                         "mechanical efficiency has no standard's minimum; compare it with "
+                         "the design's target")
+
 #: the group an analysis check reads and why it is missing when the group is
 _ANALYSIS_GROUPS = {
     "ltca": "no /ltca group: the tree holds no loaded contact",
@@ -1592,7 +1606,8 @@ def _unchecked(result, kind: str, checks: list[str]) -> tuple[tuple[str, str], .
     missing = [c for c in CHECKS[kind] if c not in checks]
     if kind != "analysis":
         return tuple((c, "the result lacks its data") for c in missing)
-    group = {"friction_extrapolated": "friction", "scuffing": "scuffing_micropitting",
+    group = {"friction_extrapolated": "friction", "efficiency": "friction",
+             "scuffing": "scuffing_micropitting",
              "micropitting": "scuffing_micropitting", "rating": "rating"}
     out = []
     from contact.study.verdict_checks import CHECKS as MORE
@@ -1610,6 +1625,8 @@ def _unchecked(result, kind: str, checks: list[str]) -> tuple[tuple[str, str], .
         why = (_ANALYSIS_GROUPS[g] if _group(result, g) is None
                else f"/{g} lacks the variables it reads")
         sm = _group(result, g)
+        if c == "efficiency" and sm is not None and "efficiency_mean" in sm:
+            why = EFFICIENCY_NOT_JUDGED
         if c in ("scuffing", "micropitting") and sm is not None and f"{c}_safety" in sm:
             # there, NaN at every torque: the step's own reason (its comment)
             said = str(sm[f"{c}_safety"].attrs.get("comment", ""))
