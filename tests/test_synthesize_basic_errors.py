@@ -322,6 +322,38 @@ def test_a_pair_no_gear_process_synthesises_says_each_process_s_reason(tmp_path,
            "surface of action monotonically" in " ".join(err.split())
     assert "(2) the generated gear, its pinion on the gear's crown gear: synthesis: the " \
            "contact near the mean point could not be followed" in " ".join(err.split())
+    # the cause of (2) (issue 71, branch miter83): the drive pinion's TE at +/-pitch/4
+    # without the modified roll, against the parabola's level there. Independent of the
+    # synthesis: h = pitch/4 = 2 pi / 12 / 4 = 0.1309 rad, and the level a21 h^2 / 2 with
+    # a21 = 2 te_level / pitch^2 is te_level (1/4)^2 = 45 / 16 = 2.8125 urad (the default
+    # te_level, docs/synthesis.md), printed to 3 digits
+    said = re.search(r"without it the TE at \+/-([0-9.]+) rad is ([-+0-9.]+) / ([-+0-9.]+) "
+                     r"urad against the prescribed parabola's ([0-9.]+) urad",
+                     " ".join(err.split()))
+    assert said is not None
+    h, plus, minus, level = (float(v) for v in said.groups())
+    assert h == pytest.approx(2 * math.pi / 12 / 4, abs=5e-5)  # printed to 4 digits
+    assert level == pytest.approx(45.0 / 16.0, abs=5e-3)  # printed to 3 digits
+    # reported only as a cause: beyond ten levels (measured +191.8 / -1050 urad)
+    assert max(abs(plus), abs(minus)) > 10 * level
+
+
+def test_the_modified_roll_s_cause_is_named_only_beyond_ten_levels():
+    """The cause text of a failed modified-roll step (``modified_roll._beyond_text``):
+    empty where the TE without the modified roll is not measured (a warm start) or within
+    ten levels of the parabola (a miss the modified roll is made for); else the TE at both
+    rolls in urad (rad x 1e6, written to 4 digits) and the parabola's level."""
+    import numpy as np
+
+    from geometry.synthesis.modified_roll import _beyond_text
+
+    level, h, coef = 2.8125e-6, 0.1309, np.array([-112.2, 6346.2])
+    assert _beyond_text(None, level, h, coef) == ""
+    assert _beyond_text(np.array([10 * level, -10 * level]), level, h, coef) == ""
+    text = _beyond_text(np.array([191.8e-6, -1050.47e-6]), level, h, coef)
+    assert "6D -112, 24E 6.35e+03" in text
+    assert "TE at +/-0.1309 rad is +191.8 / -1050 urad" in text
+    assert "prescribed parabola's 2.81 urad" in text
 
 
 def test_a_relief_the_blade_cannot_make_reaches_the_command_as_itself(monkeypatch):

@@ -242,12 +242,16 @@ def tune_roll(tools: PinionTools, pair: ToothPair, start, rate, *, a21: float,
                 return x, at, jac, float(np.abs(g0).max())
             dx = np.linalg.solve(jac, -g0)
             x_new = x + dx
-            g_new, at = g(x_new, at)
+            try:
+                g_new, at = g(x_new, at)
+            except InputError as err:
+                raise InputError(f"{err}{_beyond_text(untuned, level, h, x_new)}") from err
             # Broyden update of the Jacobian
             jac = jac + np.outer(g_new - g0 - jac @ dx, dx) / (dx @ dx)
             x, g0 = x_new, g_new
         raise InputError("synthesis: the modified roll could not put the TE on the "
-                         f"prescribed parabola (miss {np.abs(g0).max() * 1e6:.3g} urad)")
+                         f"prescribed parabola (miss {np.abs(g0).max() * 1e6:.3g} urad)"
+                         f"{_beyond_text(untuned, level, h, x)}")
 
     def kept(x, at, jac, miss):
         if warm is not None:
@@ -255,6 +259,7 @@ def tune_roll(tools: PinionTools, pair: ToothPair, start, rate, *, a21: float,
             warm.miss = miss
         return tools._replace(settings=replace(tools.settings, modified_roll=(0.0, *x)))
 
+    untuned = None  # the TE at ±h without the modified roll (known on the cold start)
     if warm is not None and warm.fraction == fraction and warm.coef is not None:
         try:
             x0 = warm.coef.copy()
@@ -267,6 +272,7 @@ def tune_roll(tools: PinionTools, pair: ToothPair, start, rate, *, a21: float,
             return kept(*out)
     x = np.zeros(2)
     g0, at = g(x)
+    untuned = g0 + level  # the TE at ±h without the modified roll (its cause, if it fails)
     steps = np.array([0.05, 0.5])
     jac = np.column_stack([(g(x + steps[i] * np.eye(2)[i], at)[0] - g0) / steps[i]
                            for i in range(2)])
@@ -274,6 +280,30 @@ def tune_roll(tools: PinionTools, pair: ToothPair, start, rate, *, a21: float,
     if warm is not None:
         warm.cold += 1
     return kept(*out)
+
+
+def _beyond_text(untuned: np.ndarray | None, level: float, h: float,
+                 coef: np.ndarray) -> str:
+    """The cause a failed modified-roll step is reported with: the TE the flank has at ±h
+    without the modified roll (``untuned`` [rad], None where not measured) against the
+    parabola's ``level`` [rad] there, and the coefficients (6D, 24E) Newton's step asked
+    for. Empty where the TE without the modified roll is within ten levels of the parabola
+    (a miss the modified roll is made for).
+
+    Why: the face-milled spiral bevel miter 12x12 (issue 71, docs/own_gear_set.md, "The
+    12-tooth miter: a legitimate design, the pinion's higher-order TE") stopped on "the
+    contact near the mean point could not be followed to roll −0.03272 rad": its drive
+    pinion's TE at ±pitch/4 was +192 / −1050 urad against the parabola's 2.8 urad, and
+    the first Newton step asked for 6D −350, 24E 1.72e4, where the pinion flank is no
+    longer generated near M — a message that named the step, not the cause."""
+    if untuned is None or np.abs(untuned).max() <= 10.0 * level:
+        return ""
+    return (f" (the modified roll's step to 6D {coef[0]:.3g}, 24E {coef[1]:.3g}: without "
+            f"it the TE at +/-{h:.4g} rad is {untuned[0] * 1e6:+.4g} / "
+            f"{untuned[1] * 1e6:+.4g} urad against the prescribed parabola's "
+            f"{level * 1e6:.3g} urad, a higher-order departure of the mismatched pinion "
+            "that 6D and 24E cannot correct; another path_angle, a longer ellipse_length "
+            "or a larger cutter (rc0) asks the pinion for another mismatch)")
 
 
 class ThirdOrderTE(NamedTuple):
