@@ -211,7 +211,9 @@ def face_hobbing_pinion_tools(point, normal, target_shape, *, side: str, gear_cu
         the solution's start (:func:`~geometry.synthesis.pinion.solve_tool_unknowns`); the
         cutter pose of each tool is solved from the last one's (``WarmTools.inner``): the
         same pose to the inner solve's tolerances (1e-15), in 5–10 evaluations against
-        ~40 from the conjugate pose.
+        ~40 from the conjugate pose. Where the solve from ``warm`` fails it is repeated
+        cold and ``warm`` reset (a series never loses a root the cold solve finds; the
+        FH 19×57 by Method 3, docs/own_gear_set.md).
 
     Returns
     -------
@@ -222,7 +224,9 @@ def face_hobbing_pinion_tools(point, normal, target_shape, *, side: str, gear_cu
     Raises
     ------
     InputError
-        If the generated flank cannot be made to match the target.
+        If the generated flank cannot be made to match the target; the curvature's
+        error names where the tool solve stopped (r_p, κ_pr, R_a against the start,
+        those within 5 % of a bound, the steps from there that make no tool and why).
 
     Notes
     -----
@@ -369,9 +373,10 @@ def _pinion_tools(point, normal, target_shape, *, side, gear_cutter_centre,
     scale = np.array([10.0, 1e-3, 0.1])
     x = solve_tool_unknowns(residual, start, scale, warm, last)
     ev = evaluate(x)
+    # (a series' failure is solved cold next: the diagnosis is the cold solve's)
     return _checked(ev, m, nn, tb, target, side,
-                    lambda: _stop_text(x, start, scale, evaluate, why,
-                                       edge_radius))
+                    (lambda: "solved cold next") if warm is not None else
+                    (lambda: _stop_text(x, start, scale, evaluate, why, edge_radius)))
 
 
 def _checked(ev, m, nn, tb, target, side: str, stop) -> PinionTools:
