@@ -98,19 +98,87 @@ def _swept_point(tool: _HobbingTool, h_m: float, cradle_axis: np.ndarray, kappa_
     return x, unit(np.cross(t_s, t_th))
 
 
+#: the pose unknowns' typical sizes (centre offset [mm] (3), blade phase and angle [rad])
+_POSE_SCALE = np.array([1.0, 1.0, 1.0, 1e-2, 1e-2])
+
+
 def _solved_pose(res, warm: WarmTools | None) -> np.ndarray | None:
     """The cutter pose unknowns (centre offset [mm] (3), blade phase and blade angle
     changes [rad]) where ``res`` (5,) vanishes to 1e-10, by least squares from the
     conjugate pose (zeros) or, in a series (``warm``), from the last pose solved (kept
-    there); None where it does not vanish."""
-    y0 = np.zeros(5) if warm is None or warm.inner is None else warm.inner
-    sol = least_squares(res, y0, x_scale=np.array([1.0, 1.0, 1.0, 1e-2, 1e-2]),
-                        xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=100)
+    there) and from the conjugate pose where that fails (:func:`_pose_from`); None where
+    it does not vanish from either."""
+    starts = [np.zeros(5)]
+    if warm is not None and warm.inner is not None:
+        starts.insert(0, np.asarray(warm.inner, float))
+    for y0 in starts:
+        y = _pose_from(res, y0)
+        if y is not None:
+            if warm is not None:
+                warm.inner = y
+            return y
+    return None
+
+
+def _pose_from(res, y0: np.ndarray) -> np.ndarray | None:
+    """The root of the pose residual ``res`` (5,) by least squares from ``y0`` (5,), or
+    None where max |res| stays above 1e-10. The unknown is the step from ``y0``: the
+    trust-region method's first radius is |x0 / x_scale| (1 where x0 = 0), so a start a
+    rounding error off zero (a series' conjugate pose, ~3e-15) began with a 3e-13 radius
+    and stopped on ``xtol`` at max |res| 1.3e-6 (the FH 19x57 by Method 3, round 23);
+    from zero the radius and the iterates are as before, bit for bit."""
+    if not y0.any():
+        sol = least_squares(res, y0, x_scale=_POSE_SCALE, xtol=1e-15, ftol=1e-15,
+                            gtol=1e-15, max_nfev=100)
+        y = sol.x
+    else:
+        sol = least_squares(lambda z: res(y0 + z), np.zeros(5), x_scale=_POSE_SCALE,
+                            xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=100)
+        y = y0 + sol.x
     if np.abs(sol.fun).max() > 1e-10:
         return None
-    if warm is not None:
-        warm.inner = sol.x
-    return sol.x
+    return y
+
+
+def _no_blade_text(r_p: float, k_pr: float, edge_radius: float) -> str:
+    """Why :func:`_hobbing_tool` makes no tool for the blade (r_p [mm], κ_pr [1/mm])."""
+    if r_p <= 0:
+        return "r_p at or below 0"
+    if abs(k_pr) * max(edge_radius, 1.0) >= 0.5:
+        return "blade profile curvature |κ_pr| at or above 0.5/max(edge radius, 1 mm)"
+    return "no blade or Generate settings for it"
+
+
+_UNKNOWNS = (("r_p", "mm"), ("κ_pr", "1/mm"), ("R_a", ""))
+
+
+def _stop_text(x, start, scale, evaluate, why, edge_radius: float = 0.0) -> str:
+    """Where the tool solve stopped and why: the unknowns (r_p [mm], κ_pr [1/mm], R_a)
+    reached against their start, those within 5 % of their bound (r_p, R_a > 0;
+    |κ_pr| max(edge radius, 1 mm) < 0.5, :func:`_hobbing_tool`), and each step of
+    1e-3 × ``scale`` from there that makes no tool (``evaluate`` None; the reason its
+    trial left in ``why[0]``), else a local minimum of the shape residual."""
+    def fmt(v):
+        return ", ".join(f"{n} {float(a):.6g}{' ' + un if un else ''}"
+                         for (n, un), a in zip(_UNKNOWNS, v, strict=True))
+    near = [name for name, frac in (("r_p", x[0] / start[0]),
+                                    ("κ_pr", 1.0 - 2.0 * abs(x[1]) * max(edge_radius, 1.0)),
+                                    ("R_a", x[2] / start[2])) if frac < 0.05]
+    walls = []
+    for i, (name, unit_) in enumerate(_UNKNOWNS):
+        for sgn in (1.0, -1.0):
+            xt = np.array(x, float)
+            xt[i] += sgn * 1e-3 * scale[i]
+            why[0] = ""
+            if evaluate(xt) is None:
+                walls.append(f"{name} {'+' if sgn > 0 else '-'}{1e-3 * scale[i]:.3g}"
+                             f"{' ' + unit_ if unit_ else ''}: {why[0] or 'no tool'}")
+    text = f"the tool solve stopped at {fmt(x)} (start {fmt(start)})"
+    if near:
+        text += f"; {', '.join(near)} within 5 % of its bound"
+    if walls:
+        return text + "; no tool a step away, " + "; ".join(walls)
+    return text + ", a local minimum of the shape residual with a tool on every side"
 
 
 def face_hobbing_pinion_tools(point, normal, target_shape, *, side: str, gear_cutter_centre,
@@ -143,7 +211,9 @@ def face_hobbing_pinion_tools(point, normal, target_shape, *, side: str, gear_cu
         the solution's start (:func:`~geometry.synthesis.pinion.solve_tool_unknowns`); the
         cutter pose of each tool is solved from the last one's (``WarmTools.inner``): the
         same pose to the inner solve's tolerances (1e-15), in 5–10 evaluations against
-        ~40 from the conjugate pose.
+        ~40 from the conjugate pose. Where the solve from ``warm`` fails it is repeated
+        cold and ``warm`` reset (a series never loses a root the cold solve finds; the
+        FH 19×57 by Method 3, docs/own_gear_set.md).
 
     Returns
     -------
@@ -154,7 +224,9 @@ def face_hobbing_pinion_tools(point, normal, target_shape, *, side: str, gear_cu
     Raises
     ------
     InputError
-        If the generated flank cannot be made to match the target.
+        If the generated flank cannot be made to match the target; the curvature's
+        error names where the tool solve stopped (r_p, κ_pr, R_a against the start,
+        those within 5 % of a bound, the steps from there that make no tool and why).
 
     Notes
     -----
@@ -175,6 +247,28 @@ def face_hobbing_pinion_tools(point, normal, target_shape, *, side: str, gear_cu
     toolkit's own model (:func:`geometry.machine.flank_point.flank_points`) has the target shape
     operator, as :func:`pinion_generate_tools` (accepted below 1e-8 1/mm).
     """
+    kw = dict(side=side, gear_cutter_centre=gear_cutter_centre,
+              gear_cutter_axis=gear_cutter_axis, gear_edge_direction=gear_edge_direction,
+              tip_height=tip_height, cradle_point=cradle_point, cradle_axis=cradle_axis,
+              ratio_of_roll=ratio_of_roll, blade_groups=blade_groups,
+              pinion_blank=pinion_blank, edge_radius=edge_radius, start=start)
+    if warm is None:
+        return _pinion_tools(point, normal, target_shape, warm=None, **kw)
+    try:
+        return _pinion_tools(point, normal, target_shape, warm=warm, **kw)
+    except InputError:
+        # a series' start (the last solution and its pose) never loses a root the cold
+        # synthesis finds: solve cold, the series restarting from that solution
+        warm.__init__()
+        return _pinion_tools(point, normal, target_shape, warm=None, **kw)
+
+
+def _pinion_tools(point, normal, target_shape, *, side, gear_cutter_centre,
+                  gear_cutter_axis, gear_edge_direction, tip_height, cradle_point,
+                  cradle_axis, ratio_of_roll, blade_groups, pinion_blank, edge_radius,
+                  start, warm) -> PinionTools:
+    """One solve of :func:`face_hobbing_pinion_tools` (its parameters), from ``warm``
+    where given."""
     m = np.asarray(point, float)
     nn = unit(np.asarray(normal, float))
     target = np.asarray(target_shape, float)
@@ -214,9 +308,12 @@ def face_hobbing_pinion_tools(point, normal, target_shape, *, side: str, gear_cu
     if start is None:
         start = (r_p0, 0.0, ratio_of_roll)
 
+    why = [""]  # the reason the last trial made no tool (the error's diagnosis)
+
     def tool_for(x):
         r_p, k_pr, ratio = x
         if ratio <= 0:
+            why[0] = "R_a at or below 0"
             return None
         kappa_g = kappa / ratio
         cp = cradle_for_meshing(m, nn, cp0, ca, ratio)
@@ -234,8 +331,14 @@ def face_hobbing_pinion_tools(point, normal, target_shape, *, side: str, gear_cu
                 ns = -ns
             return np.concatenate([xs - m, tb.T @ ns])
 
+        if make(np.zeros(5)) is None:
+            why[0] = _no_blade_text(r_p, k_pr, edge_radius)
+            return None
         y = _solved_pose(res, warm)
-        return None if y is None else make(y)
+        if y is None:
+            why[0] = "no cutter pose puts the generating surface through M with its normal"
+            return None
+        return make(y)
 
     # the envelope parameters of M on the last generated flank: the next trial's tool
     # differs by a finite-difference step or a least-squares step, so Newton starts there
@@ -249,6 +352,7 @@ def face_hobbing_pinion_tools(point, normal, target_shape, *, side: str, gear_cu
         pt = flank_points(t.blade, t.settings, pinion_blank, "right", [zm], [pm],
                           guess=last[0])
         if not pt.ok[0]:
+            why[0] = "M is not generated on the flank (the envelope solve fails)"
             return None
         last[0] = pt.params
         rz = _rot_z(t.blank_phase)
@@ -266,21 +370,41 @@ def face_hobbing_pinion_tools(point, normal, target_shape, *, side: str, gear_cu
         d = tb.T @ (ev[3] - target) @ tb
         return pinion_blank.outer_cone_distance * np.array([d[0, 0], d[0, 1], d[1, 1]])
 
-    x = solve_tool_unknowns(residual, start, np.array([10.0, 1e-3, 0.1]), warm, last)
+    scale = np.array([10.0, 1e-3, 0.1])
+    x = solve_tool_unknowns(residual, start, scale, warm, last)
     ev = evaluate(x)
-    if ev is None:
+    # (a series' failure is solved cold next: the diagnosis is the cold solve's)
+    return _checked(ev, m, nn, tb, target, side,
+                    (lambda: "solved cold next") if warm is not None else
+                    (lambda: _stop_text(x, start, scale, evaluate, why, edge_radius)))
+
+
+def _checked(ev, m, nn, tb, target, side: str, stop) -> PinionTools:
+    """The solved tool ``ev`` (:func:`_pinion_tools`' evaluation) where it generates M with
+    its normal and the target shape (1e-7 mm, 1e-9, 1e-8 1/mm); else InputError, the
+    curvature's naming where the solve stopped (``stop()``, :func:`_stop_text`)."""
+    miss = None if ev is None else _miss(ev, m, nn, tb, target)
+    if miss is None:
         raise InputError("synthesis: the face-hobbing pinion settings left the generating "
                          "range")
-    t, r_gen, n_gen, w_gen = ev
-    d = tb.T @ (w_gen - target) @ tb
-    err = float(np.abs(d).max())
-    if np.linalg.norm(r_gen - m) > 1e-7 or np.linalg.norm(n_gen - nn) > 1e-9:
+    err, dr, dn = miss
+    if dr > 1e-7 or dn > 1e-9:
         raise InputError("synthesis: the generated face-hobbing pinion flank misses the mean "
-                         f"point ({np.linalg.norm(r_gen - m):.3g} mm)")
+                         f"point ({dr:.3g} mm)")
     if err > 1e-8:
         raise InputError(
             f"synthesis: the pinion {('concave' if side == 'outside' else 'convex')} flank "
             f"could not be given the required curvature at the mean point (residual "
-            f"{err:.3g} 1/mm); change the path angle, the TE level or the ellipse length")
-    return PinionTools(t.blade, t.settings, t.blank_phase, err,
-                       float(np.linalg.norm(r_gen - m)), float(np.linalg.norm(n_gen - nn)))
+            f"{err:.3g} 1/mm; {stop()}); change the "
+            f"path angle, the TE level or the ellipse length")
+    t = ev[0]
+    return PinionTools(t.blade, t.settings, t.blank_phase, err, dr, dn)
+
+
+def _miss(ev, m, nn, tb, target) -> tuple[float, float, float]:
+    """The evaluated tool's miss at M: max |shape − target| in the tangent basis [1/mm],
+    |r − M| [mm] and |n − n_M| [1]."""
+    _, r_gen, n_gen, w_gen = ev
+    d = tb.T @ (w_gen - target) @ tb
+    return (float(np.abs(d).max()), float(np.linalg.norm(r_gen - m)),
+            float(np.linalg.norm(n_gen - nn)))
