@@ -159,10 +159,34 @@ def check_step_output(step: str, f: Callable[..., Any], state: Any, returned: An
         raise PluginError(f"{who} left a /ltca group without the dimension 'torque' (the "
                           "later steps and the file read the LTCA per torque)")
     if "/friction" in groups and "/ltca" in groups:
-        check_efficiency(who, groups["/friction"], groups["/ltca"].sizes["torque"])
+        check_efficiency(who, groups["/friction"], groups["/ltca"].sizes["torque"],
+                         uncertified_torques(groups["/ltca"]))
 
 
-def check_efficiency(who: str, friction: xr.Dataset, n_torque: int) -> None:
+def uncertified_torques(ltca: xr.Dataset) -> np.ndarray:
+    """Per torque of ``ltca``, whether a roll position has no certified contact solution
+    (``found`` 0): there the built-in friction step writes a NaN efficiency with its reason
+    (never the loss-free 100 %), which :func:`check_efficiency` accepts.
+
+    Parameters
+    ----------
+    ltca : xarray.Dataset
+        The ``/ltca`` group, over ``torque``; without ``found`` every torque counts as
+        certified.
+
+    Returns
+    -------
+    numpy.ndarray of bool, shape (n_torque,)
+    """
+    n = ltca.sizes["torque"]
+    if "found" not in ltca.variables:
+        return np.zeros(n, dtype=bool)
+    found = np.asarray(ltca.variables["found"].values) > 0
+    return ~found.reshape(n, -1).all(axis=1)
+
+
+def check_efficiency(who: str, friction: xr.Dataset, n_torque: int,
+                     uncertified: np.ndarray | None = None) -> None:
     """Refuse a ``/friction`` group whose ``efficiency_mean`` the report and the summary
     table could not print as the mean mechanical efficiency per torque (issue 71).
 
@@ -174,6 +198,9 @@ def check_efficiency(who: str, friction: xr.Dataset, n_torque: int) -> None:
         The ``/friction`` group.
     n_torque : int
         The number of torques of ``/ltca``.
+    uncertified : numpy.ndarray of bool, shape (n_torque,), optional
+        Torques whose loaded contact has an uncertified roll (:func:`uncertified_torques`):
+        a NaN efficiency is accepted there (the analysis failed and says so; issue 71).
 
     Raises
     ------
@@ -196,6 +223,8 @@ def check_efficiency(who: str, friction: xr.Dataset, n_torque: int) -> None:
     except (TypeError, ValueError):
         raise PluginError(f"{where} of dtype {eff.dtype}; it must be numbers [1]") from None
     bad = ~(np.isfinite(values) & (values > 0.0) & (values <= 1.0))
+    if uncertified is not None:
+        bad &= ~(np.isnan(values) & np.asarray(uncertified, dtype=bool).reshape(values.shape))
     if np.any(bad):
         raise PluginError(f"{where} {float(values[bad][0]):.6g} at {int(np.count_nonzero(bad))} of "
                           f"{values.size} torque(s); accepted a finite 0 < efficiency_mean "

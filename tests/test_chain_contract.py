@@ -176,6 +176,29 @@ def test_the_efficiency_bounds_take_a_fraction_of_one():
                          xr.Dataset({"efficiency_mean": ("torque", [0.97])}), 2)
 
 
+def test_a_nan_efficiency_is_accepted_only_where_the_loaded_contact_failed():
+    """A failed analysis (a torque with an uncertified roll, ``found`` 0) has no forces and
+    the built-in step writes NaN with its reason (tests/test_failed_analysis.py): the
+    contract accepts NaN there and only there — at the certified torque it is refused."""
+    from contact.chain_contract import check_efficiency, uncertified_torques
+
+    ltca = xr.Dataset({"found": (("torque", "roll"), [[1, 1, 1], [1, 0, 1]])},
+                      coords={"torque": [50.0, 250.0]})
+    unc = uncertified_torques(ltca)
+    assert unc.tolist() == [False, True]
+    fr = xr.Dataset({"efficiency_mean": ("torque", [0.97, float("nan")])})
+    check_efficiency("steps.efficiency", fr, 2, unc)
+    with pytest.raises(PluginError, match=r"efficiency_mean nan at 1 of 2 torque"):
+        check_efficiency("steps.efficiency",
+                         xr.Dataset({"efficiency_mean": ("torque", [float("nan"), 0.97])}), 2,
+                         unc)
+    # a percentage is refused at the uncertified torque too: only NaN is the failed mark
+    with pytest.raises(PluginError, match=r"efficiency_mean 97 at 1 of 2"):
+        check_efficiency("steps.efficiency",
+                         xr.Dataset({"efficiency_mean": ("torque", [0.97, 97.0])}), 2, unc)
+    assert uncertified_torques(xr.Dataset(coords={"torque": [1.0]})).tolist() == [False]
+
+
 def test_the_built_in_efficiency_passes_the_check():
     """The built-in step's /friction on the default case passes (97.42 % at 250 N·m, the
     value ``ltca run`` prints with these settings) and a user step wrapping it too."""
