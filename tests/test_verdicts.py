@@ -715,3 +715,46 @@ def test_the_default_case_meets_the_lte_limit(default_tree):
     lte = default_tree["ltca"]["lte_peak_to_peak"].values
     assert np.all(lte < LTE_LIMIT)
     assert "lte" in v.checks and not [f for f in v.findings if f.check == "lte"]
+
+
+def test_a_duty_cycle_says_its_efficiency_is_not_judged_in_the_runs_words():
+    """Issue 71 (notchecked83): ``ltca duty-cycle`` prints the bins' efficiency and the
+    cycle's; its verdict says it judges neither, in the words of ``ltca run``'s verdict
+    (one function, :func:`efficiency_not_judged`), and nothing where the file has none."""
+    from contact.study.verdicts import DUTY_EFFICIENCY, efficiency_not_judged
+
+    ds = _duty().assign(efficiency=("bin", [0.975, 0.981]), cycle_efficiency=((), 0.978))
+    v = verdict(ds)
+    said = efficiency_not_judged(DUTY_EFFICIENCY)
+    assert ("efficiency", said) in v.unchecked and "efficiency" not in v.checks
+    assert f"  not checked: efficiency ({said})" in v.lines()
+    # the same words as the analysis' line, only the printed variables differ
+    assert said == EFFICIENCY_NOT_JUDGED.replace("efficiency_mean",
+                                                 "efficiency and cycle_efficiency")
+    assert v.severity == "pass"  # a not-checked line is no finding
+    # a duty file without the efficiency: not checked for the lack of its data
+    assert ("efficiency", "the result lacks its data") in verdict(_duty()).unchecked
+
+
+def test_a_study_summary_says_what_it_prints_and_does_not_judge():
+    """``ltca sweep``/``ltca tolerance`` have no verdict: their summaries end with the
+    not-checked lines of what they print (:func:`study_not_checked`), the efficiency in
+    the words of the analysis' verdict."""
+    from contact.study.verdicts import (
+        STUDY_NOT_JUDGED,
+        efficiency_not_judged,
+        not_checked_line,
+        study_not_checked,
+    )
+
+    ds = xr.Dataset({"lte_peak_to_peak": ("point", [40.0]),
+                     "pressure_max_flank": ("point", [1500.0]),
+                     "efficiency": ("point", [0.97])})
+    got = study_not_checked(ds)
+    assert got == [(("lte_peak_to_peak", "pressure_max_flank"), STUDY_NOT_JUDGED),
+                   (("efficiency",), efficiency_not_judged("efficiency"))]
+    assert not_checked_line(*got[1]) == (
+        "  not checked: efficiency (efficiency printed, judged by no limit: a gear set's "
+        "mechanical efficiency has no standard's minimum; compare it with the design's "
+        "target)")
+    assert study_not_checked(xr.Dataset()) == []

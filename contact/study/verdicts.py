@@ -120,6 +120,11 @@ static strength (docs/verdicts.md, "Findings a reader trusts").
   ``pressure_max_flank`` where it differs and a note (:attr:`Verdict.notes`) where only
   curves clipped into a flank corner exceed it; a file written before those variables by
   its ``contact_static_limit_exceeded``.
+* ``efficiency`` (never made): the bins' ``efficiency`` and the ``cycle_efficiency``
+  printed (``ltca duty-cycle``'s table and cycle line, the duty-cycle page), judged by no
+  limit: the ``not checked`` line in the analysis' words (:func:`efficiency_not_judged`;
+  issue 71, notchecked83). ``ltca sweep`` and ``ltca tolerance`` have no verdict; their
+  summaries end with the same lines (:func:`study_not_checked`).
 * ``edge_contact``, ``certification`` (attention): bins with edge contact or
   uncertified roll positions; ``plastic_edges`` (attention) bins whose segments at the
   material's contact-pressure limit carry a share of the torque up to
@@ -178,12 +183,13 @@ from geometry.core.text import plain_number
 if TYPE_CHECKING:
     from contact.load_capacity.durability import StaticContactStrength
 
-__all__ = ["CHECKS", "CHECK_ORDER", "DUTY_MIN_SAFETY", "EDGE_SHARE_MIN",
+__all__ = ["CHECKS", "CHECK_ORDER", "DUTY_EFFICIENCY", "DUTY_MIN_SAFETY", "EDGE_SHARE_MIN",
            "EFFICIENCY_NOT_JUDGED", "GRADE", "LTE_FAIL_FACTOR", "LTE_LIMIT",
-           "MICROPITTING_MIN", "SCUFFING_MIN", "SEVERITIES",
-           "VH_SAME_POSITION", "VH_TARGET_TOLERANCE", "EdgePeaks", "Finding", "Verdict",
-           "edge_peaks", "flank_static_strength", "quiet_transfer", "shown_above",
-           "shown_below", "verdict", "weaker_contact_curve"]
+           "MICROPITTING_MIN", "SCUFFING_MIN", "SEVERITIES", "STUDY_NOT_JUDGED",
+           "STUDY_PRINTED", "VH_SAME_POSITION", "VH_TARGET_TOLERANCE", "EdgePeaks", "Finding",
+           "Verdict", "edge_peaks", "efficiency_not_judged", "flank_static_strength",
+           "not_checked_line", "quiet_transfer", "shown_above", "shown_below",
+           "study_not_checked", "verdict", "weaker_contact_curve"]
 
 #: the severities, mildest first (a verdict is the worst of its findings)
 SEVERITIES = ("pass", "attention", "fail")
@@ -311,8 +317,7 @@ class Verdict:
         shown = self.findings if limit is None else self.findings[:limit]
         out = [head] + [f"  {f.severity}: {f.reason}" for f in shown]
         out += [f"  note: {n}" for n in self.notes]
-        out += [f"  not checked: {', '.join(checks)} ({why})"
-                for checks, why in self.not_checked()]
+        out += [not_checked_line(checks, why) for checks, why in self.not_checked()]
         if len(shown) < n:
             out.append(f"  … and {n - len(shown)} more "
                        f"({rest or 'the report lists them all'})")
@@ -1524,7 +1529,7 @@ CHECKS: Mapping[str, tuple[str, ...]] = {
                  "micropitting", "rating", "root_stress", "scuffing_standard", "efficiency"),
     "duty cycle": ("damage", "safety", "implausible", "static", "edge_contact",
                    "plastic_edges", "edge_pressure", "certification", "bending",
-                   "illustrative", "lte"),
+                   "illustrative", "lte", "efficiency"),
     "V-H check": ("degenerate", "target", "map"),
 }
 
@@ -1582,11 +1587,74 @@ def verdict(result: xr.DataTree | xr.Dataset, *, lte_limit: float = LTE_LIMIT) -
                    _unchecked(result, kind, checks), tuple(notes))
 
 
+def efficiency_not_judged(printed: str = "efficiency_mean") -> str:
+    """Why the ``efficiency`` check is never made, in the words every verdict and study
+    summary uses (module docstring; issue 71): ``<printed> printed, judged by no limit: …``.
+
+    Parameters
+    ----------
+    printed : str
+        The variable(s) the result prints: ``"efficiency_mean"`` (``ltca run``, the
+        report), ``"efficiency and cycle_efficiency"`` (a duty cycle), ``"efficiency"`` (a
+        sweep or tolerance study).
+
+    Returns
+    -------
+    str
+        The reason of the ``not checked: efficiency (…)`` line.
+    """
+    return (f"{printed} printed, judged by no limit: a gear set's mechanical efficiency has "
+            "no standard's minimum; compare it with the design's target")
+
+
 #: why the ``efficiency`` check is never made (module docstring): the number is printed
 #: (``ltca run``'s table, the report's summary) but judged by no limit
-EFFICIENCY_NOT_JUDGED = ("efficiency_mean printed, judged by no limit: a gear set's "
-                         "mechanical efficiency has no standard's minimum; compare it with "
-                         "the design's target")
+EFFICIENCY_NOT_JUDGED = efficiency_not_judged()
+
+#: what a duty cycle prints of its efficiency (``ltca duty-cycle``'s table and cycle line,
+#: the duty-cycle page): per bin and over the cycle
+DUTY_EFFICIENCY = "efficiency and cycle_efficiency"
+
+#: the variables ``ltca sweep`` and ``ltca tolerance`` print per torque (their ranges,
+#: their percentiles) that no limit of a study judges: a study has no verdict (only its
+#: plausibility line judges the points)
+STUDY_PRINTED = ("lte_peak_to_peak", "pressure_max_flank", "pressure_max_edge",
+                 "edge_load_share", "root_stress_max")
+
+#: why those are not checked
+STUDY_NOT_JUDGED = ("a study prints their ranges and judges none against the limits of "
+                    "ltca run's verdict; run the case at a point to judge it there")
+
+
+def not_checked_line(checks: tuple[str, ...] | list[str], why: str) -> str:
+    """The line ``  not checked: <checks> (<why>)`` of :meth:`Verdict.lines` and of the
+    study summaries (:func:`study_not_checked`), one wording for all."""
+    return f"  not checked: {', '.join(checks)} ({why})"
+
+
+def study_not_checked(ds: xr.Dataset) -> list[tuple[tuple[str, ...], str]]:
+    """What the summary of a sweep or tolerance study prints but does not judge, as
+    :meth:`Verdict.not_checked` gives it: ``(checks, why)`` per reason — the efficiency
+    (where the study ran an efficiency stage) in the words of ``ltca run``'s verdict
+    (:func:`efficiency_not_judged`), the contact results of :data:`STUDY_PRINTED` it has.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        The study's dataset (:func:`contact.study.sweep`, :func:`contact.study.sample`).
+
+    Returns
+    -------
+    list of (tuple of str, str)
+        Empty where the dataset holds none of them.
+    """
+    out: list[tuple[tuple[str, ...], str]] = []
+    shown = tuple(n for n in STUDY_PRINTED if n in ds)
+    if shown:
+        out.append((shown, STUDY_NOT_JUDGED))
+    if "efficiency" in ds:
+        out.append((("efficiency",), efficiency_not_judged("efficiency")))
+    return out
 
 #: the group an analysis check reads and why it is missing when the group is
 _ANALYSIS_GROUPS = {
@@ -1604,6 +1672,11 @@ def _unchecked(result, kind: str, checks: list[str]) -> tuple[tuple[str, str], .
     analysis' own reason where its root attribute ``load_capacity_not_run`` gives one,
     :func:`contact.run_analysis`), else the data the result lacks."""
     missing = [c for c in CHECKS[kind] if c not in checks]
+    if kind == "duty cycle":  # the efficiency printed per bin and over the cycle
+        ds = result["duty_cycle"].to_dataset() if isinstance(result, xr.DataTree) else result
+        said = efficiency_not_judged(DUTY_EFFICIENCY)
+        return tuple((c, said if c == "efficiency" and "efficiency" in ds
+                      else "the result lacks its data") for c in missing)
     if kind != "analysis":
         return tuple((c, "the result lacks its data") for c in missing)
     group = {"friction_extrapolated": "friction", "efficiency": "friction",
