@@ -96,13 +96,20 @@ def test_the_default_case_is_flagged_for_its_flank_pressure_and_heel_contact(def
     # no check can judge (said, not passed: "the verdict judges all it prints")
     assert {"scuffing", "rating"} <= set(v.checks) and "micropitting" not in v.checks
     # and the efficiency, printed but judged by no limit (issue 71, plugin83)
-    ((check, why), (printed, not_judged)) = v.unchecked
+    ((check, why), (printed, not_judged), *shown) = v.unchecked
     assert check == "micropitting" and why.startswith("micropitting_safety NaN at every torque")
     assert "gives no permissible_specific_film" in why
     assert (printed, not_judged) == ("efficiency", EFFICIENCY_NOT_JUDGED)
     assert lines[3].startswith("  not checked: micropitting (")
     assert lines[4] == f"  not checked: efficiency ({EFFICIENCY_NOT_JUDGED})"
-    assert lines[5].startswith("  … and ") and lines[-1] == lines[5]
+    # and what else the table and the report print that no limit judges (issue 71,
+    # notchecked83): one line per reason, PRINTED_NOT_JUDGED's (no mesh stiffness: this
+    # tree ran without the mesh interface)
+    assert [c for c, _ in shown] == ["lte_mean", "lte_harmonics", "power_loss",
+                                     "pressure_ratio", "root_stress_ratio"]
+    assert lines[5].startswith("  not checked: lte_mean, lte_harmonics (the LTE mean, ")
+    assert lines[7].startswith("  not checked: pressure_ratio, root_stress_ratio (")
+    assert lines[8].startswith("  … and ") and lines[-1] == lines[8]
 
 
 def _tree(**groups: xr.Dataset) -> xr.DataTree:
@@ -758,3 +765,48 @@ def test_a_study_summary_says_what_it_prints_and_does_not_judge():
         "mechanical efficiency has no standard's minimum; compare it with the design's "
         "target)")
     assert study_not_checked(xr.Dataset()) == []
+
+
+def test_a_duty_cycle_judges_the_ratings_safeties_it_prints_as_ltca_run():
+    """Issue 71 (notchecked83): ``ltca duty-cycle`` printed each bin's ISO 10300 S_H, S_F
+    and judged none. The bins are judged against the rating's minima by ``ltca run``'s
+    rule (verdict_checks.root_safety_severity): attention above the design torque (the
+    illustrative cycle's 500 N·m bin at S_H 0.93, measured), fail at or under it."""
+    rated = _duty().assign(
+        iso_contact_safety=(("bin", "member"), [[1.33, 1.33], [0.93, 0.93]]),
+        iso_bending_safety=(("bin", "member"), [[2.6, 2.1], [1.3, 1.09]]),
+        contact_safety_min=((), 1.0), bending_safety_min=((), 1.3),
+        rating_design_torque=((), 250.0))
+    v = verdict(rated)
+    assert "rating" in v.checks
+    got = [(f.severity, f.check, f.reason) for f in v.findings]
+    assert [g[:2] for g in got] == [("attention", "rating")] * 3
+    assert got[0][2].startswith("pinion: ISO 10300 pitting safety S_H 0.93 below S_Hmin 1 "
+                                "(the rating at the bin's torque and speed, as `ltca run` "
+                                "judges it) in bin 1 (lowest: bin 1, 500 N·m); above the "
+                                "rating's design torque 250 N·m")
+    assert got[2][2].startswith("gear: ISO 10300 bending safety S_F 1.09 below S_Fmin 1.3")
+    # S_F 1.3 of the pinion is at its minimum: met (ISO 10300-3: S_F >= S_Fmin)
+    assert not any(r.startswith("pinion: ISO 10300 bending") for _, _, r in got)
+    # at or under the design torque, below the minimum: fail, as ltca run's rating check
+    under = rated.assign(rating_design_torque=((), 500.0))
+    assert {f.severity for f in verdict(under).findings} == {"fail"}
+    # a file without the minima (written before notchecked83): not checked, said
+    old = rated.drop_vars("contact_safety_min")
+    assert "rating" not in verdict(old).checks
+    assert ("rating", "the result lacks its data") in verdict(old).unchecked
+
+
+def test_a_duty_cycle_says_the_rest_it_prints_is_not_judged():
+    """PRINTED_NOT_JUDGED of a duty cycle: the bins' LTE mean, power loss and the cycle's
+    energy, the local safety factors — listed where the file holds them, not otherwise."""
+    from contact.study.verdicts import PRINTED_NOT_JUDGED
+
+    ds = _duty().assign(lte_mean=("bin", [150.0, 600.0]), power_loss=("bin", [300.0, 900.0]),
+                        cycle_energy_lost=((), 1.2),
+                        local_contact_safety=(("bin", "member"), [[2.0, 2.0], [0.9, 0.9]]))
+    names = [c for c, _ in verdict(ds).unchecked]
+    every = [n for names_, *_ in PRINTED_NOT_JUDGED["duty cycle"] for n in names_]
+    assert every == ["lte_mean", "power_loss", "cycle_energy", "local_safety"]
+    assert all(n in names for n in every)
+    assert not set(every) & {c for c, _ in verdict(_duty()).unchecked}

@@ -120,6 +120,11 @@ static strength (docs/verdicts.md, "Findings a reader trusts").
   ``pressure_max_flank`` where it differs and a note (:attr:`Verdict.notes`) where only
   curves clipped into a flank corner exceed it; a file written before those variables by
   its ``contact_static_limit_exceeded``.
+* ``rating`` (fail/attention): each bin's ISO 10300 S_H, S_F (``iso_contact_safety``,
+  ``iso_bending_safety``, printed per bin) against the rating's S_H,min, S_F,min
+  (``contact_safety_min``, ``bending_safety_min``) by ``ltca run``'s rule: fail at or below
+  the rating's ``design_torque``, attention above it (issue 71, notchecked83; a file
+  written before ``contact_safety_min``: not checked).
 * ``efficiency`` (never made): the bins' ``efficiency`` and the ``cycle_efficiency``
   printed (``ltca duty-cycle``'s table and cycle line, the duty-cycle page), judged by no
   limit: the ``not checked`` line in the analysis' words (:func:`efficiency_not_judged`;
@@ -185,7 +190,8 @@ if TYPE_CHECKING:
 
 __all__ = ["CHECKS", "CHECK_ORDER", "DUTY_EFFICIENCY", "DUTY_MIN_SAFETY", "EDGE_SHARE_MIN",
            "EFFICIENCY_NOT_JUDGED", "GRADE", "LTE_FAIL_FACTOR", "LTE_LIMIT",
-           "MICROPITTING_MIN", "SCUFFING_MIN", "SEVERITIES", "STUDY_NOT_JUDGED",
+           "MICROPITTING_MIN", "PRINTED_NOT_JUDGED", "SCUFFING_MIN", "SEVERITIES",
+           "STUDY_NOT_JUDGED",
            "STUDY_PRINTED", "VH_SAME_POSITION", "VH_TARGET_TOLERANCE", "EdgePeaks", "Finding",
            "Verdict", "edge_peaks", "efficiency_not_judged", "flank_static_strength",
            "not_checked_line", "quiet_transfer", "shown_above", "shown_below",
@@ -272,7 +278,9 @@ class Verdict:
     unchecked : tuple of (str, str)
         The checks of the kind (:data:`CHECKS`) that could not be made, each with why
         (the group its data lives in is absent: an analysis tree without ``/ltca`` makes
-        none of the contact checks); a verdict is only as complete as its checks.
+        none of the contact checks); a verdict is only as complete as its checks. After
+        them, the quantities the result prints that no check judges
+        (:data:`PRINTED_NOT_JUDGED`, each with why).
     notes : tuple of str
         What a check left out and why, where no finding says it: a flank peak pressure
         above σ_Hlim in the dataset only through contact curves clipped into a flank
@@ -1342,6 +1350,63 @@ def _bin_misalignment(ds: xr.Dataset, i: int) -> str:
             f"alone{made_up})")
 
 
+def _duty_rating(ds: xr.Dataset) -> list[Finding]:
+    """Each bin's ISO 10300 S_H and S_F (``iso_contact_safety``, ``iso_bending_safety``:
+    the rating at the bin's torque and speed, which ``ltca duty-cycle`` prints per bin)
+    against the rating's S_H,min and S_F,min by ``ltca run``'s rule for its ``rating``
+    check (:func:`contact.study.verdict_checks.root_safety_severity`): fail at or below the
+    rating's design torque, attention above it (a load of finite life, whose damage the
+    cycle counts). One finding per member, safety and severity, naming the bins and the
+    lowest. The static strength is the ``static`` check's (the flank) — a bin's rating
+    above it is not told apart here. Issue 71 (notchecked83): printed, never judged."""
+    from contact.study.verdict_checks import root_safety_severity
+
+    design = float(ds["rating_design_torque"]) if "rating_design_torque" in ds else math.nan
+    torques = np.asarray(ds["torque"].values, float)
+    out = []
+    for name, least, symbol, what in (
+            ("iso_contact_safety", "contact_safety_min", "S_H", "pitting"),
+            ("iso_bending_safety", "bending_safety_min", "S_F", "bending")):
+        if name not in ds or least not in ds:
+            continue
+        smin = float(ds[least])
+        safety = np.asarray(ds[name].transpose("bin", "member").values, float)
+        for k, m in enumerate(str(x) for x in ds["member"].values):
+            judged = [root_safety_severity(float(safety[i, k]), smin, float(t), design)
+                      for i, t in enumerate(torques)]
+            for severity in ("fail", "attention"):
+                bins = [i for i, j in enumerate(judged) if j == severity]
+                if not bins:
+                    continue
+                i = min(bins, key=lambda b: safety[b, k])
+                why = ("at or below the rating's design torque, the rule `ltca run` fails by"
+                       if severity == "fail" else
+                       f"above the rating's design torque {_t(design)}: a load of finite "
+                       "life, the damage over the cycle decides")
+                out.append(Finding(
+                    severity, "rating",
+                    f"{m}: ISO 10300 {what} safety {symbol} "
+                    f"{shown_below(float(safety[i, k]), smin, 2)} below {symbol}min {smin:g} "
+                    f"(the rating at the bin's torque and speed, as `ltca run` judges it) in "
+                    f"bin{'s' * (len(bins) > 1)} {', '.join(str(b) for b in bins)} (lowest: "
+                    f"bin {i}, {_t(float(torques[i]))}); {why}"))
+    return out
+
+
+def _duty_rated(ds: xr.Dataset) -> tuple[list[Finding], list[str]]:
+    """The findings of the checks against the rating's minima where the file has their
+    data (``root_stress``, ``rating``), and those checks."""
+    out: list[Finding] = []
+    checks: list[str] = []
+    if "root_stress_safety" in ds:
+        checks.append("root_stress")
+        out += _duty_root_stress(ds)
+    if "iso_contact_safety" in ds and "contact_safety_min" in ds and "torque" in ds:
+        checks.append("rating")
+        out += _duty_rating(ds)
+    return out, checks
+
+
 def _duty_bending(ds: xr.Dataset) -> list[Finding]:
     """The attention finding of a duty cycle without its bending side, with why."""
     if "root_life" in ds:
@@ -1377,9 +1442,9 @@ def _duty(ds: xr.Dataset) -> tuple[list[Finding], list[str]]:
                     f"{DUTY_MIN_SAFETY:g} at the "
                     f"peak-torque bin (life factor 1): beyond the endurance limit there; "
                     f"the Miner damage {d:.3g} over the cycle decides the life"))
-    if "root_stress_safety" in ds:
-        checks.append("root_stress")
-        findings += _duty_root_stress(ds)
+    rated, made = _duty_rated(ds)
+    findings += rated
+    checks += made
     if "plausibility" in ds:
         from contact.ltca.plausibility import CAUSES
 
@@ -1529,7 +1594,7 @@ CHECKS: Mapping[str, tuple[str, ...]] = {
                  "micropitting", "rating", "root_stress", "scuffing_standard", "efficiency"),
     "duty cycle": ("damage", "safety", "implausible", "static", "edge_contact",
                    "plastic_edges", "edge_pressure", "certification", "bending",
-                   "illustrative", "lte", "efficiency"),
+                   "illustrative", "lte", "rating", "efficiency"),
     "V-H check": ("degenerate", "target", "map"),
 }
 
@@ -1583,8 +1648,8 @@ def verdict(result: xr.DataTree | xr.Dataset, *, lte_limit: float = LTE_LIMIT) -
     elif kind == "duty cycle":
         ds = result["duty_cycle"].to_dataset() if isinstance(result, xr.DataTree) else result
         notes = (_duty_static(ds) or ([], []))[1]
-    return Verdict(kind, _worst_first(findings), tuple(checks),
-                   _unchecked(result, kind, checks), tuple(notes))
+    unchecked = _unchecked(result, kind, checks) + tuple(_printed_not_judged(result, kind))
+    return Verdict(kind, _worst_first(findings), tuple(checks), unchecked, tuple(notes))
 
 
 def efficiency_not_judged(printed: str = "efficiency_mean") -> str:
@@ -1655,6 +1720,61 @@ def study_not_checked(ds: xr.Dataset) -> list[tuple[tuple[str, ...], str]]:
     if "efficiency" in ds:
         out.append((("efficiency",), efficiency_not_judged("efficiency")))
     return out
+
+#: what each kind of result prints (``ltca run``'s table and lines, ``ltca report``'s
+#: page, ``ltca duty-cycle``'s table, lines and page) and no check judges against a
+#: limit, beside the ``efficiency``: per kind, (names, the group — "" for the duty
+#: cycle's dataset — and the variable whose presence means it is printed, why). The
+#: verdict lists them among its ``not checked`` lines where the result holds the variable
+#: (issue 71, notchecked83; docs/verdicts.md, "What the verdict judges of what is
+#: printed").
+PRINTED_NOT_JUDGED: Mapping[str, tuple[tuple[tuple[str, ...], str, str, str], ...]] = {
+    "analysis": (
+        (("lte_mean", "lte_harmonics"), "ltca", "lte_harmonics",
+         "the LTE mean, 1st-3rd harmonics and their RMS* printed, judged by no limit: the "
+         "verdict judges the LTE peak-to-peak (lte); the mean is the static wind-up under "
+         "load, the harmonics the mesh orders of the same curve, for which the toolkit "
+         "holds no limit"),
+        (("mesh_stiffness",), "mesh_interface", "mesh_stiffness_mean",
+         "mesh_stiffness_mean printed (the report), judged by no limit: an input of a "
+         "dynamic model, no criterion of the design"),
+        (("power_loss",), "friction", "power_loss_mean",
+         "power_loss_mean printed (the report), judged by no limit: the efficiency's loss "
+         "in W; compare it with the housing's heat balance"),
+        (("pressure_ratio", "root_stress_ratio"), "rating", "sigma_H",
+         "p_max/σ_H and FE/σ_F printed beside the rating, two measures side by "
+         "side: the verdict judges each side (flank_pressure, root_stress, rating), not "
+         "their ratio"),
+    ),
+    "duty cycle": (
+        (("lte_mean",), "", "lte_mean",
+         "the bins' LTE mean printed, judged by no limit: the verdict judges their LTE "
+         "peak-to-peak (lte); the mean is the static wind-up under load"),
+        (("power_loss", "cycle_energy"), "", "cycle_energy_lost",
+         "the bins' power_loss and the cycle's energy in and lost printed, judged by no "
+         "limit: the efficiency's loss; compare it with the housing's heat balance"),
+        (("local_safety",), "", "local_contact_safety",
+         "the bins' local S_H, S_F (the rating's allowables over the LTCA's peak stresses) "
+         "printed beside the rating's, judged by no limit of their own: the verdict judges "
+         "the rating's S_H, S_F (rating), the FE root's (root_stress), the peak bin's "
+         "(safety) and the Miner damage (damage)"),
+    ),
+}
+
+
+def _printed_not_judged(result, kind: str) -> list[tuple[str, str]]:
+    """The ``(name, why)`` of :data:`PRINTED_NOT_JUDGED` whose variable ``result`` holds."""
+    out = []
+    for names, group, var, why in PRINTED_NOT_JUDGED.get(kind, ()):
+        if kind == "duty cycle":
+            ds = (result["duty_cycle"].to_dataset() if isinstance(result, xr.DataTree)
+                  else result)
+        else:
+            ds = _group(result, group) if isinstance(result, xr.DataTree) else None
+        if ds is not None and var in ds:
+            out += [(n, why) for n in names]
+    return out
+
 
 #: the group an analysis check reads and why it is missing when the group is
 _ANALYSIS_GROUPS = {
