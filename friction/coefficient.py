@@ -1041,6 +1041,11 @@ def is_mu_above_cap(note: str) -> bool:
     -------
     bool
         True for those two warnings (issue 71: ``ltca run`` prints them).
+
+    Notes
+    -----
+    Source: the texts of :func:`_cap` and :func:`_bounded` (this module); the bound
+    :data:`MU_CAP` as their messages print it (``:g``).
     """
     return re.search(rf"μ (up to \S+ )?above {re.escape(f'{MU_CAP:g}')}\b", note) is not None
 

@@ -88,6 +88,10 @@ The checks and their thresholds, per kind of result (:data:`CHECKS`):
 * ``root_stress`` (fail/attention): the FE peak root stress against ISO 10300-3's σ_FP;
   ``scuffing_standard`` (attention): the standard's S_B below 1 beside the judged one —
   :mod:`contact.study.verdict_checks` (issue 72).
+* printed, judged by no limit (:data:`PRINTED_NOT_JUDGED`, listed among the ``not
+  checked`` lines where the tree holds them; issue 71, notchecked83): the LTE mean and
+  harmonics, the mesh stiffness, the power loss, the rating table's ratios p_max/σ_H and
+  FE/σ_F; for a duty cycle the bins' LTE mean, power loss and energy, local safeties.
 * ``efficiency`` (never made): ``ltca run``'s table and the report print the mean
   mechanical efficiency (``/friction/efficiency_mean``), which no limit judges — a gear
   set's efficiency has no standard's minimum, it is a target of the design's — so every
@@ -1693,7 +1697,20 @@ STUDY_NOT_JUDGED = ("a study prints their ranges and judges none against the lim
 
 def not_checked_line(checks: tuple[str, ...] | list[str], why: str) -> str:
     """The line ``  not checked: <checks> (<why>)`` of :meth:`Verdict.lines` and of the
-    study summaries (:func:`study_not_checked`), one wording for all."""
+    study summaries (:func:`study_not_checked`), one wording for all (issue 71).
+
+    Parameters
+    ----------
+    checks : sequence of str
+        The checks (or printed quantities) not judged, in their order.
+    why : str
+        The one reason they share.
+
+    Returns
+    -------
+    str
+        The line, indented by two spaces.
+    """
     return f"  not checked: {', '.join(checks)} ({why})"
 
 
