@@ -124,10 +124,10 @@ static strength (docs/verdicts.md, "Findings a reader trusts").
   ``pressure_max_flank`` where it differs and a note (:attr:`Verdict.notes`) where only
   curves clipped into a flank corner exceed it; a file written before those variables by
   its ``contact_static_limit_exceeded``.
-* ``rating`` (fail/attention): each bin's ISO 10300 S_H, S_F (``iso_contact_safety``,
+* ``rating`` (attention): each bin's ISO 10300 S_H, S_F (``iso_contact_safety``,
   ``iso_bending_safety``, printed per bin) against the rating's S_H,min, S_F,min
-  (``contact_safety_min``, ``bending_safety_min``) by ``ltca run``'s rule: fail at or below
-  the rating's ``design_torque``, attention above it (issue 71, notchecked83; a file
+  (``contact_safety_min``, ``bending_safety_min``): never fail — a bin is rated at its own
+  speed, and a spectrum's life is the ``damage`` check's (issue 71, notchecked83; a file
   written before ``contact_safety_min``: not checked).
 * ``efficiency`` (never made): the bins' ``efficiency`` and the ``cycle_efficiency``
   printed (``ltca duty-cycle``'s table and cycle line, the duty-cycle page), judged by no
@@ -1357,14 +1357,15 @@ def _bin_misalignment(ds: xr.Dataset, i: int) -> str:
 def _duty_rating(ds: xr.Dataset) -> list[Finding]:
     """Each bin's ISO 10300 S_H and S_F (``iso_contact_safety``, ``iso_bending_safety``:
     the rating at the bin's torque and speed, which ``ltca duty-cycle`` prints per bin)
-    against the rating's S_H,min and S_F,min by ``ltca run``'s rule for its ``rating``
-    check (:func:`contact.study.verdict_checks.root_safety_severity`): fail at or below the
-    rating's design torque, attention above it (a load of finite life, whose damage the
-    cycle counts). One finding per member, safety and severity, naming the bins and the
-    lowest. The static strength is the ``static`` check's (the flank) — a bin's rating
-    above it is not told apart here. Issue 71 (notchecked83): printed, never judged."""
-    from contact.study.verdict_checks import root_safety_severity
-
+    against the rating's S_H,min and S_F,min: attention, never fail. A bin's rating is at
+    the bin's speed, whose speed factors (Z_v, the lubricant film; K_v) are not the
+    case's: the default development's pc_hypoid_10x43 at its ISO capacity 357 N·m reads S_H
+    0.99 in the illustrative spectrum's top bin (357 N·m at 600 rpm) where ``ltca run`` at
+    357 N·m and the case's speed reads 1.00 and passes. Under a load spectrum the life is
+    the Miner damage's (ISO 6336-6), which the ``damage`` check judges; a design torque
+    above the capacity at the case's speed is ``ltca run``'s ``rating`` FAIL. One finding
+    per member and safety, naming the bins and the lowest. The static strength is the
+    ``static`` check's (the flank). Issue 71 (notchecked83): printed, never judged."""
     design = float(ds["rating_design_torque"]) if "rating_design_torque" in ds else math.nan
     torques = np.asarray(ds["torque"].values, float)
     out = []
@@ -1376,19 +1377,19 @@ def _duty_rating(ds: xr.Dataset) -> list[Finding]:
         smin = float(ds[least])
         safety = np.asarray(ds[name].transpose("bin", "member").values, float)
         for k, m in enumerate(str(x) for x in ds["member"].values):
-            judged = [root_safety_severity(float(safety[i, k]), smin, float(t), design)
-                      for i, t in enumerate(torques)]
-            for severity in ("fail", "attention"):
-                bins = [i for i, j in enumerate(judged) if j == severity]
-                if not bins:
-                    continue
+            bins = [i for i in range(torques.size)
+                    if np.isfinite(safety[i, k]) and safety[i, k] < smin]
+            if bins:
                 i = min(bins, key=lambda b: safety[b, k])
-                why = ("at or below the rating's design torque, the rule `ltca run` fails by"
-                       if severity == "fail" else
-                       f"above the rating's design torque {_t(design)}: a load of finite "
-                       "life, the damage over the cycle decides")
+                why = (f"above the rating's design torque {_t(design)}: a load of finite "
+                       "life, the damage over the cycle decides"
+                       if torques[i] > design else
+                       "at or below the rating's design torque, at the bin's speed (the "
+                       "rating's speed factors are the bin's; `ltca run` judges the design "
+                       "torque at the case's speed): under a load spectrum the damage over "
+                       "the cycle decides the life")
                 out.append(Finding(
-                    severity, "rating",
+                    "attention", "rating",
                     f"{m}: ISO 10300 {what} safety {symbol} "
                     f"{shown_below(float(safety[i, k]), smin, 2)} below {symbol}min {smin:g} "
                     f"(the rating at the bin's torque and speed, as `ltca run` judges it) in "
