@@ -829,6 +829,8 @@ def run_chain(chain: AnalysisChain, state: ChainState) -> ChainState:
             before_work(state)
     from contact.chain_contract import run_step
 
+    # the steps that run: a /friction is checked for the load-capacity step where it runs
+    running = tuple(step for step, f in functions.items() if f is not None)
     for step, f in functions.items():
         if f is None:
             state.not_run[step] = "not requested (steps)"
@@ -836,7 +838,7 @@ def run_chain(chain: AnalysisChain, state: ChainState) -> ChainState:
         t0 = time.perf_counter()
         # a user's step: its exception and what it left refused naming it (issue 72)
         run_step(step, f, state, builtin=isinstance(getattr(chain, step), str),
-                 order=STEP_ORDER)
+                 order=running)
         key = "friction" if step == "efficiency" else step
         state.times.setdefault(key, time.perf_counter() - t0)
     return state

@@ -18,7 +18,10 @@ Checked:
   ``/ltca`` is named, not the ``KeyError`` of the step after it; a ``/friction`` group
   holds ``efficiency_mean`` over ``torque`` (as ``/ltca``), finite, 0 < η <= 1
   (:func:`check_efficiency`; issue 71: a NaN printed as a blank, a per-roll array
-  printed as its first value);
+  printed as its first value); where the load-capacity step runs after it, the
+  ``/friction`` variables and attributes that step reads (:data:`LOAD_CAPACITY_READS`:
+  μ, the speeds, the film) present, over the LTCA's dims, finite and in range on the
+  loaded segments (:func:`check_load_capacity_inputs`; issue 71, notchecked83);
 * **when it raises** (:func:`run_step`): a user's step's exception is re-raised as a
   :class:`geometry.core.errors.PluginError` naming the step and the callable, the original
   chained as its cause (``raise … from exc``); the built-in steps' own errors pass
@@ -29,6 +32,8 @@ Public names
 check_step_callable  refuse a step callable that cannot take the state
 check_step_output    refuse what a step left in the state
 check_efficiency     refuse a /friction group without a printable efficiency_mean
+check_load_capacity_inputs  refuse a /friction group the load-capacity step cannot read
+LOAD_CAPACITY_READS  the /friction variables the load-capacity step reads, with their bounds
 run_step             run one step, its misuse and its exceptions said with its name
 READS                the groups each built-in step reads
 """
@@ -44,8 +49,8 @@ import xarray as xr
 
 from geometry.core.errors import PluginError
 
-__all__ = ["READS", "check_efficiency", "check_step_callable", "check_step_output",
-           "run_step"]
+__all__ = ["LOAD_CAPACITY_READS", "READS", "check_efficiency", "check_load_capacity_inputs",
+           "check_step_callable", "check_step_output", "run_step"]
 
 #: the groups each step leaves for the steps after it (a step's output is checked for
 #: those of its own and of every earlier step; the ``ltca`` step's ``/ltca`` is read by
@@ -122,7 +127,9 @@ def check_step_output(step: str, f: Callable[..., Any], state: Any, returned: An
     returned : object
         What it returned (must be None).
     order : tuple of str
-        The steps in the order they run (:data:`contact.chain.STEP_ORDER`).
+        The steps in the order they run (:data:`contact.chain.STEP_ORDER`, the skipped
+        ones left out or not: a ``"load_capacity"`` after ``step`` means that step will
+        read ``/friction``).
 
     Raises
     ------
@@ -130,7 +137,9 @@ def check_step_output(step: str, f: Callable[..., Any], state: Any, returned: An
         A value returned; ``state.groups`` no dict; a key that is no path ``"/…"``; a value
         that is no ``xarray.Dataset`` (a list, a dict, a DataTree); a group the later steps
         read (:data:`MAKES` of this and every earlier step) missing; ``/ltca`` without its
-        ``torque`` dimension; a ``/friction`` group refused by :func:`check_efficiency`.
+        ``torque`` dimension; a ``/friction`` group refused by :func:`check_efficiency`,
+        or, with ``"load_capacity"`` later in ``order``, by
+        :func:`check_load_capacity_inputs`.
     """
     who = f"steps.{step}: the callable {_name(f)}"
     if returned is not None:
@@ -161,6 +170,8 @@ def check_step_output(step: str, f: Callable[..., Any], state: Any, returned: An
     if "/friction" in groups and "/ltca" in groups:
         check_efficiency(who, groups["/friction"], groups["/ltca"].sizes["torque"],
                          uncertified_torques(groups["/ltca"]))
+        if "load_capacity" in order[order.index(step) + 1:]:
+            check_load_capacity_inputs(who, groups["/friction"], groups["/ltca"])
 
 
 def uncertified_torques(ltca: xr.Dataset) -> np.ndarray:
@@ -229,6 +240,122 @@ def check_efficiency(who: str, friction: xr.Dataset, n_torque: int,
         raise PluginError(f"{where} {float(values[bad][0]):.6g} at {int(np.count_nonzero(bad))} of "
                           f"{values.size} torque(s); accepted a finite 0 < efficiency_mean "
                           "<= 1 [1] (a fraction, not %)")
+
+
+#: the ``/friction`` variables the load-capacity step reads
+#: (:func:`contact.load_capacity.scuffing_micropitting.scuffing_micropitting`: Blok's flash
+#: temperature from μ and the flanks' speeds across the line, λ_GF from the film), each
+#: with its unit and the closed range a loaded segment's value must lie in: μ within the
+#: friction models' bound [0, MU_MAX] (:data:`friction.coefficient.MU_MAX`); the speeds
+#: are magnitudes (friction/kinematics.py: ``norm``, ``abs``), so >= 0; the film >= 0.
+#: ``slide_to_roll_total`` = abs(V_s)/V_r may be +inf (pure sliding), never NaN or < 0.
+LOAD_CAPACITY_READS: Mapping[str, tuple[str, float, float]] = {
+    "friction_coefficient": ("1", 0.0, 1.0),
+    "sliding_velocity": ("m/s", 0.0, np.inf),
+    "rolling_velocity": ("m/s", 0.0, np.inf),
+    "slide_to_roll_total": ("1", 0.0, np.inf),
+    "film_thickness": ("um", 0.0, np.inf),
+    "surface_speed": ("m/s", 0.0, np.inf),
+}
+
+#: the ``/friction`` attributes it reads: the oil, its inlet temperature [degC], Rq [µm]
+_LOAD_CAPACITY_ATTRS = ("lubricant", "inlet_temperature_degC", "roughness_rq_um")
+
+_SEGMENT_DIMS = ("torque", "roll", "pair", "segment")
+
+
+def check_load_capacity_inputs(who: str, friction: xr.Dataset, ltca: xr.Dataset) -> None:
+    """Refuse a ``/friction`` group whose friction coefficient, speeds or film the
+    load-capacity step (scuffing, micropitting, the flash temperature) could not read as
+    the efficiency step's, naming the step that left it and the variable (issue 71).
+
+    Parameters
+    ----------
+    who : str
+        The step and callable that left it (the message's subject).
+    friction : xarray.Dataset
+        The ``/friction`` group.
+    ltca : xarray.Dataset
+        The ``/ltca`` group: its ``force`` [N] over (torque, roll, pair, segment) gives the
+        loaded segments (finite and > 0) and the shape; without ``force`` the dims alone
+        are checked against its ``torque`` and the values that are not NaN.
+
+    Raises
+    ------
+    PluginError
+        A variable of :data:`LOAD_CAPACITY_READS` missing; not over (``torque``, ``roll``,
+        ``pair``, ``segment``) (``surface_speed``: with ``member`` of 2 first) of the
+        LTCA's shape; on a loaded segment NaN, or infinite (but ``slide_to_roll_total``),
+        or outside its range (μ in [0, ``friction.coefficient.MU_MAX``] = [0, 1]; speeds,
+        film, slide-to-roll >= 0); an attribute ``lubricant``, ``inlet_temperature_degC``
+        [degC] or ``roughness_rq_um`` [µm] missing, the last two not finite or Rq <= 0.
+
+    Notes
+    -----
+    Source: the inputs of ISO/TS 6336-20 (Blok's flash temperature: μ, the flanks' speeds)
+    and ISO/TS 6336-22 (λ_GF: the film) as
+    :mod:`contact.load_capacity.scuffing_micropitting` reads them; μ's bound is
+    :data:`friction.coefficient.MU_MAX`'s (issue 71, plugin83).
+    """
+    from friction.coefficient import MU_MAX
+
+    reader = "the load-capacity step reads it"
+    force = ltca["force"] if "force" in ltca else None
+    shape = (None if force is None or force.dims != _SEGMENT_DIMS
+             else tuple(force.shape))
+    loaded = (None if shape is None
+              else np.isfinite(force.values) & (force.values > 0.0))
+    for name, (unit, low, high) in LOAD_CAPACITY_READS.items():
+        high = MU_MAX if name == "friction_coefficient" else high
+        where = f"{who} left /friction with {name}"
+        if name not in friction:
+            raise PluginError(f"{who} left /friction without {name} [{unit}] ({reader}; "
+                              "docs/extending.md)")
+        var = friction[name]
+        dims = ("member", *_SEGMENT_DIMS) if name == "surface_speed" else _SEGMENT_DIMS
+        want = None if shape is None else ((2, *shape) if name == "surface_speed" else shape)
+        if var.dims != dims or (want is not None and tuple(var.shape) != want) or (
+                want is None and var.sizes["torque"] != ltca.sizes.get("torque", -1)):
+            raise PluginError(f"{where} over {var.dims} (shape {var.shape}); {reader} over "
+                              f"{dims}" + (f" of shape {want}, the /ltca force's"
+                                           if want is not None else " with /ltca's torques"))
+        try:
+            values = np.asarray(var.values, dtype=float)
+        except (TypeError, ValueError):
+            raise PluginError(f"{where} of dtype {var.dtype}; {reader} as numbers "
+                              f"[{unit}]") from None
+        if loaded is None:
+            on = values[~np.isnan(values)]
+        else:
+            on = values[:, loaded] if name == "surface_speed" else values[loaded]
+        ok = ~np.isnan(on) & (on >= low) & (on <= high)
+        if name != "slide_to_roll_total":
+            ok &= np.isfinite(on)
+        if not np.all(ok):
+            bad = on[~ok]
+            raise PluginError(
+                f"{where} {float(bad[0]):.6g} [{unit}] at {bad.size} of {on.size} loaded "
+                f"value(s); {reader}: accepted a finite {low:g} <= {name} <= {high:g}"
+                if np.isfinite(high) else
+                f"{where} {float(bad[0]):.6g} [{unit}] at {bad.size} of {on.size} loaded "
+                f"value(s); {reader}: accepted {name} >= {low:g}"
+                + ("" if name == "slide_to_roll_total" else ", finite")
+                + " (a magnitude)")
+    for attr in _LOAD_CAPACITY_ATTRS:
+        if attr not in friction.attrs:
+            raise PluginError(f"{who} left /friction without the attribute {attr} ({reader}: "
+                              "the oil, its inlet temperature [degC], the roughness Rq [um])")
+    try:
+        temp = float(friction.attrs["inlet_temperature_degC"])
+        rq = float(friction.attrs["roughness_rq_um"])
+    except (TypeError, ValueError):
+        raise PluginError(f"{who} left /friction with inlet_temperature_degC "
+                          f"{friction.attrs['inlet_temperature_degC']!r} and roughness_rq_um "
+                          f"{friction.attrs['roughness_rq_um']!r}; {reader}: numbers") from None
+    if not (np.isfinite(temp) and np.isfinite(rq) and rq > 0.0):
+        raise PluginError(f"{who} left /friction with inlet_temperature_degC {temp:g} and "
+                          f"roughness_rq_um {rq:g}; {reader}: a finite temperature [degC] and "
+                          "a finite Rq > 0 [um]")
 
 
 def run_step(step: str, f: Callable[..., Any], state: Any, *, builtin: bool,

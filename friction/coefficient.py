@@ -41,6 +41,7 @@ from __future__ import annotations
 
 import logging
 import math
+import re
 import warnings
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
@@ -90,6 +91,7 @@ __all__ = [
     "friction_model_name",
     "friction_model_validity",
     "get_friction_model",
+    "is_mu_above_cap",
     "iso_tr_14179_2",
     "register_friction_model",
     "unavailable_friction_models",
@@ -1021,6 +1023,31 @@ def _bounded(model: FrictionModel, mu: Array) -> Array:
             stacklevel=4,
         )
     return mu
+
+
+def is_mu_above_cap(note: str) -> bool:
+    """Whether ``note`` (a :class:`FrictionModelRangeWarning`'s message, as the efficiency
+    stage lists them in ``model_range_warnings``) is the warning of a μ above
+    :data:`MU_CAP`: a bundled model's clip (``"<model>: μ above 0.3 …"``) or any model's
+    μ kept in (MU_CAP, MU_MAX] (``"<model>: friction_coefficient μ up to 0.45 above 0.3
+    …"``), not a fitted range's.
+
+    Parameters
+    ----------
+    note : str
+        One warning message.
+
+    Returns
+    -------
+    bool
+        True for those two warnings (issue 71: ``ltca run`` prints them).
+
+    Notes
+    -----
+    Source: the texts of :func:`_cap` and :func:`_bounded` (this module); the bound
+    :data:`MU_CAP` as their messages print it (``:g``).
+    """
+    return re.search(rf"μ (up to \S+ )?above {re.escape(f'{MU_CAP:g}')}\b", note) is not None
 
 
 def _returned(value: Any) -> str:

@@ -214,6 +214,157 @@ def test_the_built_in_efficiency_passes_the_check():
     assert float(tree["friction"]["efficiency_mean"][0]) == pytest.approx(0.9742, abs=5e-5)
 
 
+# ------------------------------------------------- what the load-capacity step reads
+
+#: a stand-in /ltca of 1 torque, 2 rolls, 1 pair, 3 segments: the last segment unloaded
+_FORCE = np.array([[[[10.0, 20.0, np.nan]], [[15.0, 5.0, 0.0]]]])
+_DIMS4 = ("torque", "roll", "pair", "segment")
+
+
+def _ltca_force(state):
+    state.groups["/ltca"] = xr.Dataset({"force": (_DIMS4, _FORCE)},
+                                       coords={"torque": [TORQUE]})
+
+
+def _full_friction(**change):
+    """A user's efficiency step writing a /friction the load-capacity step can read (the
+    built-in's variables: μ 0.05, speeds 1-2 m/s, film 0.2 um on the loaded segments, NaN
+    on the unloaded ones as the built-in's), ``change`` replacing variables or attributes
+    (``None`` drops one)."""
+    loaded = np.isfinite(_FORCE) & (_FORCE > 0)
+
+    def on(v):
+        return np.where(loaded, v, np.nan)
+
+    data = {"efficiency_mean": (("torque",), np.array([0.97])),
+            "friction_coefficient": (_DIMS4, on(0.05)),
+            "sliding_velocity": (_DIMS4, on(1.0)), "rolling_velocity": (_DIMS4, on(2.0)),
+            "slide_to_roll_total": (_DIMS4, on(0.5)), "film_thickness": (_DIMS4, on(0.2)),
+            "surface_speed": (("member", *_DIMS4), np.stack([on(1.5), on(2.5)]))}
+    attrs = {"lubricant": "75W90", "inlet_temperature_degC": 90.0, "roughness_rq_um": 0.8}
+    for k, v in change.items():
+        target = attrs if k in attrs else data
+        if v is None:
+            target.pop(k)
+        else:
+            target[k] = v
+
+    def mine(state):
+        state.groups["/friction"] = xr.Dataset(data, coords={"torque": [TORQUE]},
+                                               attrs=attrs)
+    return mine
+
+
+def _run_rated(efficiency, load_capacity="scuffing_micropitting"):
+    """The stand-in chain with the load-capacity step after the user's efficiency step;
+    ``load_capacity`` None: without it."""
+    chain = AnalysisChain.contact_only().with_steps(
+        utca=_utca, ltca=_ltca_force, efficiency=efficiency, load_capacity=load_capacity)
+    return run_analysis(None, [TORQUE], options=SMALL, steps=chain)
+
+
+def _bad(name, value):
+    """``name`` of the full stand-in with ``value`` on the first loaded segment."""
+    base = {"friction_coefficient": 0.05, "sliding_velocity": 1.0, "rolling_velocity": 2.0,
+            "slide_to_roll_total": 0.5, "film_thickness": 0.2}[name]
+    loaded = np.isfinite(_FORCE) & (_FORCE > 0)
+    arr = np.where(loaded, base, np.nan)
+    arr[0, 0, 0, 0] = value
+    return (_DIMS4, arr)
+
+
+@pytest.mark.parametrize("name, value, said", [
+    # issue 71 (notchecked83): μ above the models' bound MU_MAX = 1 (friction/coefficient.py)
+    ("friction_coefficient", 5.0, r"friction_coefficient 5 \[1\] at 1 of 4 loaded value\(s\); "
+                                  r"the load-capacity step reads it: accepted a finite "
+                                  r"0 <= friction_coefficient <= 1$"),
+    ("friction_coefficient", -0.02, r"friction_coefficient -0\.02 \[1\] at 1 of 4"),
+    ("friction_coefficient", np.nan, r"friction_coefficient nan \[1\] at 1 of 4"),
+    ("sliding_velocity", -1.0, r"sliding_velocity -1 \[m/s\] at 1 of 4 loaded value\(s\); "
+                               r"the load-capacity step reads it: accepted sliding_velocity "
+                               r">= 0, finite \(a magnitude\)$"),
+    ("rolling_velocity", np.inf, r"rolling_velocity inf \[m/s\] at 1 of 4"),
+    ("film_thickness", np.nan, r"film_thickness nan \[um\] at 1 of 4"),
+    ("slide_to_roll_total", -0.5, r"slide_to_roll_total -0\.5 \[1\] at 1 of 4 loaded "
+                                  r"value\(s\); the load-capacity step reads it: accepted "
+                                  r"slide_to_roll_total >= 0 \(a magnitude\)$"),
+])
+def test_a_friction_the_load_capacity_step_cannot_read_is_named(name, value, said):
+    with pytest.raises(PluginError, match=r"^steps\.efficiency: the callable .*mine left "
+                                          r"/friction with " + said) as info:
+        _run_rated(_full_friction(**{name: _bad(name, value)}))
+    _one_sentence(info.value)
+
+
+def test_a_friction_without_what_the_load_capacity_step_reads_is_named():
+    with pytest.raises(PluginError, match=r"mine left /friction without surface_speed \[m/s\] "
+                                          r"\(the load-capacity step reads it"):
+        _run_rated(_full_friction(surface_speed=None))
+    with pytest.raises(PluginError, match=r"mine left /friction without the attribute "
+                                          r"roughness_rq_um \(the load-capacity step"):
+        _run_rated(_full_friction(roughness_rq_um=None))
+    with pytest.raises(PluginError, match=r"roughness_rq_um 0; the load-capacity step reads "
+                                          r"it: a finite temperature \[degC\] and a finite "
+                                          r"Rq > 0 \[um\]$"):
+        _run_rated(_full_friction(roughness_rq_um=0.0))
+
+
+def test_a_friction_over_other_dims_than_the_load_capacity_step_reads_is_named():
+    # μ per torque only (a user's mean): the step broadcasts it onto the segments wrongly
+    with pytest.raises(PluginError, match=r"mine left /friction with friction_coefficient over "
+                                          r"\('torque',\) \(shape \(1,\)\); the load-capacity "
+                                          r"step reads it over \('torque', 'roll', 'pair', "
+                                          r"'segment'\) of shape \(1, 2, 1, 3\), the /ltca "
+                                          r"force's$"):
+        _run_rated(_full_friction(friction_coefficient=(("torque",), np.array([0.05]))))
+    # the speeds without their member dimension
+    with pytest.raises(PluginError, match=r"surface_speed over \('torque', 'roll', 'pair', "
+                                          r"'segment'\) \(shape \(1, 2, 1, 3\)\)"):
+        _run_rated(_full_friction(surface_speed=(_DIMS4, np.ones_like(_FORCE))))
+
+
+def test_the_load_capacity_inputs_are_checked_only_where_that_step_runs():
+    """Without the load-capacity step nothing reads μ or the speeds: a /friction of
+    efficiency_mean alone (plugin83's minimum) passes; the full stand-in passes both ways;
+    μ = 1 (MU_MAX, inclusive) and unloaded segments' NaN pass, an infinite slide-to-roll
+    (pure sliding) too."""
+    from types import SimpleNamespace
+
+    from contact.chain_contract import check_load_capacity_inputs, check_step_output
+
+    state = SimpleNamespace(groups={})
+    _utca(state)
+    _ltca_force(state)
+    mine = _friction([0.97])
+    mine(state)
+    check_step_output("efficiency", mine, state, None, ("utca", "ltca", "efficiency"))
+    with pytest.raises(PluginError, match=r"mine left /friction without friction_coefficient"):
+        check_step_output("efficiency", mine, state, None,
+                          ("utca", "ltca", "efficiency", "load_capacity"))
+    for change in ({}, {"friction_coefficient": _bad("friction_coefficient", 1.0)},
+                   {"slide_to_roll_total": _bad("slide_to_roll_total", np.inf)}):
+        state = SimpleNamespace(groups={})
+        _ltca_force(state)
+        _full_friction(**change)(state)
+        check_load_capacity_inputs("steps.efficiency", state.groups["/friction"],
+                                   state.groups["/ltca"])
+
+
+def test_the_built_in_friction_passes_the_load_capacity_check():
+    """The built-in efficiency step's /friction of the default case passes with the
+    load-capacity step after it (its μ 0.034-0.095, speeds 0.14-4.1 m/s at 50 and
+    250 N·m, measured with these settings): the check refuses no real analysis."""
+    from contact.chain import efficiency_local_friction
+
+    def wrapped(state):
+        efficiency_local_friction(state)
+
+    chain = AnalysisChain.contact_only().with_steps(efficiency=wrapped,
+                                                     load_capacity="scuffing_micropitting")
+    tree = run_analysis(None, [TORQUE], options=SMALL, steps=chain)
+    assert "scuffing_micropitting" in tree.children
+
+
 def test_a_user_step_that_raises_is_wrapped_with_its_name_and_cause():
     def broken(state):
         return 1 / 0

@@ -413,3 +413,33 @@ def test_the_compile_note_is_printed_once_when_numba_starts_compiling(monkeypatc
         assert not kernels.announce_compiling(envelope)
     assert not handler.printed
     kernels.announce_compiling.cache_clear()
+
+
+def test_ltca_run_prints_a_friction_coefficient_above_0_3_once_on_stderr(tmp_path, capsys):
+    """Issue 71 (notchecked83): a model's μ in (MU_CAP, MU_MAX] = (0.3, 1] is kept and
+    warned (plugin83); the warning was in ``model_range_warnings`` and the verdict's
+    attention, never on the console. ``ltca run`` prints the model's own text once, one
+    line on stderr (the table on stdout stays the table); a run without it prints none."""
+    from friction.coefficient import register_friction_model, unregister_friction_model
+
+    register_friction_model("mu45", lambda *, slide_to_roll: np.where(
+        slide_to_roll > 1.0, 0.45, 0.05), replace=True)
+    try:
+        code = main(["run", "--friction-model", "mu45", "--rolls-per-cycle", "4",
+                     "--segments", "8", "--torque", "250", "--no-rating", "--no-root-stress",
+                     "--no-progress", "-o", str(tmp_path / "r.nc")])
+    finally:
+        unregister_friction_model("mu45")
+    out, err = capsys.readouterr()
+    assert code == 0
+    said = [line for line in err.splitlines() if "friction_coefficient mu up to" in line]
+    assert len(said) == 1, err
+    assert said[0].startswith("WARNING: mu45: friction_coefficient mu up to 0.45 above 0.3 at ")
+    assert "friction_coefficient mu up to" not in out
+    # the verdict names it as before (attention: friction extrapolated)
+    assert "friction model ran" in out or "friction_extrapolated" in out or "fitted range" in out
+    # the bundled model's run at the same settings: no such line
+    assert main(["run", "--rolls-per-cycle", "4", "--segments", "8", "--torque", "250",
+                 "--no-rating", "--no-root-stress", "--no-progress",
+                 "-o", str(tmp_path / "s.nc")]) == 0
+    assert "friction_coefficient mu up to" not in capsys.readouterr().err

@@ -80,3 +80,13 @@ def test_duty_cycle_command_writes_group_and_figures(tmp_path, capsys):
     assert main(["report", str(out), "-o", str(tmp_path / "again.html")]) == 0
     again = (tmp_path / "again.html").read_text(encoding="utf-8")
     assert 'id="durability-table"' in again and "analysis report" not in again
+    # the efficiency printed per bin and over the cycle, judged by no limit: the verdict
+    # says so in the words of ltca run's (issue 71, notchecked83), on the console and on
+    # both pages (html-escaped apostrophes there)
+    from contact.study.verdicts import DUTY_EFFICIENCY, efficiency_not_judged
+
+    said = efficiency_not_judged(DUTY_EFFICIENCY)
+    assert f"not checked: efficiency ({said})" in " ".join(text.split())
+    for page in (html, again):
+        assert said.replace("'", "&#x27;") in page or said.replace("'", "&#39;") in page \
+            or said in page

@@ -290,6 +290,12 @@ def test_study_commands(tmp_path, capsys):
                  "--plots", str(tmp_path / "figs"), *common]) == 0
     out = capsys.readouterr().out
     assert "P95" in out and "efficiency" in out
+    # what the summary prints it does not judge: said, the efficiency in the words of
+    # ltca run's verdict (issue 71, notchecked83)
+    from contact.study.verdicts import efficiency_not_judged
+
+    assert f"not checked: efficiency ({efficiency_not_judged('efficiency')})" in out
+    assert "not checked: lte_peak_to_peak, pressure_max_flank" in out
     tol = read_netcdf(tmp_path / "tol.nc")
     # ΔΣ typed in degrees, stored in rad as Misalignment takes it
     assert np.all(np.abs(tol["delta_Sigma"].values) <= np.radians(0.01))

@@ -96,13 +96,20 @@ def test_the_default_case_is_flagged_for_its_flank_pressure_and_heel_contact(def
     # no check can judge (said, not passed: "the verdict judges all it prints")
     assert {"scuffing", "rating"} <= set(v.checks) and "micropitting" not in v.checks
     # and the efficiency, printed but judged by no limit (issue 71, plugin83)
-    ((check, why), (printed, not_judged)) = v.unchecked
+    ((check, why), (printed, not_judged), *shown) = v.unchecked
     assert check == "micropitting" and why.startswith("micropitting_safety NaN at every torque")
     assert "gives no permissible_specific_film" in why
     assert (printed, not_judged) == ("efficiency", EFFICIENCY_NOT_JUDGED)
     assert lines[3].startswith("  not checked: micropitting (")
     assert lines[4] == f"  not checked: efficiency ({EFFICIENCY_NOT_JUDGED})"
-    assert lines[5].startswith("  … and ") and lines[-1] == lines[5]
+    # and what else the table and the report print that no limit judges (issue 71,
+    # notchecked83): one line per reason, PRINTED_NOT_JUDGED's (no mesh stiffness: this
+    # tree ran without the mesh interface)
+    assert [c for c, _ in shown] == ["lte_mean", "lte_harmonics", "power_loss",
+                                     "pressure_ratio", "root_stress_ratio"]
+    assert lines[5].startswith("  not checked: lte_mean, lte_harmonics (the LTE mean, ")
+    assert lines[7].startswith("  not checked: pressure_ratio, root_stress_ratio (")
+    assert lines[8].startswith("  … and ") and lines[-1] == lines[8]
 
 
 def _tree(**groups: xr.Dataset) -> xr.DataTree:
@@ -715,3 +722,96 @@ def test_the_default_case_meets_the_lte_limit(default_tree):
     lte = default_tree["ltca"]["lte_peak_to_peak"].values
     assert np.all(lte < LTE_LIMIT)
     assert "lte" in v.checks and not [f for f in v.findings if f.check == "lte"]
+
+
+def test_a_duty_cycle_says_its_efficiency_is_not_judged_in_the_runs_words():
+    """Issue 71 (notchecked83): ``ltca duty-cycle`` prints the bins' efficiency and the
+    cycle's; its verdict says it judges neither, in the words of ``ltca run``'s verdict
+    (one function, :func:`efficiency_not_judged`), and nothing where the file has none."""
+    from contact.study.verdicts import DUTY_EFFICIENCY, efficiency_not_judged
+
+    ds = _duty().assign(efficiency=("bin", [0.975, 0.981]), cycle_efficiency=((), 0.978))
+    v = verdict(ds)
+    said = efficiency_not_judged(DUTY_EFFICIENCY)
+    assert ("efficiency", said) in v.unchecked and "efficiency" not in v.checks
+    assert f"  not checked: efficiency ({said})" in v.lines()
+    # the same words as the analysis' line, only the printed variables differ
+    assert said == EFFICIENCY_NOT_JUDGED.replace("efficiency_mean",
+                                                 "efficiency and cycle_efficiency")
+    assert v.severity == "pass"  # a not-checked line is no finding
+    # a duty file without the efficiency: not checked for the lack of its data
+    assert ("efficiency", "the result lacks its data") in verdict(_duty()).unchecked
+
+
+def test_a_study_summary_says_what_it_prints_and_does_not_judge():
+    """``ltca sweep``/``ltca tolerance`` have no verdict: their summaries end with the
+    not-checked lines of what they print (:func:`study_not_checked`), the efficiency in
+    the words of the analysis' verdict."""
+    from contact.study.verdicts import (
+        STUDY_NOT_JUDGED,
+        efficiency_not_judged,
+        not_checked_line,
+        study_not_checked,
+    )
+
+    ds = xr.Dataset({"lte_peak_to_peak": ("point", [40.0]),
+                     "pressure_max_flank": ("point", [1500.0]),
+                     "efficiency": ("point", [0.97])})
+    got = study_not_checked(ds)
+    assert got == [(("lte_peak_to_peak", "pressure_max_flank"), STUDY_NOT_JUDGED),
+                   (("efficiency",), efficiency_not_judged("efficiency"))]
+    assert not_checked_line(*got[1]) == (
+        "  not checked: efficiency (efficiency printed, judged by no limit: a gear set's "
+        "mechanical efficiency has no standard's minimum; compare it with the design's "
+        "target)")
+    assert study_not_checked(xr.Dataset()) == []
+
+
+def test_a_duty_cycle_judges_the_ratings_safeties_it_prints_as_ltca_run():
+    """Issue 71 (notchecked83): ``ltca duty-cycle`` printed each bin's ISO 10300 S_H, S_F
+    and judged none. The bins are judged against the rating's minima by ``ltca run``'s
+    rule's attention (the illustrative cycle's 500 N·m bin at S_H 0.93, measured); never
+    fail: a bin is rated at its own speed, and the spectrum's life is the damage's."""
+    rated = _duty().assign(
+        iso_contact_safety=(("bin", "member"), [[1.33, 1.33], [0.93, 0.93]]),
+        iso_bending_safety=(("bin", "member"), [[2.6, 2.1], [1.3, 1.09]]),
+        contact_safety_min=((), 1.0), bending_safety_min=((), 1.3),
+        rating_design_torque=((), 250.0))
+    v = verdict(rated)
+    assert "rating" in v.checks
+    got = [(f.severity, f.check, f.reason) for f in v.findings]
+    assert [g[:2] for g in got] == [("attention", "rating")] * 3
+    assert got[0][2].startswith("pinion: ISO 10300 pitting safety S_H 0.93 below S_Hmin 1 "
+                                "(the rating at the bin's torque and speed, as `ltca run` "
+                                "judges it) in bin 1 (lowest: bin 1, 500 N·m); above the "
+                                "rating's design torque 250 N·m")
+    assert got[2][2].startswith("gear: ISO 10300 bending safety S_F 1.09 below S_Fmin 1.3")
+    # S_F 1.3 of the pinion is at its minimum: met (ISO 10300-3: S_F >= S_Fmin)
+    assert not any(r.startswith("pinion: ISO 10300 bending") for _, _, r in got)
+    # at or under the design torque, below the minimum: attention, not fail — the bin's
+    # rating is at the bin's speed (the default development's 10x43 at its ISO capacity
+    # 357 N·m: S_H 0.99 in the illustrative top bin at 600 rpm, 1.00 in `ltca run`); the
+    # damage over the cycle judges a spectrum's life
+    under = verdict(rated.assign(rating_design_torque=((), 500.0)))
+    assert {f.severity for f in under.findings} == {"attention"}
+    assert "at or below the rating's design torque, at the bin's speed" in \
+        under.findings[0].reason
+    # a file without the minima (written before notchecked83): not checked, said
+    old = rated.drop_vars("contact_safety_min")
+    assert "rating" not in verdict(old).checks
+    assert ("rating", "the result lacks its data") in verdict(old).unchecked
+
+
+def test_a_duty_cycle_says_the_rest_it_prints_is_not_judged():
+    """PRINTED_NOT_JUDGED of a duty cycle: the bins' LTE mean, power loss and the cycle's
+    energy, the local safety factors — listed where the file holds them, not otherwise."""
+    from contact.study.verdicts import PRINTED_NOT_JUDGED
+
+    ds = _duty().assign(lte_mean=("bin", [150.0, 600.0]), power_loss=("bin", [300.0, 900.0]),
+                        cycle_energy_lost=((), 1.2),
+                        local_contact_safety=(("bin", "member"), [[2.0, 2.0], [0.9, 0.9]]))
+    names = [c for c, _ in verdict(ds).unchecked]
+    every = [n for names_, *_ in PRINTED_NOT_JUDGED["duty cycle"] for n in names_]
+    assert every == ["lte_mean", "power_loss", "cycle_energy", "local_safety"]
+    assert all(n in names for n in every)
+    assert not set(every) & {c for c, _ in verdict(_duty()).unchecked}

@@ -386,6 +386,7 @@ def _run(args: argparse.Namespace) -> int:
             f"friction model {fr.attrs['friction_model']}"
         )
         print_extrapolation_warning(fr)
+        print_mu_warning(fr)
         # scuffing and micropitting: the load-capacity step's group (issue 63)
         sm = (tree["scuffing_micropitting"].to_dataset()
               if "scuffing_micropitting" in tree.children else fr)
@@ -890,6 +891,30 @@ def print_extrapolation_warning(friction) -> None:
     if n_edge:
         text += f", {n_edge} edge contacts ({edge_share:.1%})"
     print(text)
+
+
+def print_mu_warning(friction) -> None:
+    """One WARNING line on stderr where the friction model's μ exceeded
+    :data:`friction.coefficient.MU_CAP` (0.3; refused above ``MU_MAX`` = 1): the model's
+    own warning text from the ``model_range_warnings`` attribute
+    (:func:`friction.coefficient.is_mu_above_cap`), the first of them, the others counted;
+    nothing where there is none (issue 71: the verdict's attention named it, the console
+    did not say the μ). Stderr, as the toolkit's other warnings (logging, Python's
+    warnings), so a pipe of the table stays the table."""
+    import json
+
+    from friction.coefficient import is_mu_above_cap
+
+    try:
+        notes = json.loads(friction.attrs.get("model_range_warnings", "[]"))
+    except (TypeError, ValueError):
+        return
+    said = [str(n) for n in notes if is_mu_above_cap(str(n))]
+    if not said:
+        return
+    more = (f" (and {len(said) - 1} more such in /friction model_range_warnings)"
+            if len(said) > 1 else "")
+    print(f"WARNING: {console_text(' '.join(said[0].split()))}{more}", file=sys.stderr)
 
 
 #: the width [characters] the command line wraps its long messages to

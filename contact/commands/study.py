@@ -299,6 +299,11 @@ def _status_line(ds) -> str:
         reasons = sorted(set(ds["reason"].values.ravel()[st == 2]))
         line += "\n  " + "\n  ".join(reasons[:5])
     line += "\n" + plausibility_line(ds)
+    # what the summary printed but no limit judged, in the verdicts' words (issue 71)
+    from contact.study.verdicts import not_checked_line, study_not_checked
+
+    line += "".join("\n" + not_checked_line(checks, why).strip()
+                    for checks, why in study_not_checked(ds))
     if ds.attrs.get("points_resumed"):
         line += f"\n(resumed: {ds.attrs['points_resumed']} points from an interrupted run)"
     return line

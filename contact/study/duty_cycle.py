@@ -539,6 +539,12 @@ def _iso_rating(shared: DutyInputs, ds: xr.Dataset, members: list[str],
     for name, var in (("iso_contact_stress", "sigma_H"), ("iso_root_stress", "sigma_F"),
                       ("iso_contact_safety", "S_H"), ("iso_bending_safety", "S_F")):
         out[name] = iso[var].variable
+    # the minima and design torque the verdict's rating check judges the bins' S_H, S_F
+    # by, as ltca run's (contact.study.verdicts, issue 71)
+    if "S_Hmin" in iso:
+        out["contact_safety_min"] = iso["S_Hmin"].variable
+    out.setdefault("bending_safety_min", iso["S_Fmin"].variable)
+    out.setdefault("rating_design_torque", iso["design_torque"].variable)
     return out, (f"ISO 10300-1/-2/-3:2014 Method B1 at each bin's torque and speed "
                  f"({iso.attrs.get('side', '')} side; the case's [rating] table, "
                  "docs/rating.md)")

@@ -88,6 +88,10 @@ The checks and their thresholds, per kind of result (:data:`CHECKS`):
 * ``root_stress`` (fail/attention): the FE peak root stress against ISO 10300-3's σ_FP;
   ``scuffing_standard`` (attention): the standard's S_B below 1 beside the judged one —
   :mod:`contact.study.verdict_checks` (issue 72).
+* printed, judged by no limit (:data:`PRINTED_NOT_JUDGED`, listed among the ``not
+  checked`` lines where the tree holds them; issue 71, notchecked83): the LTE mean and
+  harmonics, the mesh stiffness, the power loss, the rating table's ratios p_max/σ_H and
+  FE/σ_F; for a duty cycle the bins' LTE mean, power loss and energy, local safeties.
 * ``efficiency`` (never made): ``ltca run``'s table and the report print the mean
   mechanical efficiency (``/friction/efficiency_mean``), which no limit judges — a gear
   set's efficiency has no standard's minimum, it is a target of the design's — so every
@@ -120,6 +124,16 @@ static strength (docs/verdicts.md, "Findings a reader trusts").
   ``pressure_max_flank`` where it differs and a note (:attr:`Verdict.notes`) where only
   curves clipped into a flank corner exceed it; a file written before those variables by
   its ``contact_static_limit_exceeded``.
+* ``rating`` (attention): each bin's ISO 10300 S_H, S_F (``iso_contact_safety``,
+  ``iso_bending_safety``, printed per bin) against the rating's S_H,min, S_F,min
+  (``contact_safety_min``, ``bending_safety_min``): never fail — a bin is rated at its own
+  speed, and a spectrum's life is the ``damage`` check's (issue 71, notchecked83; a file
+  written before ``contact_safety_min``: not checked).
+* ``efficiency`` (never made): the bins' ``efficiency`` and the ``cycle_efficiency``
+  printed (``ltca duty-cycle``'s table and cycle line, the duty-cycle page), judged by no
+  limit: the ``not checked`` line in the analysis' words (:func:`efficiency_not_judged`;
+  issue 71, notchecked83). ``ltca sweep`` and ``ltca tolerance`` have no verdict; their
+  summaries end with the same lines (:func:`study_not_checked`).
 * ``edge_contact``, ``certification`` (attention): bins with edge contact or
   uncertified roll positions; ``plastic_edges`` (attention) bins whose segments at the
   material's contact-pressure limit carry a share of the torque up to
@@ -178,12 +192,14 @@ from geometry.core.text import plain_number
 if TYPE_CHECKING:
     from contact.load_capacity.durability import StaticContactStrength
 
-__all__ = ["CHECKS", "CHECK_ORDER", "DUTY_MIN_SAFETY", "EDGE_SHARE_MIN",
+__all__ = ["CHECKS", "CHECK_ORDER", "DUTY_EFFICIENCY", "DUTY_MIN_SAFETY", "EDGE_SHARE_MIN",
            "EFFICIENCY_NOT_JUDGED", "GRADE", "LTE_FAIL_FACTOR", "LTE_LIMIT",
-           "MICROPITTING_MIN", "SCUFFING_MIN", "SEVERITIES",
-           "VH_SAME_POSITION", "VH_TARGET_TOLERANCE", "EdgePeaks", "Finding", "Verdict",
-           "edge_peaks", "flank_static_strength", "quiet_transfer", "shown_above",
-           "shown_below", "verdict", "weaker_contact_curve"]
+           "MICROPITTING_MIN", "PRINTED_NOT_JUDGED", "SCUFFING_MIN", "SEVERITIES",
+           "STUDY_NOT_JUDGED",
+           "STUDY_PRINTED", "VH_SAME_POSITION", "VH_TARGET_TOLERANCE", "EdgePeaks", "Finding",
+           "Verdict", "edge_peaks", "efficiency_not_judged", "flank_static_strength",
+           "not_checked_line", "quiet_transfer", "shown_above", "shown_below",
+           "study_not_checked", "verdict", "weaker_contact_curve"]
 
 #: the severities, mildest first (a verdict is the worst of its findings)
 SEVERITIES = ("pass", "attention", "fail")
@@ -266,7 +282,9 @@ class Verdict:
     unchecked : tuple of (str, str)
         The checks of the kind (:data:`CHECKS`) that could not be made, each with why
         (the group its data lives in is absent: an analysis tree without ``/ltca`` makes
-        none of the contact checks); a verdict is only as complete as its checks.
+        none of the contact checks); a verdict is only as complete as its checks. After
+        them, the quantities the result prints that no check judges
+        (:data:`PRINTED_NOT_JUDGED`, each with why).
     notes : tuple of str
         What a check left out and why, where no finding says it: a flank peak pressure
         above σ_Hlim in the dataset only through contact curves clipped into a flank
@@ -311,8 +329,7 @@ class Verdict:
         shown = self.findings if limit is None else self.findings[:limit]
         out = [head] + [f"  {f.severity}: {f.reason}" for f in shown]
         out += [f"  note: {n}" for n in self.notes]
-        out += [f"  not checked: {', '.join(checks)} ({why})"
-                for checks, why in self.not_checked()]
+        out += [not_checked_line(checks, why) for checks, why in self.not_checked()]
         if len(shown) < n:
             out.append(f"  … and {n - len(shown)} more "
                        f"({rest or 'the report lists them all'})")
@@ -1337,6 +1354,64 @@ def _bin_misalignment(ds: xr.Dataset, i: int) -> str:
             f"alone{made_up})")
 
 
+def _duty_rating(ds: xr.Dataset) -> list[Finding]:
+    """Each bin's ISO 10300 S_H and S_F (``iso_contact_safety``, ``iso_bending_safety``:
+    the rating at the bin's torque and speed, which ``ltca duty-cycle`` prints per bin)
+    against the rating's S_H,min and S_F,min: attention, never fail. A bin's rating is at
+    the bin's speed, whose speed factors (Z_v, the lubricant film; K_v) are not the
+    case's: the default development's pc_hypoid_10x43 at its ISO capacity 357 N·m reads S_H
+    0.99 in the illustrative spectrum's top bin (357 N·m at 600 rpm) where ``ltca run`` at
+    357 N·m and the case's speed reads 1.00 and passes. Under a load spectrum the life is
+    the Miner damage's (ISO 6336-6), which the ``damage`` check judges; a design torque
+    above the capacity at the case's speed is ``ltca run``'s ``rating`` FAIL. One finding
+    per member and safety, naming the bins and the lowest. The static strength is the
+    ``static`` check's (the flank). Issue 71 (notchecked83): printed, never judged."""
+    design = float(ds["rating_design_torque"]) if "rating_design_torque" in ds else math.nan
+    torques = np.asarray(ds["torque"].values, float)
+    out = []
+    for name, least, symbol, what in (
+            ("iso_contact_safety", "contact_safety_min", "S_H", "pitting"),
+            ("iso_bending_safety", "bending_safety_min", "S_F", "bending")):
+        if name not in ds or least not in ds:
+            continue
+        smin = float(ds[least])
+        safety = np.asarray(ds[name].transpose("bin", "member").values, float)
+        for k, m in enumerate(str(x) for x in ds["member"].values):
+            bins = [i for i in range(torques.size)
+                    if np.isfinite(safety[i, k]) and safety[i, k] < smin]
+            if bins:
+                i = min(bins, key=lambda b: safety[b, k])
+                why = (f"above the rating's design torque {_t(design)}: a load of finite "
+                       "life, the damage over the cycle decides"
+                       if torques[i] > design else
+                       "at or below the rating's design torque, at the bin's speed (the "
+                       "rating's speed factors are the bin's; `ltca run` judges the design "
+                       "torque at the case's speed): under a load spectrum the damage over "
+                       "the cycle decides the life")
+                out.append(Finding(
+                    "attention", "rating",
+                    f"{m}: ISO 10300 {what} safety {symbol} "
+                    f"{shown_below(float(safety[i, k]), smin, 2)} below {symbol}min {smin:g} "
+                    f"(the rating at the bin's torque and speed, as `ltca run` judges it) in "
+                    f"bin{'s' * (len(bins) > 1)} {', '.join(str(b) for b in bins)} (lowest: "
+                    f"bin {i}, {_t(float(torques[i]))}); {why}"))
+    return out
+
+
+def _duty_rated(ds: xr.Dataset) -> tuple[list[Finding], list[str]]:
+    """The findings of the checks against the rating's minima where the file has their
+    data (``root_stress``, ``rating``), and those checks."""
+    out: list[Finding] = []
+    checks: list[str] = []
+    if "root_stress_safety" in ds:
+        checks.append("root_stress")
+        out += _duty_root_stress(ds)
+    if "iso_contact_safety" in ds and "contact_safety_min" in ds and "torque" in ds:
+        checks.append("rating")
+        out += _duty_rating(ds)
+    return out, checks
+
+
 def _duty_bending(ds: xr.Dataset) -> list[Finding]:
     """The attention finding of a duty cycle without its bending side, with why."""
     if "root_life" in ds:
@@ -1372,9 +1447,9 @@ def _duty(ds: xr.Dataset) -> tuple[list[Finding], list[str]]:
                     f"{DUTY_MIN_SAFETY:g} at the "
                     f"peak-torque bin (life factor 1): beyond the endurance limit there; "
                     f"the Miner damage {d:.3g} over the cycle decides the life"))
-    if "root_stress_safety" in ds:
-        checks.append("root_stress")
-        findings += _duty_root_stress(ds)
+    rated, made = _duty_rated(ds)
+    findings += rated
+    checks += made
     if "plausibility" in ds:
         from contact.ltca.plausibility import CAUSES
 
@@ -1524,7 +1599,7 @@ CHECKS: Mapping[str, tuple[str, ...]] = {
                  "micropitting", "rating", "root_stress", "scuffing_standard", "efficiency"),
     "duty cycle": ("damage", "safety", "implausible", "static", "edge_contact",
                    "plastic_edges", "edge_pressure", "certification", "bending",
-                   "illustrative", "lte"),
+                   "illustrative", "lte", "rating", "efficiency"),
     "V-H check": ("degenerate", "target", "map"),
 }
 
@@ -1578,15 +1653,146 @@ def verdict(result: xr.DataTree | xr.Dataset, *, lte_limit: float = LTE_LIMIT) -
     elif kind == "duty cycle":
         ds = result["duty_cycle"].to_dataset() if isinstance(result, xr.DataTree) else result
         notes = (_duty_static(ds) or ([], []))[1]
-    return Verdict(kind, _worst_first(findings), tuple(checks),
-                   _unchecked(result, kind, checks), tuple(notes))
+    unchecked = _unchecked(result, kind, checks) + tuple(_printed_not_judged(result, kind))
+    return Verdict(kind, _worst_first(findings), tuple(checks), unchecked, tuple(notes))
+
+
+def efficiency_not_judged(printed: str = "efficiency_mean") -> str:
+    """Why the ``efficiency`` check is never made, in the words every verdict and study
+    summary uses (module docstring; issue 71): ``<printed> printed, judged by no limit: …``.
+
+    Parameters
+    ----------
+    printed : str
+        The variable(s) the result prints: ``"efficiency_mean"`` (``ltca run``, the
+        report), ``"efficiency and cycle_efficiency"`` (a duty cycle), ``"efficiency"`` (a
+        sweep or tolerance study).
+
+    Returns
+    -------
+    str
+        The reason of the ``not checked: efficiency (…)`` line.
+    """
+    return (f"{printed} printed, judged by no limit: a gear set's mechanical efficiency has "
+            "no standard's minimum; compare it with the design's target")
 
 
 #: why the ``efficiency`` check is never made (module docstring): the number is printed
 #: (``ltca run``'s table, the report's summary) but judged by no limit
-EFFICIENCY_NOT_JUDGED = ("efficiency_mean printed, judged by no limit: a gear set's "
-                         "mechanical efficiency has no standard's minimum; compare it with "
-                         "the design's target")
+EFFICIENCY_NOT_JUDGED = efficiency_not_judged()
+
+#: what a duty cycle prints of its efficiency (``ltca duty-cycle``'s table and cycle line,
+#: the duty-cycle page): per bin and over the cycle
+DUTY_EFFICIENCY = "efficiency and cycle_efficiency"
+
+#: the variables ``ltca sweep`` and ``ltca tolerance`` print per torque (their ranges,
+#: their percentiles) that no limit of a study judges: a study has no verdict (only its
+#: plausibility line judges the points)
+STUDY_PRINTED = ("lte_peak_to_peak", "pressure_max_flank", "pressure_max_edge",
+                 "edge_load_share", "root_stress_max")
+
+#: why those are not checked
+STUDY_NOT_JUDGED = ("a study prints their ranges and judges none against the limits of "
+                    "ltca run's verdict; run the case at a point to judge it there")
+
+
+def not_checked_line(checks: tuple[str, ...] | list[str], why: str) -> str:
+    """The line ``  not checked: <checks> (<why>)`` of :meth:`Verdict.lines` and of the
+    study summaries (:func:`study_not_checked`), one wording for all (issue 71).
+
+    Parameters
+    ----------
+    checks : sequence of str
+        The checks (or printed quantities) not judged, in their order.
+    why : str
+        The one reason they share.
+
+    Returns
+    -------
+    str
+        The line, indented by two spaces.
+    """
+    return f"  not checked: {', '.join(checks)} ({why})"
+
+
+def study_not_checked(ds: xr.Dataset) -> list[tuple[tuple[str, ...], str]]:
+    """What the summary of a sweep or tolerance study prints but does not judge, as
+    :meth:`Verdict.not_checked` gives it: ``(checks, why)`` per reason — the efficiency
+    (where the study ran an efficiency stage) in the words of ``ltca run``'s verdict
+    (:func:`efficiency_not_judged`), the contact results of :data:`STUDY_PRINTED` it has.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        The study's dataset (:func:`contact.study.sweep`, :func:`contact.study.sample`).
+
+    Returns
+    -------
+    list of (tuple of str, str)
+        Empty where the dataset holds none of them.
+    """
+    out: list[tuple[tuple[str, ...], str]] = []
+    shown = tuple(n for n in STUDY_PRINTED if n in ds)
+    if shown:
+        out.append((shown, STUDY_NOT_JUDGED))
+    if "efficiency" in ds:
+        out.append((("efficiency",), efficiency_not_judged("efficiency")))
+    return out
+
+#: what each kind of result prints (``ltca run``'s table and lines, ``ltca report``'s
+#: page, ``ltca duty-cycle``'s table, lines and page) and no check judges against a
+#: limit, beside the ``efficiency``: per kind, (names, the group — "" for the duty
+#: cycle's dataset — and the variable whose presence means it is printed, why). The
+#: verdict lists them among its ``not checked`` lines where the result holds the variable
+#: (issue 71, notchecked83; docs/verdicts.md, "What the verdict judges of what is
+#: printed").
+PRINTED_NOT_JUDGED: Mapping[str, tuple[tuple[tuple[str, ...], str, str, str], ...]] = {
+    "analysis": (
+        (("lte_mean", "lte_harmonics"), "ltca", "lte_harmonics",
+         "the LTE mean, 1st-3rd harmonics and their RMS* printed, judged by no limit: the "
+         "verdict judges the LTE peak-to-peak (lte); the mean is the static wind-up under "
+         "load, the harmonics the mesh orders of the same curve, for which the toolkit "
+         "holds no limit"),
+        (("mesh_stiffness",), "mesh_interface", "mesh_stiffness_mean",
+         "mesh_stiffness_mean printed (the report), judged by no limit: an input of a "
+         "dynamic model, no criterion of the design"),
+        (("power_loss",), "friction", "power_loss_mean",
+         "power_loss_mean printed (the report), judged by no limit: the efficiency's loss "
+         "in W; compare it with the housing's heat balance"),
+        (("pressure_ratio", "root_stress_ratio"), "rating", "sigma_H",
+         "p_max/σ_H and FE/σ_F printed beside the rating, two measures side by "
+         "side: the verdict judges each side (flank_pressure, root_stress, rating), not "
+         "their ratio"),
+    ),
+    "duty cycle": (
+        (("lte_mean",), "", "lte_mean",
+         "the bins' LTE mean printed, judged by no limit: the verdict judges their LTE "
+         "peak-to-peak (lte); the mean is the static wind-up under load"),
+        (("power_loss", "cycle_energy"), "", "cycle_energy_lost",
+         "the bins' power_loss and the cycle's energy in and lost printed, judged by no "
+         "limit: the efficiency's loss; compare it with the housing's heat balance"),
+        (("local_safety",), "", "local_contact_safety",
+         "the bins' local S_H, S_F (the rating's allowables over the LTCA's peak stresses) "
+         "printed beside the rating's, judged by no limit of their own: the verdict judges "
+         "the rating's S_H, S_F (rating), the FE root's (root_stress), the peak bin's "
+         "(safety) and the Miner damage (damage)"),
+    ),
+}
+
+
+def _printed_not_judged(result, kind: str) -> list[tuple[str, str]]:
+    """The ``(name, why)`` of :data:`PRINTED_NOT_JUDGED` whose variable ``result`` holds."""
+    out = []
+    for names, group, var, why in PRINTED_NOT_JUDGED.get(kind, ()):
+        if kind == "duty cycle":
+            ds = (result["duty_cycle"].to_dataset() if isinstance(result, xr.DataTree)
+                  else result)
+        else:
+            ds = _group(result, group) if isinstance(result, xr.DataTree) else None
+        if ds is not None and var in ds:
+            out += [(n, why) for n in names]
+    return out
+
 
 #: the group an analysis check reads and why it is missing when the group is
 _ANALYSIS_GROUPS = {
@@ -1604,6 +1810,11 @@ def _unchecked(result, kind: str, checks: list[str]) -> tuple[tuple[str, str], .
     analysis' own reason where its root attribute ``load_capacity_not_run`` gives one,
     :func:`contact.run_analysis`), else the data the result lacks."""
     missing = [c for c in CHECKS[kind] if c not in checks]
+    if kind == "duty cycle":  # the efficiency printed per bin and over the cycle
+        ds = result["duty_cycle"].to_dataset() if isinstance(result, xr.DataTree) else result
+        said = efficiency_not_judged(DUTY_EFFICIENCY)
+        return tuple((c, said if c == "efficiency" and "efficiency" in ds
+                      else "the result lacks its data") for c in missing)
     if kind != "analysis":
         return tuple((c, "the result lacks its data") for c in missing)
     group = {"friction_extrapolated": "friction", "efficiency": "friction",

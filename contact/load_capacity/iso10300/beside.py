@@ -205,7 +205,8 @@ def bin_ratings(case, torque: Any, speed: Any, flank: str | None = None
         ``contact_allowable_factor`` (Z_X Z_L Z_v Z_R Z_W Z_K Z_Hyp),
         ``contact_static_influence`` (Z_L Z_v Z_R), ``bending_allowable_factor``
         (Y_δ,relT Y_R,relT Y_X) and ``bending_static_influence`` (Y_R,relT Y_X) [1]
-        (bin, member), ``K_A_K_v`` (bin), ``S_Fmin`` and ``design_torque`` [N·m] (), each
+        (bin, member), ``K_A_K_v`` (bin), ``S_Fmin``, ``S_Hmin`` and ``design_torque``
+        [N·m] (), each
         with ``units``, ``long_name`` and ``clause``, and ``""``; or
         None and the one line of :func:`analysis_rating` saying why there is no rating.
 
@@ -270,6 +271,9 @@ def bin_ratings(case, torque: Any, speed: Any, flank: str | None = None
                             clause="ISO 10300-1:2014"),
         "S_Fmin": data_var((), float(ratings[0]["S_Fmin"]), "1",
                            "minimum safety factor for bending S_F,min", clause="[rating]"),
+        # the duty cycle's rating check judges S_H against it as ltca run does (issue 71)
+        "S_Hmin": data_var((), float(ratings[0]["S_Hmin"]), "1",
+                           "minimum safety factor for pitting S_H,min", clause="[rating]"),
         "design_torque": data_var((), float(ratings[0]["design_torque"])
                                   if "design_torque" in ratings[0] else np.nan, "N m",
                                   "the rating's design torque (NaN: every torque)",
