@@ -321,7 +321,10 @@ class Verdict:
         :attr:`notes`); at most ``limit`` findings, the rest
         counted, with ``rest`` saying where they are listed (default: the report); a
         line ``  not checked: <checks> (<why>)`` per reason some checks could not be made
-        (:attr:`unchecked`)."""
+        (:attr:`unchecked`). With a ``limit`` (the console's short form) the quantities
+        printed and judged by no limit (:data:`PRINTED_NOT_JUDGED`, the efficiency) are
+        one line ``  not judged: <names> (printed, judged by no limit: the report says
+        why)``."""
         n = len(self.findings)
         head = (f"VERDICT ({self.kind}): {self.severity.upper()}"
                 + (f", {n} finding{'s' * (n != 1)}" if n else
@@ -329,7 +332,17 @@ class Verdict:
         shown = self.findings if limit is None else self.findings[:limit]
         out = [head] + [f"  {f.severity}: {f.reason}" for f in shown]
         out += [f"  note: {n}" for n in self.notes]
-        out += [not_checked_line(checks, why) for checks, why in self.not_checked()]
+        groups = self.not_checked()
+        if limit is not None:
+            # the short form (the console): the quantities printed and judged by no limit
+            # in one line, so that the findings stay in view; each reason in the report
+            quiet = [checks for checks, _ in groups if set(checks) <= _PRINTED_NAMES]
+            groups = [(c, w) for c, w in groups if not set(c) <= _PRINTED_NAMES]
+        out += [not_checked_line(checks, why) for checks, why in groups]
+        if limit is not None and quiet:
+            names = [n for checks in quiet for n in checks]
+            out.append(f"  not judged: {', '.join(names)} (printed, judged by no limit: "
+                       "the report says why)")
         if len(shown) < n:
             out.append(f"  … and {n - len(shown)} more "
                        f"({rest or 'the report lists them all'})")
@@ -1778,6 +1791,12 @@ PRINTED_NOT_JUDGED: Mapping[str, tuple[tuple[tuple[str, ...], str, str, str], ..
          "(safety) and the Miner damage (damage)"),
     ),
 }
+
+
+#: the names of :data:`PRINTED_NOT_JUDGED` and the efficiency: the not-checked lines a
+#: short verdict (:meth:`Verdict.lines` with a limit, the console) gathers in one line
+_PRINTED_NAMES = frozenset({"efficiency"} | {n for rows in PRINTED_NOT_JUDGED.values()
+                                             for names, _, _, _ in rows for n in names})
 
 
 def _printed_not_judged(result, kind: str) -> list[tuple[str, str]]:
