@@ -467,3 +467,29 @@ def test_a_shaft_angle_past_the_internal_gear_names_its_limit_in_degrees(tmp_pat
     err = capsys.readouterr().err
     assert rc == 2 and f"must be below {limit} for 13x39" in err
     assert not (tmp_path / "case.toml").exists()
+
+
+def test_a_rating_table_missing_a_required_field_says_it_replaces_the_defaults(tmp_path,
+                                                                                capsys):
+    """A basic file whose ``[rating]`` gives only ``coast_design_torque`` (round 24, branch
+    unseen84: the FH 14x39 typed so) is refused before any work, rc 2, naming
+    rating.application_factor as before and now saying that the table replaces the stated
+    defaults whole and which fields to give; a bad value (not a missing field) keeps its own
+    message alone. No numbers: the text is the result."""
+    text = (DESIGNS / "spiral_bevel_13x39.toml").read_text(encoding="utf-8")
+    assert "[rating]" not in text
+    path = tmp_path / "coast_only.toml"
+    path.write_text(text + "\n[rating]\ncoast_design_torque = 200.0\n", encoding="utf-8")
+    rc = main(["synthesize", str(path), "-o", str(tmp_path / "case.toml")])
+    err = capsys.readouterr().err
+    assert rc == 2
+    assert "rating.application_factor: missing" in err
+    assert "replaces the stated defaults whole" in err and "accuracy_grade" in err
+    assert not (tmp_path / "case.toml").exists()
+    bad = tmp_path / "bad_ka.toml"
+    bad.write_text(text + '\n[rating]\napplication_factor = 9.0\nmounting = "one"\n'
+                   "accuracy_grade = [6, 8]\n", encoding="utf-8")
+    rc = main(["synthesize", str(bad), "-o", str(tmp_path / "case.toml")])
+    err = capsys.readouterr().err
+    assert rc == 2 and "application_factor" in err
+    assert "replaces the stated defaults" not in err

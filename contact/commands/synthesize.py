@@ -5,8 +5,9 @@ from __future__ import annotations
 import argparse
 import math
 import sys
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from pathlib import Path
+from typing import Any
 
 from contact.commands.options import (
     checked_fe_level,
@@ -944,6 +945,39 @@ def _developed(basic, args: argparse.Namespace, steps):
     return development, basic, targets
 
 
+def checked_basic_rating(rating: dict[str, Any], check: Callable[[dict[str, Any]], object]) -> None:
+    """Refuse a bad ``[rating]`` table of a basic design file before the synthesis starts.
+
+    Parameters
+    ----------
+    rating : dict
+        The basic file's ``[rating]`` table (non-empty).
+    check : callable
+        The rating inputs' reader, ``RatingInputs.from_mapping`` (raises InputError naming
+        ``rating.<field>``).
+
+    Raises
+    ------
+    InputError
+        ``check``'s, naming the field; where a required field is missing it adds that the
+        basic file's table replaces the stated defaults whole (docs/synthesis.md, "The
+        written case"), so that a user who gives only ``coast_design_torque`` (round 24,
+        branch unseen84) learns which fields to copy.
+    """
+    from geometry.core.errors import InputError
+
+    try:
+        check(rating)
+    except InputError as exc:
+        if ": missing (" not in str(exc):
+            raise
+        raise InputError(
+            f"{exc}; a basic file's [rating] table replaces the stated defaults whole "
+            "(docs/synthesis.md, 'The written case'): give application_factor, mounting "
+            "and accuracy_grade too, e.g. the case's [rating] that `ltca synthesize "
+            "--no-development` writes (1.0, \"one\", [6, 8])") from None
+
+
 def _run_synthesize(args: argparse.Namespace) -> int:
     import dataclasses
     import tomllib
@@ -981,7 +1015,7 @@ def _run_synthesize(args: argparse.Namespace) -> int:
     basic = dataclasses.replace(basic, root_stress={"fe_level": synthesis_fe_level(
         basic, checked_fe_level(getattr(args, "fe_level", None)))})
     if basic.rating:  # a bad [rating] table refused before the work (rating.<field>)
-        RatingInputs.from_mapping(basic.rating)
+        checked_basic_rating(basic.rating, RatingInputs.from_mapping)
     _check_apply(args)
     steps = (StepLines("synthesize", SYNTHESIS_STEPS) if getattr(args, "progress", False)
              else None)
