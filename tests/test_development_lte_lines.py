@@ -48,6 +48,15 @@ def test_within_the_target_nothing_is_said_and_the_target_alone_is_named():
                           {"peak": 41.0, "at": 120.0}, 60.0, 40.0)
     assert line.endswith("41.0 urad at 120 N m between them: within the verdict's limit 60 "
                          "urad, the development's target 40 urad missed")
+    # met at both torques (the development's judgement), above the target between them
+    # only: not "missed" beside synthesize's "every target met" (round 24's 14x39 FH:
+    # 42.3 urad between, its ends within 40)
+    line = flank_lte_line("drive", (43.6, 290.8), (20.0, 38.0),
+                          {"peak": 42.3, "at": 200.0}, 60.0, 40.0)
+    assert line.endswith("42.3 urad at 200 N m between them: within the verdict's limit 60 "
+                         "urad; above the development's target 40 urad between the torques "
+                         "only (the development judges it at the light and design torques: "
+                         "met there)")
     # not judged between the torques (no record): said so
     assert "not judged between them" in flank_lte_line("drive", (27.0, 180.0), (20.0, 45.0),
                                                        None, 60.0, 40.0)

@@ -82,6 +82,13 @@ def flank_lte_line(flank: str, torques: tuple[float, float], ends: tuple[float, 
     if math.isfinite(peak) and peak > limit:
         return (line + f": above the verdict's limit {limit:g} urad between the torques "
                 f"({run} finds it there)")
+    if max(light, design) <= float(target):
+        # met where the development judges its target (its two torques), above it only
+        # between them: said so, or "every target met" above reads as contradicted
+        # (round 24's 14x39 FH and 17x41 at Sigma 75 deg)
+        return line + (f": within the verdict's limit {limit:g} urad; above the development's "
+                       f"target {float(target):g} urad between the torques only (the "
+                       "development judges it at the light and design torques: met there)")
     return line + f": within the verdict's limit {limit:g} urad, the development's target " \
         f"{float(target):g} urad missed"
 
