@@ -641,6 +641,17 @@ def _with_record(case, record):
     return dataclasses.replace(case, extra=MappingProxyType(extra))
 
 
+def _given_coast_torque(case) -> float | None:
+    """The ``[rating] coast_design_torque`` [N·m] of ``case`` where it is a finite number,
+    else None (``ltca synthesize`` prints it as the coast design torque; issue 71)."""
+    value = (case.extra.get("rating") or {}).get("coast_design_torque")
+    try:
+        value = float(value)
+    except (TypeError, ValueError):
+        return None
+    return value if math.isfinite(value) else None
+
+
 def _lte_lines(case, development) -> list[str]:
     """Each flank's written LTE at its light and design torque and its largest between
     them, where it misses the development's target or the verdict's limit
@@ -1073,6 +1084,11 @@ def _run_synthesize(args: argparse.Namespace) -> int:
     print(_design_torque_line(torque, torque_why, development))
     if math.isfinite(coast_torque):
         print(f"  coast design torque: {plain_number(coast_torque)} N m, {coast_why}")
+    elif (given_coast := _given_coast_torque(case)) is not None:
+        # a coast torque the basic file gives was written without a line (round 24's
+        # 14x39 FH: 200 N m in the case, said only by the development's lines)
+        print(f"  coast design torque: {plain_number(given_coast)} N m, given ([rating] "
+              "coast_design_torque of the basic file)")
     given = torque_why.startswith(("[synthesis] design_torque", "[rating] design_torque"))
     above = _given_torque_note(case, torque, development) if given else None
     if above is not None:
