@@ -189,11 +189,12 @@ def uncertified_torques(ltca: xr.Dataset) -> np.ndarray:
     -------
     numpy.ndarray of bool, shape (n_torque,)
     """
-    n = ltca.sizes["torque"]
+    from contact.ltca.summary import certification
+
     if "found" not in ltca.variables:
-        return np.zeros(n, dtype=bool)
-    found = np.asarray(ltca.variables["found"].values) > 0
-    return ~found.reshape(n, -1).all(axis=1)
+        return np.zeros(ltca.sizes["torque"], dtype=bool)
+    cert = certification(ltca)
+    return np.asarray(cert.certified) < cert.rolls
 
 
 def check_efficiency(who: str, friction: xr.Dataset, n_torque: int,
