@@ -301,8 +301,10 @@ def judged_remedy(before: Verdict, after: Verdict, safety_before: float,
         return RemedyJudgement(False, f"not kept: the root improves ({root}) but "
                                       f"{', '.join(lost)} {'is' if len(lost) == 1 else 'are'} "
                                       "worse than the case as given", lost)
-    still = [f for f in _root_findings(after.findings) if f.severity == "fail"]
+    still = _root_findings(after.findings)
     return RemedyJudgement(True, f"kept: the root improves ({root}) and no criterion the case "
                                  "met is lost" + (
-                                     "; the root is still below its minimum: the edge radius "
-                                     "alone does not hold these torques" if still else ""))
+                                     "; the root is still below its minimum "
+                                     f"({', '.join(sorted({f.severity for f in still}))}): the "
+                                     "edge radius alone does not hold these torques"
+                                     if still else ""))
