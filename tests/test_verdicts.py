@@ -774,6 +774,13 @@ def test_a_study_summary_says_what_it_prints_and_does_not_judge():
         "mechanical efficiency has no standard's minimum; compare it with the design's "
         "target)")
     assert study_not_checked(xr.Dataset()) == []
+    # the study files' attribute: the same lines, unindented (issue 71, remedy84)
+    from contact.study.verdicts import study_not_checked_attrs, study_not_checked_text
+
+    assert study_not_checked_text(ds).splitlines() == [
+        not_checked_line(*g).strip() for g in got]
+    assert study_not_checked_attrs(ds) == {"not_checked": study_not_checked_text(ds)}
+    assert study_not_checked_attrs(xr.Dataset()) == {}
 
 
 def test_a_duty_cycle_judges_the_ratings_safeties_it_prints_as_ltca_run():

@@ -195,12 +195,14 @@ if TYPE_CHECKING:
 __all__ = ["CHECKS", "CHECK_ORDER", "DUTY_EFFICIENCY", "DUTY_MIN_SAFETY", "EDGE_SHARE_MIN",
            "EFFICIENCY_NOT_JUDGED", "GRADE", "LTE_FAIL_FACTOR", "LTE_LIMIT",
            "MICROPITTING_MIN", "PRINTED_NOT_JUDGED", "SCUFFING_MIN", "SEVERITIES",
-           "STUDY_NOT_JUDGED",
+           "STUDY_NOT_CHECKED_ATTR", "STUDY_NOT_JUDGED",
            "STUDY_PRINTED", "VH_SAME_POSITION", "VH_TARGET_TOLERANCE", "EdgePeaks", "Finding",
            "Verdict", "duty_static_bins", "edge_peaks", "efficiency_not_judged",
            "flank_static_strength",
            "not_checked_line", "quiet_transfer", "shown_above", "shown_below",
-           "study_not_checked", "verdict", "weaker_contact_curve"]
+           "study_not_checked", "study_not_checked_attrs", "study_not_checked_text",
+           "verdict",
+           "weaker_contact_curve"]
 
 #: the severities, mildest first (a verdict is the worst of its findings)
 SEVERITIES = ("pass", "attention", "fail")
@@ -1800,6 +1802,39 @@ def study_not_checked(ds: xr.Dataset) -> list[tuple[tuple[str, ...], str]]:
     if "efficiency" in ds:
         out.append((("efficiency",), efficiency_not_judged("efficiency")))
     return out
+
+
+#: the attribute of a sweep's or a tolerance study's file that lists what its summary
+#: prints and no limit judges (:func:`study_not_checked_text`)
+STUDY_NOT_CHECKED_ATTR = "not_checked"
+
+
+def study_not_checked_text(ds: xr.Dataset) -> str:
+    """The ``not checked`` lines of a sweep or tolerance study, as its file's attribute
+    :data:`STUDY_NOT_CHECKED_ATTR` keeps them: one line per reason,
+    ``not checked: <names> (<why>)``, the words ``ltca run``'s verdict and the study's
+    summary print (:func:`not_checked_line`, :func:`study_not_checked`; issue 71).
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        The study's dataset (:func:`contact.study.sweep`, :func:`contact.study.sample`).
+
+    Returns
+    -------
+    str
+        The lines joined by newlines, without their indent; ``""`` where the dataset holds
+        none of the printed quantities.
+    """
+    return "\n".join(not_checked_line(checks, why).strip()
+                     for checks, why in study_not_checked(ds))
+
+
+def study_not_checked_attrs(ds: xr.Dataset) -> dict[str, str]:
+    """``{STUDY_NOT_CHECKED_ATTR: text}`` of :func:`study_not_checked_text` for a study's
+    dataset's attributes (netCDF: a str), or ``{}`` where there is nothing to say."""
+    text = study_not_checked_text(ds)
+    return {STUDY_NOT_CHECKED_ATTR: text} if text else {}
 
 #: what each kind of result prints (``ltca run``'s table and lines, ``ltca report``'s
 #: page, ``ltca duty-cycle``'s table, lines and page) and no check judges against a
