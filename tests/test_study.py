@@ -71,13 +71,18 @@ def case():
     return dataclasses.replace(resolve_case(None), misalignment=Misalignment())
 
 
-def test_sweep_on_a_local_cluster_equals_single_analyses(case):
+def test_sweep_on_a_local_cluster_equals_single_analyses(case, monkeypatch):
     """A 2×2 ΔE×ΔP grid on a 2-worker LocalCluster equals run_analysis at its diagonal
     points, to 1e-12; the tooth models are built once per worker, not once per point. (2×2, not
     3×3: four points already make both workers compute and reuse their models; the CI
-    budget.)"""
+    budget.) The cluster of one's own inherits this process's kernels, pinned to its
+    choice: unset, ``auto`` is decided by numba's cache in each process, which other tests
+    may fill in between (the engine's own cluster passes it, ``worker_environment``)."""
     distributed = pytest.importorskip("distributed")
     from contact.compliance.mesh import model_cache_info
+    from geometry.core.kernels import process_choice
+
+    monkeypatch.setenv("LTCA_KERNELS", process_choice())
 
     dE, dP = [-0.1, 0.1], [0.0, 0.05]
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
@@ -280,6 +285,7 @@ def test_study_commands(tmp_path, capsys):
     assert main(["sweep", "--dE", "-0.1:0.1:2", "--dP", "0,0.05", "--torque", "250",
                  "-o", str(tmp_path / "map.nc"), "--plots", str(tmp_path / "figs"),
                  *common]) == 0
+    first = capsys.readouterr().out  # the sweep's summary
     ds = read_netcdf(tmp_path / "map.nc")
     assert ds["lte_peak_to_peak"].dims == ("delta_E", "delta_P", "torque")
     np.testing.assert_allclose(ds["delta_E"].values, [-0.1, 0.1])
@@ -292,11 +298,22 @@ def test_study_commands(tmp_path, capsys):
     assert "P95" in out and "efficiency" in out
     # what the summary prints it does not judge: said, the efficiency in the words of
     # ltca run's verdict (issue 71, notchecked83)
-    from contact.study.verdicts import efficiency_not_judged
+    from contact.study.verdicts import STUDY_NOT_JUDGED, efficiency_not_judged
 
     assert f"not checked: efficiency ({efficiency_not_judged('efficiency')})" in out
     assert "not checked: lte_peak_to_peak, pressure_max_flank" in out
     tol = read_netcdf(tmp_path / "tol.nc")
+    # the files keep the lines their summaries printed, word for word, as their
+    # not_checked attribute (issue 71, remedy84)
+    for f, text in ((tmp_path / "map.nc", ds.attrs["not_checked"]),
+                    (tmp_path / "tol.nc", tol.attrs["not_checked"])):
+        lines = text.splitlines()
+        assert lines and all(ln.startswith("not checked: ") for ln in lines), f
+        assert all(ln in out or ln in first for ln in lines), f
+    assert tol.attrs["not_checked"].splitlines() == [
+        "not checked: lte_peak_to_peak, pressure_max_flank, pressure_max_edge, "
+        f"edge_load_share, root_stress_max ({STUDY_NOT_JUDGED})",
+        f"not checked: efficiency ({efficiency_not_judged('efficiency')})"]
     # ΔΣ typed in degrees, stored in rad as Misalignment takes it
     assert np.all(np.abs(tol["delta_Sigma"].values) <= np.radians(0.01))
     assert (tmp_path / "figs" / "kolivand2009_fm_11x41_reference_tolerance_T250.png").is_file()

@@ -774,6 +774,13 @@ def test_a_study_summary_says_what_it_prints_and_does_not_judge():
         "mechanical efficiency has no standard's minimum; compare it with the design's "
         "target)")
     assert study_not_checked(xr.Dataset()) == []
+    # the study files' attribute: the same lines, unindented (issue 71, remedy84)
+    from contact.study.verdicts import study_not_checked_attrs, study_not_checked_text
+
+    assert study_not_checked_text(ds).splitlines() == [
+        not_checked_line(*g).strip() for g in got]
+    assert study_not_checked_attrs(ds) == {"not_checked": study_not_checked_text(ds)}
+    assert study_not_checked_attrs(xr.Dataset()) == {}
 
 
 def test_a_duty_cycle_judges_the_ratings_safeties_it_prints_as_ltca_run():
@@ -809,6 +816,48 @@ def test_a_duty_cycle_judges_the_ratings_safeties_it_prints_as_ltca_run():
     old = rated.drop_vars("contact_safety_min")
     assert "rating" not in verdict(old).checks
     assert ("rating", "the result lacks its data") in verdict(old).unchecked
+
+
+def test_a_duty_bin_above_the_static_strength_is_told_apart_from_a_finite_life():
+    """Issue 71 (remedy84): a bin whose flank peak pressure is above the static contact
+    strength (the ``static`` check's fail) is no load of finite life: its S_H below
+    S_Hmin is a fail of its own naming the bin and both numbers, not among the
+    attention's bins "the damage over the cycle decides". Bin 2 at 2565 MPa against
+    σ_Hlim 1500 × Z_NT,stat 1.6 = 2400 MPa (the weaker member's); bin 1 at 1900 MPa is
+    within it and stays the attention's."""
+    ds = _duty().isel(bin=[0, 1, 1]).assign(torque=("bin", [250.0, 500.0, 1765.0]))
+    rated = ds.assign(
+        iso_contact_safety=(("bin", "member"), [[1.33, 1.33], [0.93, 0.93], [0.62, 0.63]]),
+        contact_safety_min=((), 1.0), rating_design_torque=((), 250.0),
+        flank_peak_pressure=("bin", [1200.0, 1900.0, 2565.0]),
+        pressure_max_flank=("bin", [1200.0, 1900.0, 2565.0]),
+        contact_static_strength=(("bin", "member"), [[2400.0, 2450.0]] * 3))
+    from contact.study.verdicts import duty_static_bins
+
+    assert duty_static_bins(rated) == {2: (2565.0, 2400.0)}
+    assert duty_static_bins(_duty()) == {}
+    got = [(f.severity, f.check, f.reason) for f in verdict(rated).findings
+           if f.check == "rating"]
+    assert [g[:2] for g in got] == [("fail", "rating"), ("fail", "rating"),
+                                    ("attention", "rating"), ("attention", "rating")]
+    assert got[0][2] == (
+        "pinion: ISO 10300 pitting safety S_H 0.62 below S_Hmin 1 in bin 2 (1765 N·m), above "
+        "the flank's static strength: flank peak pressure 2565 MPa above 2400 MPa (σ_Hlim × "
+        "Z_NT,stat of the weaker member, the static check): no life there, no load of "
+        "finite life")
+    # the attention names bin 1 alone, its lowest bin 1: the static bin is not in it
+    assert "in bin 1 (lowest: bin 1, 500 N·m)" in got[2][2]
+    assert "bin 2" not in got[2][2]
+    # the static check's own fail is there beside it, as before
+    assert any(f.check == "static" and "bin 2" in f.reason for f in verdict(rated).findings)
+    # the console's safety table says the bin apart, with the same numbers
+    from contact.commands.duty_cycle import safety_lines
+
+    lines = safety_lines(rated.assign(
+        speed=("bin", [1500.0] * 3),
+        local_contact_safety=(("bin", "member"), [[2.0, 2.0]] * 3)))
+    assert ("bins above the flank's static strength (no life there, the static check): bin "
+            "2 (1765 N m) flank peak 2565 MPa above 2400 MPa") in lines
 
 
 def test_a_duty_cycle_says_the_rest_it_prints_is_not_judged():

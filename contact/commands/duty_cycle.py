@@ -112,7 +112,9 @@ def safety_lines(ds) -> list[str]:
     """The lines ``ltca duty-cycle`` prints on its safety factors per bin: the local ones
     (σ_Hlim over the bin's peak flank pressure, σ_FE over its peak fillet stress) beside
     the ISO 10300 rating's S_H, S_F at the bin's torque and speed, pinion / gear; or the
-    line saying why the rating is absent.
+    line saying why the rating is absent; and the bins above the flank's static strength
+    (:func:`contact.study.verdicts.duty_static_bins`), whose safeties are of no finite
+    life.
 
     Parameters
     ----------
@@ -148,6 +150,14 @@ def safety_lines(ds) -> list[str]:
                                      "S_F local", "S_F ISO"], tablefmt="github")]
     lines.append(f"ISO rating: {ds.attrs.get('iso_rating', '')}" if iso
                  else str(ds.attrs.get("iso_rating", "")))
+    from contact.study.verdicts import duty_static_bins
+
+    static = duty_static_bins(ds)  # no finite life there: told apart (issue 71, remedy84)
+    if static:
+        lines.append("bins above the flank's static strength (no life there, the static "
+                     "check): " + "; ".join(
+                         f"bin {i} ({float(ds['torque'].values[i]):g} N m) flank peak "
+                         f"{p:.0f} MPa above {s:.0f} MPa" for i, (p, s) in static.items()))
     return lines
 
 

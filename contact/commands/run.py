@@ -108,6 +108,13 @@ def register(sub) -> None:
                    "10300-1/-2/-3:2014 Method B1; agma2003: ANSI/AGMA 2003-D19, the case's "
                    "[agma2003] table; a plug-in's; default the case's [rating] method, else "
                    "iso10300; an unknown name lists those available)")
+    p.add_argument("--apply-remedy", dest="apply_remedy", action="store_true",
+                   help="where the verdict finds a tooth root below its minimum safety: "
+                   "analyse the case again with every blade's edge radius the largest the "
+                   "point widths and the clearance allow (the remedy printed under the "
+                   "verdict), print both, and write <output>_edge_radius.toml and .nc only "
+                   "where the root improves and no criterion the case met is lost "
+                   "(docs/verdicts.md)")
     progress_option(p)
     p.set_defaults(func=run, one_analysis=True)
 
@@ -308,19 +315,23 @@ def _run(args: argparse.Namespace) -> int:
         case, pinion_speed=args.speed, lubricant=args.lubricant, temperature=args.temperature,
         roughness=args.roughness, friction_model=args.friction_model,
         surface_state=args.surface_state)
-    tree = run_analysis(
-        case,
-        args.torque,
-        misalignment=mis,
-        flank=args.flank,
-        options=opts,
-        deviations=devs,
-        operating=operating,
-        # a bar on a terminal, plain lines in a log (the LTCA and a first FE build)
-        progress=args.progress,
-        steps=_chain_of(args, operating, case),
-        fe_level=fe_level,
-    )
+
+    def analyse(c):
+        return run_analysis(
+            c,
+            args.torque,
+            misalignment=mis,
+            flank=args.flank,
+            options=opts,
+            deviations=devs,
+            operating=operating,
+            # a bar on a terminal, plain lines in a log (the LTCA and a first FE build)
+            progress=args.progress,
+            steps=_chain_of(args, operating, c),
+            fe_level=fe_level,
+        )
+
+    tree = analyse(case)
     rating_why = ("ISO 10300 rating not computed (--no-rating)" if not args.rating
                   else str(tree.attrs.get("load_capacity_not_run", "")))
     fr = tree["friction"].to_dataset() if "friction" in tree.children else None
@@ -436,15 +447,39 @@ def _run(args: argparse.Namespace) -> int:
     print_verdict(tree, rest=None if args.report else
                   f"`ltca report {Path(output).name}` or `ltca run --report FILE.html` "
                   "lists them all")
-    for line in next_steps(tree, case, args.case, args.flank):  # under the verdict's
-        # findings; the commands unwrapped, to paste
+    apply = bool(getattr(args, "apply_remedy", False))
+    for line in next_steps(tree, case, args.case, args.flank, remedy=not apply):  # under
+        # the verdict's findings; the commands unwrapped, to paste
         print(line if line.startswith("    ltca ") else
               textwrap.fill(line, 100, subsequent_indent="      "))
     path = write_netcdf(tree, Path(output), inputs=tree.attrs["inputs"])
     print(f"wrote {path}")
     write_figures(path, args.plots, args.report, progress=not args.no_progress)
+    if apply:
+        _applied_remedy(case, tree, analyse, Path(output))
     check_certified(tree, path)
     return 0
+
+
+def _applied_remedy(case, tree, analyse, output: Path) -> None:
+    """``--apply-remedy``: the edge radius applied and judged
+    (:func:`contact.commands.run_remedy.apply_remedy`), printed; the remedied case and its
+    analysis written beside ``output`` (``<stem>_edge_radius.toml``, ``.nc``) only where
+    the remedy is kept: a case whose result was seen to fail is never offered."""
+    from contact.commands.run_remedy import apply_remedy
+    from geometry.core.io import write_netcdf
+
+    done = apply_remedy(case, tree, analyse)
+    for line in map(console_text, done.lines):
+        print(textwrap.fill(line, 100, subsequent_indent=" " * (len(line) - len(line.lstrip())
+                                                                 + 4)))
+    if done.kept and done.case is not None and done.tree is not None:
+        stem = output.with_suffix("")
+        toml = stem.with_name(stem.name + "_edge_radius.toml")
+        toml.write_text(done.case.to_toml(), encoding="utf-8")
+        nc = write_netcdf(done.tree, stem.with_name(stem.name + "_edge_radius.nc"),
+                          inputs=done.tree.attrs["inputs"])
+        print(f"wrote {toml} (the case with the edge radius) and {nc}")
 
 
 #: the verdict's checks a bearing change answers (the pattern, its edges, its pressure)
@@ -459,7 +494,8 @@ CAPACITY_CHECKS = ("rating", "static")
 BEARING_VARIABLES = {"point_radius": 4.0, "blade_angle": 1.25, "ratio_of_roll": 0.03}
 
 
-def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]:
+def next_steps(tree, case, case_arg: str | None, flank: str | None,
+               remedy: bool = True) -> list[str]:
     """The lines `ltca run` prints under a FAIL verdict's findings (indented as they are):
     the commands that answer them. A bearing finding (plastic or edge contact, flank
     pressure; :data:`BEARING_CHECKS`) gets the V-H check and an `ltca optimize` command
@@ -487,6 +523,10 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
     flank : str or None
         ``"drive"``, ``"coast"``, or the pinion flank by name (``"concave"``,
         ``"convex"``); None: drive.
+    remedy : bool, optional
+        Whether a root below its minimum gets the edge-radius remedy and its
+        ``--apply-remedy`` command (:func:`contact.commands.run_remedy.remedy_lines`;
+        default True; False where ``--apply-remedy`` is applying it).
 
     Returns
     -------
@@ -501,6 +541,14 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
     if side not in FLANK_ROLES:  # a pinion flank by name: its role, as `ltca optimize` takes
         side = "drive" if side == case.pair.drive_flank else "coast"
     lte = _light_design_lte(tree)
+    shown = case_arg if case_arg is not None else case.name
+    torques = " ".join(f"{t:g}" for t in tree["ltca"]["torque"].values)
+    root: list[str] = []
+    if remedy and any(f.check == "root_stress" for f in v.findings):
+        # the fillet first where the root is below its minimum (issue 71, remedy84)
+        from contact.commands.run_remedy import remedy_lines
+
+        root = remedy_lines(case, v, shown, side, torques)
     if v.severity != "fail":
         # an LTE above the verdict's limit whose cause is the design's low contact ratios:
         # the basic-file change that raises them (issue 71), or what `ltca synthesize`
@@ -508,10 +556,9 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
         if any(f.check == "lte" for f in v.findings):
             from contact.commands.next_steps import overlap_lines
 
-            return overlap_lines(case, "the LTE", lte, side)
-        return []
+            return root + overlap_lines(case, "the LTE", lte, side)
+        return root
     failed = {f.check for f in v.findings}
-    shown = case_arg if case_arg is not None else case.name
     method = (str(tree["rating"].attrs.get("rating_method", "")) if "rating" in tree.children
               else "")
     method = "" if method in ("", "iso10300") else method
@@ -520,7 +567,6 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
     speed = (float(tree["rating"]["pinion_speed"].values) if "rating" in tree.children
              and "pinion_speed" in tree["rating"].variables
              and tree["rating"]["pinion_speed"].ndim == 0 else 0.0)
-    torques = " ".join(f"{t:g}" for t in tree["ltca"]["torque"].values)
     out: list[str] = []
     capacity: list[str] = []
     if failed & set(CAPACITY_CHECKS):
@@ -537,6 +583,7 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
         f.check == "flank_pressure" and "static strength" in f.reason)) for f in v.findings)
     if overloaded:
         out += capacity
+    out += root
     if failed & set(BEARING_CHECKS):
         # a flank peak above the static strength: the optimisation is given it as a limit;
         # an optimised case's own optimisation is not printed again (its [optimize] table)

@@ -163,7 +163,9 @@ def sweep(
         Dims: the given inputs in the order ΔE, ΔP, ΔG, ΔΣ, deviation scale, then
         ``torque``, ``harmonic`` (of ``lte_harmonics``) and ``speed`` (of ``efficiency``,
         ``power_loss``). Variables: :data:`contact.study.summary.SUMMARY_VARIABLES`,
-        ``status`` (CF flag 0 ok, 1 uncertified, 2 failed), ``reason``.
+        ``status`` (CF flag 0 ok, 1 uncertified, 2 failed), ``reason``. Attribute
+        ``not_checked``: what the summary prints and no limit judges, one line per reason
+        in the verdict's words (:func:`contact.study.verdicts.study_not_checked_text`).
 
     Raises
     ------
@@ -195,6 +197,10 @@ def sweep(
                       n_workers=run.n_workers, progress=run.progress, kind="sweep",
                       force=run.force)
     grid = _to_grid(flat, axes)
+    from contact.study.verdicts import study_not_checked_attrs
+
+    # what the summary prints and no limit judges, in the file too (issue 71)
+    grid.attrs.update(study_not_checked_attrs(grid))
     if run.output is not None:
         write_study(grid, run.output, shared)
     return grid

@@ -204,7 +204,8 @@ def sample(
     xarray.Dataset
         dims ``sample`` (+ ``torque``, ``harmonic``, ``speed``); the drawn inputs as
         coordinates over ``sample``; the summaries, ``status`` and ``reason`` of
-        :func:`contact.study.sweep`. Attributes ``method``, ``seed``, ``distributions``.
+        :func:`contact.study.sweep`. Attributes ``method``, ``seed``, ``distributions``
+        and the sweep's ``not_checked``.
 
     Raises
     ------
@@ -224,6 +225,10 @@ def sample(
     ds.attrs.update(method=method, seed=-1 if seed is None else int(seed),
                     distributions="; ".join(f"{k}: {_describe(v)}"
                                             for k, v in distributions.items()))
+    from contact.study.verdicts import study_not_checked_attrs
+
+    # what the summary prints and no limit judges, in the file too (issue 71)
+    ds.attrs.update(study_not_checked_attrs(ds))
     if run.output is not None:
         write_study(ds, run.output, shared)
     return ds

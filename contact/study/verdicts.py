@@ -195,11 +195,14 @@ if TYPE_CHECKING:
 __all__ = ["CHECKS", "CHECK_ORDER", "DUTY_EFFICIENCY", "DUTY_MIN_SAFETY", "EDGE_SHARE_MIN",
            "EFFICIENCY_NOT_JUDGED", "GRADE", "LTE_FAIL_FACTOR", "LTE_LIMIT",
            "MICROPITTING_MIN", "PRINTED_NOT_JUDGED", "SCUFFING_MIN", "SEVERITIES",
-           "STUDY_NOT_JUDGED",
+           "STUDY_NOT_CHECKED_ATTR", "STUDY_NOT_JUDGED",
            "STUDY_PRINTED", "VH_SAME_POSITION", "VH_TARGET_TOLERANCE", "EdgePeaks", "Finding",
-           "Verdict", "edge_peaks", "efficiency_not_judged", "flank_static_strength",
+           "Verdict", "duty_static_bins", "edge_peaks", "efficiency_not_judged",
+           "flank_static_strength",
            "not_checked_line", "quiet_transfer", "shown_above", "shown_below",
-           "study_not_checked", "verdict", "weaker_contact_curve"]
+           "study_not_checked", "study_not_checked_attrs", "study_not_checked_text",
+           "verdict",
+           "weaker_contact_curve"]
 
 #: the severities, mildest first (a verdict is the worst of its findings)
 SEVERITIES = ("pass", "attention", "fail")
@@ -1202,6 +1205,35 @@ def _edge_spread_bins(ds: xr.Dataset, bins: np.ndarray) -> np.ndarray:
     return bins[~loud]
 
 
+def duty_static_bins(ds: xr.Dataset) -> dict[int, tuple[float, float]]:
+    """The duty-cycle bins whose flank peak pressure is above the static contact strength
+    (the ``static`` check's fail, :func:`_duty_static`).
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        The ``/duty_cycle`` dataset: ``flank_peak_pressure`` (bin) [MPa] and
+        ``contact_static_strength`` (bin, member) [MPa].
+
+    Returns
+    -------
+    dict of int to (float, float)
+        Bin → (its flank peak pressure, the weaker member's static strength) [MPa]; empty
+        for a file without those variables.
+
+    Notes
+    -----
+    Source: σ_Hlim × Z_NT at the S–N curve's static end (ISO 6336-2 / ISO 10300-2 life
+    factor), the limit of ``ltca run``'s ``flank_pressure`` fail.
+    """
+    if not {"flank_peak_pressure", "contact_static_strength"} <= set(ds.variables):
+        return {}
+    p = np.asarray(ds["flank_peak_pressure"].values, float)
+    strength = np.asarray(ds["contact_static_strength"].values, float).min(axis=-1)
+    return {i: (float(p[i]), float(strength[i])) for i in range(p.size)
+            if np.isfinite(p[i]) and p[i] > strength[i]}
+
+
 def _duty_static(ds: xr.Dataset) -> tuple[list[Finding], list[str]] | None:
     """The duty cycle's ``static`` check on the bins' ``flank_peak_pressure`` (the peak
     ``ltca run``'s verdict judges, :func:`contact.ltca.summary.flank_peak`) against each
@@ -1370,7 +1402,8 @@ def _bin_misalignment(ds: xr.Dataset, i: int) -> str:
 def _duty_rating(ds: xr.Dataset) -> list[Finding]:
     """Each bin's ISO 10300 S_H and S_F (``iso_contact_safety``, ``iso_bending_safety``:
     the rating at the bin's torque and speed, which ``ltca duty-cycle`` prints per bin)
-    against the rating's S_H,min and S_F,min: attention, never fail. A bin's rating is at
+    against the rating's S_H,min and S_F,min: attention (a fail only for a bin above the
+    flank's static strength, below). A bin's rating is at
     the bin's speed, whose speed factors (Z_v, the lubricant film; K_v) are not the
     case's: the default development's pc_hypoid_10x43 at its ISO capacity 357 N·m reads S_H
     0.99 in the illustrative spectrum's top bin (357 N·m at 600 rpm) where ``ltca run`` at
@@ -1378,9 +1411,16 @@ def _duty_rating(ds: xr.Dataset) -> list[Finding]:
     the Miner damage's (ISO 6336-6), which the ``damage`` check judges; a design torque
     above the capacity at the case's speed is ``ltca run``'s ``rating`` FAIL. One finding
     per member and safety, naming the bins and the lowest. The static strength is the
-    ``static`` check's (the flank). Issue 71 (notchecked83): printed, never judged."""
+    ``static`` check's (the flank). Issue 71 (notchecked83): printed, never judged.
+
+    A bin whose flank peak pressure is above the static contact strength
+    (:func:`duty_static_bins`) is no load of finite life: its pitting S_H below S_H,min is
+    told apart, a fail of its own naming the bin, the peak and the strength ("above the
+    flank's static strength … no life there", as the ``static`` check and ``ltca run``'s
+    rating say it), and left out of the attention's bins (issue 71, remedy84)."""
     design = float(ds["rating_design_torque"]) if "rating_design_torque" in ds else math.nan
     torques = np.asarray(ds["torque"].values, float)
+    static = duty_static_bins(ds)
     out = []
     for name, least, symbol, what in (
             ("iso_contact_safety", "contact_safety_min", "S_H", "pitting"),
@@ -1392,6 +1432,17 @@ def _duty_rating(ds: xr.Dataset) -> list[Finding]:
         for k, m in enumerate(str(x) for x in ds["member"].values):
             bins = [i for i in range(torques.size)
                     if np.isfinite(safety[i, k]) and safety[i, k] < smin]
+            above = [i for i in bins if i in static] if symbol == "S_H" else []
+            for i in above:
+                out.append(Finding(
+                    "fail", "rating",
+                    f"{m}: ISO 10300 pitting safety S_H "
+                    f"{shown_below(float(safety[i, k]), smin, 2)} below S_Hmin {smin:g} in "
+                    f"bin {i} ({_t(float(torques[i]))}), above the flank's static strength: "
+                    f"flank peak pressure {static[i][0]:.0f} MPa above {static[i][1]:.0f} "
+                    "MPa (σ_Hlim × Z_NT,stat of the weaker member, the static check): no life "
+                    "there, no load of finite life"))
+            bins = [i for i in bins if i not in above]
             if bins:
                 i = min(bins, key=lambda b: safety[b, k])
                 why = (f"above the rating's design torque {_t(design)}: a load of finite "
@@ -1751,6 +1802,39 @@ def study_not_checked(ds: xr.Dataset) -> list[tuple[tuple[str, ...], str]]:
     if "efficiency" in ds:
         out.append((("efficiency",), efficiency_not_judged("efficiency")))
     return out
+
+
+#: the attribute of a sweep's or a tolerance study's file that lists what its summary
+#: prints and no limit judges (:func:`study_not_checked_text`)
+STUDY_NOT_CHECKED_ATTR = "not_checked"
+
+
+def study_not_checked_text(ds: xr.Dataset) -> str:
+    """The ``not checked`` lines of a sweep or tolerance study, as its file's attribute
+    :data:`STUDY_NOT_CHECKED_ATTR` keeps them: one line per reason,
+    ``not checked: <names> (<why>)``, the words ``ltca run``'s verdict and the study's
+    summary print (:func:`not_checked_line`, :func:`study_not_checked`; issue 71).
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        The study's dataset (:func:`contact.study.sweep`, :func:`contact.study.sample`).
+
+    Returns
+    -------
+    str
+        The lines joined by newlines, without their indent; ``""`` where the dataset holds
+        none of the printed quantities.
+    """
+    return "\n".join(not_checked_line(checks, why).strip()
+                     for checks, why in study_not_checked(ds))
+
+
+def study_not_checked_attrs(ds: xr.Dataset) -> dict[str, str]:
+    """``{STUDY_NOT_CHECKED_ATTR: text}`` of :func:`study_not_checked_text` for a study's
+    dataset's attributes (netCDF: a str), or ``{}`` where there is nothing to say."""
+    text = study_not_checked_text(ds)
+    return {STUDY_NOT_CHECKED_ATTR: text} if text else {}
 
 #: what each kind of result prints (``ltca run``'s table and lines, ``ltca report``'s
 #: page, ``ltca duty-cycle``'s table, lines and page) and no check judges against a
