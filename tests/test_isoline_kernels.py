@@ -240,22 +240,15 @@ def test_a_study_point_is_the_same_on_both_paths(monkeypatch):
 def test_kernels_choice(monkeypatch):
     """The names, the environment variable, and the errors that name the field."""
     monkeypatch.delenv("LTCA_KERNELS", raising=False)
+    assert kernels_module() is numba_kernels  # installed: the default
     # auto: numba where its cache holds the kernels for this machine
     monkeypatch.setattr(kernels_core, "cache_ready", lambda name: True)
     monkeypatch.setattr(kernels_core, "_AUTO_CHOICE", {})  # a new process's first choice
     assert kernels_module("auto") is numba_kernels
-    assert kernels_module() is numba_kernels  # unset: auto, as ltca run's (remedy84)
     monkeypatch.setattr(kernels_core, "cache_ready", lambda name: False)
     assert kernels_module("auto") is numba_kernels  # decided once per process: kept
     monkeypatch.setattr(kernels_core, "_AUTO_CHOICE", {})
     assert kernels_module("auto") is None  # not compiled yet: one analysis does not pay
-    # unset: the API's one analysis runs what ltca run runs (NumPy on a cache not filled);
-    # a study's workers numba, as ltca sweep's (prefer_compiled)
-    assert kernels_module() is None and kernels_core.process_choice() == "numpy"
-    assert kernels_core.study_choice() == "numba"
-    monkeypatch.setenv("LTCA_KERNELS", "numpy")
-    assert kernels_core.study_choice() == "numpy"  # a user's choice wins
-    monkeypatch.delenv("LTCA_KERNELS")
     monkeypatch.setenv("LTCA_KERNELS", "auto")
     assert kernels_module() is None
     assert kernels_module("numba") is numba_kernels  # asked for: compiled on first use

@@ -71,18 +71,13 @@ def case():
     return dataclasses.replace(resolve_case(None), misalignment=Misalignment())
 
 
-def test_sweep_on_a_local_cluster_equals_single_analyses(case, monkeypatch):
+def test_sweep_on_a_local_cluster_equals_single_analyses(case):
     """A 2×2 ΔE×ΔP grid on a 2-worker LocalCluster equals run_analysis at its diagonal
     points, to 1e-12; the tooth models are built once per worker, not once per point. (2×2, not
     3×3: four points already make both workers compute and reuse their models; the CI
-    budget.) The cluster of one's own inherits this process's kernels, pinned to its
-    choice: unset, ``auto`` is decided by numba's cache in each process, which other tests
-    may fill in between (the engine's own cluster passes it, ``worker_environment``)."""
+    budget.)"""
     distributed = pytest.importorskip("distributed")
     from contact.compliance.mesh import model_cache_info
-    from geometry.core.kernels import process_choice
-
-    monkeypatch.setenv("LTCA_KERNELS", process_choice())
 
     dE, dP = [-0.1, 0.1], [0.0, 0.05]
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,

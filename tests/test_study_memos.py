@@ -216,12 +216,6 @@ def test_local_cluster_workers_run_the_kernels_this_process_runs(monkeypatch, re
     monkeypatch.setenv("LTCA_KERNELS", "numpy")
     with worker_environment():
         assert dask.config.get(key)["LTCA_KERNELS"] == "numpy"
-    # unset (the Python API): numba where installed, the path `ltca sweep` and `ltca
-    # tolerance` run their points on (prefer_compiled; remedy84)
-    monkeypatch.delenv("LTCA_KERNELS")
-    with worker_environment():
-        assert dask.config.get(key)["LTCA_KERNELS"] == (
-            "numba" if kernels.compiled_module(kernels.KERNEL_MODULES[0]) else "numpy")
 
 
 def test_geometry_group_takes_the_flanks_of_the_memo_and_changes_nothing(case):

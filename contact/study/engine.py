@@ -19,10 +19,9 @@ workers and returns one dataset over a ``point`` dimension.
   forward map and the gear flank on its grid (:mod:`contact.utca.conjugate_map`), under
   the same key.
 * **Workers' environment**: a LocalCluster's workers start without distributed's
-  ``MALLOC_TRIM_THRESHOLD_`` and with a study's compiled-kernels choice
-  (``LTCA_KERNELS`` where this process sets it, else numba where installed:
-  :func:`geometry.core.kernels.study_choice`) (:func:`worker_environment`;
-  ``docs/study.md`` for a cluster of one's own).
+  ``MALLOC_TRIM_THRESHOLD_`` and with this process's compiled-kernels choice
+  (``LTCA_KERNELS``) (:func:`worker_environment`; ``docs/study.md`` for a cluster of
+  one's own).
 * **One failing point never stops a study**: its ``status`` is ``failed`` and
   ``reason`` says why (e.g. the flanks separate); its summaries are NaN.
 * **Streaming and resume**: with an output file the finished points go to disk in
@@ -201,10 +200,9 @@ WORKER_ENVIRON_UNSET = ("MALLOC_TRIM_THRESHOLD_",)
 
 @contextlib.contextmanager
 def worker_environment() -> Iterator[None]:
-    """Start a LocalCluster's workers without :data:`WORKER_ENVIRON_UNSET` and with a
-    study's compiled-kernels choice (``LTCA_KERNELS``,
-    :func:`geometry.core.kernels.study_choice`: this process's where it sets one, else
-    numba where installed, the path ``ltca sweep`` runs) (context manager).
+    """Start a LocalCluster's workers without :data:`WORKER_ENVIRON_UNSET` and with this
+    process's compiled-kernels choice (``LTCA_KERNELS``,
+    :func:`geometry.core.kernels.process_choice`) (context manager).
 
     Sets distributed's ``distributed.nanny.pre-spawn-environ`` entries of those variables to
     None (unset) while the cluster starts; the variables the user set in this process's
@@ -219,23 +217,18 @@ def worker_environment() -> Iterator[None]:
     """
     import dask
 
-    from geometry.core.kernels import (
-        KERNEL_MODULES,
-        announce_compiling,
-        compiled_modules,
-        study_choice,
-    )
+    from geometry.core.kernels import announce_compiling, compiled_modules, process_choice
 
-    choice = study_choice()  # numba where installed unless LTCA_KERNELS says (remedy84)
     # numba compiles in the workers where its cache holds no kernels yet: said now, as the
     # workers start (the command line's compile note, issue 71)
-    for name in KERNEL_MODULES if choice == "numba" else compiled_modules():
+    for name in compiled_modules():
         announce_compiling(name)
     # the workers run the kernels this process runs (numba's cache may fill meanwhile):
     # a study's points equal this process's analyses to round-off and below
     with dask.config.set({f"distributed.nanny.pre-spawn-environ.{name}": None
                           for name in WORKER_ENVIRON_UNSET}
-                         | {"distributed.nanny.pre-spawn-environ.LTCA_KERNELS": choice}):
+                         | {"distributed.nanny.pre-spawn-environ.LTCA_KERNELS":
+                            process_choice()}):
         yield
 
 

@@ -10,12 +10,10 @@ the shell tooth's point mapping (:mod:`contact.compliance.tooth_map`, kernels
 Each has a NumPy path, batched over the points, and a compiled one (numba, the ``fast``
 extra) that runs the same iterations point by point. This module chooses between them,
 the same way for all: an explicit ``kernels`` argument where a function takes one, else
-the environment variable ``LTCA_KERNELS``, else ``auto``.
+the environment variable ``LTCA_KERNELS``, else numba where it is installed.
 
-``auto`` (``LTCA_KERNELS=auto`` or unset; the default of ``ltca run`` and of the Python
-API alike, so that ``contact.run_analysis`` writes the file ``ltca run`` writes to the
-bit, issue 71, remedy84: the API took numba where ``ltca run`` took NumPy on a cache not
-yet filled, 3.8e-9 apart) runs the compiled kernels only where numba's cache already holds
+``auto`` (``LTCA_KERNELS=auto``; the default of ``ltca run`` run as its own process,
+:func:`prefer_cached`) runs the compiled kernels only where numba's cache already holds
 them for this machine (:func:`cache_ready`), and the NumPy path otherwise. Numba
 compiles the four modules in ≈ 22 s of CPU on their first use (the envelope's Newton
 solve 6.3 s, the iso-line seeds 4.5 s, the block pivoting 4.3 s, measured on the 2-core
@@ -30,11 +28,10 @@ kernels only, the one module whose compile one synthesis earns back (~10 s of co
 against ~14 s saved; the others ~15 s against ≤ 2.4 s, docs/performance.md, "A new
 design on a fresh numba cache"), and runs the others' NumPy path until they are cached.
 Both paths give the same numbers to round-off (the kernels' tests). ``auto`` is
-resolved once per process and for the four modules together (:func:`process_choice`).
-A study's local workers are started with :func:`study_choice` (``contact.study.engine.
-worker_environment``): ``LTCA_KERNELS`` where set (the commands of many analyses set
-``numba``), else numba where installed — so ``contact.sweep`` and ``contact.sample`` run
-their points on the path ``ltca sweep`` and ``ltca tolerance`` run them.
+resolved once per process and for the four modules together (:func:`process_choice`),
+and a study's local workers are started with the process's choice
+(``contact.study.engine.worker_environment``), so a study and the analyses of the process
+that started it run the same path.
 
 Public functions
 ----------------
@@ -44,7 +41,6 @@ kernels_module    the compiled kernel module to use, or None for the NumPy path
 compiled_module   a compiled kernel module, imported once per process (None without numba)
 cache_ready       whether numba's cache holds a module's kernels for this machine
 process_choice    ``numpy`` or ``numba``: what this process runs (``auto`` resolved)
-study_choice      ``numpy`` or ``numba``: what a study's workers run
 prefer_compiled   make ``auto`` mean ``numba`` in this process (commands of many analyses),
                   or numba for the modules that pay (``ltca synthesize`` on a fresh cache)
 compiled_modules  the kernel modules this process runs compiled
@@ -66,7 +62,7 @@ from geometry.core.errors import InputError
 
 __all__ = ["COMPILING_LOGGER", "KERNELS", "KERNEL_MODULES", "announce_compiling", "cache_ready",
            "compiled_module", "compiled_modules", "kernels_module", "prefer_cached",
-           "prefer_compiled", "process_choice", "study_choice"]
+           "prefer_compiled", "process_choice"]
 
 #: the implementations: ``numpy`` (the reference), ``numba`` (compiled; the ``fast``
 #: extra) and ``auto`` (numba where its cache holds the kernels, :func:`cache_ready`)
@@ -187,49 +183,22 @@ _COMPILED_ANYWAY: dict[str, tuple[str, ...]] = {}
 
 
 def process_choice() -> str:
-    """What this process runs: ``LTCA_KERNELS`` where it names ``numpy`` or ``numba``;
-    ``auto``, unset or empty ``numba`` where numba's cache holds every kernel module for
-    this machine (:func:`cache_ready`) and ``numpy`` otherwise — the four modules one way,
-    as :func:`kernels_module` runs them, decided at the first call in the process and kept
-    (:data:`_AUTO_CHOICE`; ``clear_caches`` leaves it).
+    """What this process runs: ``LTCA_KERNELS`` where it names ``numpy`` or ``numba``,
+    unset or empty ``numba`` where it is installed, ``auto`` ``numba`` where numba's cache
+    holds every kernel module for this machine (:func:`cache_ready`) and ``numpy``
+    otherwise — the four modules one way, as :func:`kernels_module` runs them, decided
+    at the first call in the process and kept (:data:`_AUTO_CHOICE`; ``clear_caches`` leaves it).
 
     Returns
     -------
     str
         ``"numpy"`` or ``"numba"`` (an unknown ``LTCA_KERNELS`` is returned as given:
         :func:`kernels_module` names it in its error).
-
-    Notes
-    -----
-    Unset means ``auto`` since remedy84 (issue 71): before, numba wherever installed, so
-    that the Python API compiled and ran numba where ``ltca run`` (:func:`prefer_cached`)
-    ran NumPy on a cache not yet filled, and their files differed by up to 3.8e-9
-    relative (the film thickness; measured on the default case).
     """
-    kernels = os.environ.get("LTCA_KERNELS") or "auto"
+    kernels = os.environ.get("LTCA_KERNELS") or None
+    if kernels is None:
+        return "numba" if compiled_module(KERNEL_MODULES[0]) is not None else "numpy"
     return _auto_choice() if kernels == "auto" else kernels
-
-
-def study_choice() -> str:
-    """What a study's workers run (``contact.study.engine.worker_environment``):
-    ``LTCA_KERNELS`` where set (``auto`` resolved, :func:`process_choice`), else ``numba``
-    where it is installed — a study's points earn the first-use compile back, as
-    :func:`prefer_compiled` makes ``ltca sweep`` and ``ltca tolerance`` run them — else
-    ``numpy``.
-
-    Returns
-    -------
-    str
-        ``"numpy"`` or ``"numba"``.
-
-    Notes
-    -----
-    Source: docs/performance.md, "Compiled kernels" (a study point 0.24 s compiled against
-    0.40 s NumPy).
-    """
-    if os.environ.get("LTCA_KERNELS"):
-        return process_choice()
-    return "numba" if compiled_module(KERNEL_MODULES[0]) is not None else "numpy"
 
 
 def _auto_choice() -> str:
@@ -342,9 +311,10 @@ def kernels_module(name: str, kernels: str | None = None) -> ModuleType | None:
     name : str
         The kernel module's import name (e.g. ``"geometry.machine.envelope_numba"``).
     kernels : {"numpy", "numba", "auto"} or None
-        None: the environment variable ``LTCA_KERNELS`` (same values), else ``auto``.
-        ``auto``: numba where its cache holds the four modules' kernels for this machine
-        (:func:`cache_ready`, :func:`process_choice`), else NumPy.
+        None: the environment variable ``LTCA_KERNELS`` (same values), else numba where
+        it is installed and NumPy otherwise. ``auto``: numba where its cache holds the
+        four modules' kernels for this machine (:func:`cache_ready`,
+        :func:`process_choice`), else NumPy.
 
     Returns
     -------
@@ -358,9 +328,10 @@ def kernels_module(name: str, kernels: str | None = None) -> ModuleType | None:
     """
     source = "kernels"
     if kernels is None:
-        # the default: auto, as ltca run's (process_choice)
-        kernels = os.environ.get("LTCA_KERNELS") or "auto"
+        kernels = os.environ.get("LTCA_KERNELS") or None
         source = "LTCA_KERNELS"
+        if kernels is None:  # the default: numba where it is installed
+            return _handed(compiled_module(name), name)
     if kernels not in KERNELS:
         raise InputError(f"{source}: must be one of {', '.join(KERNELS)}, got {kernels!r}")
     if kernels == "numpy":

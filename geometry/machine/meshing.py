@@ -1117,8 +1117,7 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
         holds ``s``.
     kernels : {"numpy", "numba"}, optional
         Newton's implementation (:func:`geometry.core.kernels.kernels_module`; default:
-        the environment variable ``LTCA_KERNELS``, else ``auto``: numba where its cache holds
-        the kernels). The
+        the environment variable ``LTCA_KERNELS``, else numba where installed). The
         compiled kernel gives the same roots to round-off (~1e-13 mm, rad).
 
     Returns
