@@ -141,16 +141,14 @@ def _velocity(s, q, r, c2, h=1e-6):
     return ((_chain(s, q + h, c2) - _chain(s, q - h, c2)) @ local)[:3] / (2 * h)
 
 
-@pytest.mark.slow
 def test_the_2c_flank_meets_the_equation_of_meshing_and_its_shape_at_m(monkeypatch):
-    """Step 5 with 2C −0.08 on the 12x12's drive flank (~5 s CPU with the roll solves of
-    the other tests, hence slow): the shape operator at M is met to 1e-8 1/mm and M to
-    1e-7 mm (pinion_generate_tools' own acceptance); at the mean section's M, tip end and
-    root end (relief_places, rolls −0.36 to +0.15 rad) each point satisfies the equation of
-    meshing with the independent chain, |n·v| ≤ 1e-7 |v| (the difference's error ~1e-10,
-    the envelope solver's far below), and not without the 2C (|n·v| > 1e-4 |v| at the
-    roll farthest from 0: the test sees the 2C); the ratio of roll moved towards the
-    conjugate's 1.2485 (0.974 without 2C, 1.18 with it)."""
+    """Step 5 with 2C −0.08 on the 12x12's drive flank (1.4 s): the shape operator at M is
+    met to 1e-8 1/mm and M to 1e-7 mm (pinion_generate_tools' own acceptance); at the mean
+    section's M, tip end and root end (relief_places, rolls −0.36 to +0.15 rad) each point
+    satisfies the equation of meshing with the independent chain, |n·v| ≤ 1e-7 |v| (the
+    difference's error ~1e-10, the envelope solver's far below), and not without the 2C
+    (|n·v| > 1e-4 |v| at the roll farthest from 0: the test sees the 2C); the ratio of roll
+    moved towards the conjugate's 1.2485 (0.974 without 2C, 1.18 with it)."""
     c2 = -0.08
     pair, (tools, *_rest) = _drive_flank(monkeypatch, c2)
     s = tools.settings
@@ -173,13 +171,12 @@ def test_the_2c_flank_meets_the_equation_of_meshing_and_its_shape_at_m(monkeypat
     assert abs(qs[far]) > 0.2 and plain[far] > 1e-4
 
 
-@pytest.mark.slow
 def test_the_2c_that_cancels_the_cubic_is_kept_by_step_6(monkeypatch):
-    """The 12x12's drive flank (~20 s CPU, hence slow): third_order_cancelling's 2C
+    """The 12x12's drive flank (1.3 s): third_order_cancelling's 2C
     (−0.078) makes the TE's odd part at ±pitch/16, followed by the TCA's contact solve
     (seed Eq. 2.14, not the cubic's Richardson estimate the secant used), below 2 % of its
-    value without 2C (4.84 µrad measured; the remaining odd part is fifth order, 0.5 % at
-    pitch/16); step 6 (tune_roll) keeps the 2C as given and puts the TE at ±pitch/4,
+    value without 2C (4.84 µrad; +0.0 µrad to the 0.1 printed at the cancelling 2C,
+    docs/own_gear_set.md); step 6 (tune_roll) keeps the 2C as given and puts the TE at ±pitch/4,
     followed again in 8 steps, on the parabola within 0.6 % (its tolerance 0.5 % and the
     roots' 1e-13 rad)."""
     _pair0, (tools0, tooth_pair0, start, rate, kw0) = _drive_flank(monkeypatch, 0.0)

@@ -310,10 +310,10 @@ def pinion_generate_tools(point, normal, target_shape, *, side: str, blade_angle
     roll_curvature : float — [1/rad]
         The modified roll's 2C, given (default 0: none): the generating motion's second
         order, which bends the flank at M together with R_a, so that the same shape
-        operator is met with another ratio of roll (:func:`~geometry.synthesis.
-        case_synthesis` chooses it where the ratio of roll alone leaves a TE the
-        modified roll's 6D and 24E cannot correct; docs/own_gear_set.md, "The 12-tooth
-        miter synthesises").
+        operator is met with another ratio of roll (:func:`geometry.synthesis.
+        roll_curvature.third_order_cancelling` finds the 2C that cancels the TE's cubic at
+        M; the synthesis does not use it, docs/own_gear_set.md, "The 12-tooth miter and
+        the modified roll's 2C").
 
     Returns
     -------

@@ -12,6 +12,12 @@ too, so step 5 meets the same shape operator with a given 2C and another R_a; th
 finds the 2C at which the step-5 flank's TE has no third-order term at M (the cubic c3 of
 :func:`geometry.synthesis.modified_roll.third_order_te` zero), by the secant method.
 
+Not called by :func:`geometry.synthesis.case_synthesis.synthesize` (issue 71, branch
+miter84, docs/own_gear_set.md "The 12-tooth miter and the modified roll's 2C"): on the
+12x12 it cancels the cubic (TE at ±pitch/4 +192 / −1050 → −29 / −30 µrad) but leaves a
+quartic whose 24E (−16.7) leaves the mean section's M and root end ungenerated, and with
+the quartic left in (24E 0) the written case has a UTE of 2516 µrad p-p.
+
 Public functions
 ----------------
 RollCurvature             the 2C found, its tools and the cubic before and after
@@ -28,8 +34,9 @@ from geometry.core.errors import InputError
 
 __all__ = ["ROLL_CURVATURE_STEP", "RollCurvature", "third_order_cancelling"]
 
-#: [1/rad] the secant's first step in 2C from 0 (the 12x12 miter's root is −0.08: the
-#: cubic is linear in 2C within 1 % over that range, docs/own_gear_set.md)
+#: [1/rad] the secant's first step in 2C from 0 (the 12x12 miter's root is −0.078; its
+#: TE's odd part at ±pitch/8, +85.4 / +8.2 / −20.0 µrad at 2C 0 / −0.07 / −0.10, lies off
+#: the line through the ends by 4 % of its 2C-free value, docs/own_gear_set.md)
 ROLL_CURVATURE_STEP = -0.02
 
 #: [1/rad] the largest |2C| the search accepts (a machine's modified roll stays well below;
@@ -83,7 +90,8 @@ def third_order_cancelling(tools_at: Callable[[float], Any], cubic: Callable[[An
     Notes
     -----
     The secant method on c3(2C), which is nearly linear (the 12x12 miter's drive flank: the
-    odd part of its TE at ±pitch/8 +85.4, +8.2, −20.0 µrad at 2C 0, −0.07, −0.10). Source
+    odd part of its TE at ±pitch/8 +85.4, +8.2, −20.0 µrad at 2C 0, −0.07, −0.10; the
+    secant from 0 and −0.02 lands on −0.0784 in three steps, c3 0.1339 → 2.8e-5). Source
     of the lever: the modified roll's second-order coefficient changes the generated
     flank's curvature at the mean point (Litvin & Fuentes 2004 ch. 6, the curvatures of an
     envelope under a non-uniform generating motion; Stadtfeld 2014, "modified roll" among
