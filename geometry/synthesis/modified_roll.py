@@ -230,8 +230,11 @@ def tune_roll(tools: PinionTools, pair: ToothPair, start, rate, *, a21: float,
     level = 0.5 * a21 * h * h
     rolls = (h, -h)
 
+    # step 5's 2C, where it made the mismatch with the ratio of roll (kept; 0 otherwise)
+    c2 = tools.settings.modified_roll[0] if tools.settings.modified_roll else 0.0
+
     def g(coef, near=None):
-        settings = replace(tools.settings, modified_roll=(0.0, *coef))
+        settings = replace(tools.settings, modified_roll=(c2, *coef))
         tuned = ToothPair(pair.pinion._replace(machine=settings), pair.gear, pair.transforms)
         te, followed = _te_at(tuned, start, rate, rolls=rolls, near=near, **kw)
         return np.array([te[h] - level, te[-h] - level]), followed
@@ -257,7 +260,7 @@ def tune_roll(tools: PinionTools, pair: ToothPair, start, rate, *, a21: float,
         if warm is not None:
             warm.fraction, warm.coef, warm.jac, warm.followed = fraction, x, jac, at
             warm.miss = miss
-        return tools._replace(settings=replace(tools.settings, modified_roll=(0.0, *x)))
+        return tools._replace(settings=replace(tools.settings, modified_roll=(c2, *x)))
 
     untuned = None  # the TE at ±h without the modified roll (known on the cold start)
     if warm is not None and warm.fraction == fraction and warm.coef is not None:

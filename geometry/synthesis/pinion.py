@@ -239,8 +239,10 @@ def cradle_for_meshing(m, nn, cradle_point, cradle_axis, ratio):
     return cradle_point + shift * e1
 
 
-def _pinion_state(x, m, nn, u, cradle_point, cradle_axis, side, alpha, h_m, edge_radius):
-    """Blade and settings for unknowns x = (r_p, κ_pr, R_a); None where they are invalid."""
+def _pinion_state(x, m, nn, u, cradle_point, cradle_axis, side, alpha, h_m, edge_radius,
+                  roll_curvature=0.0):
+    """Blade and settings for unknowns x = (r_p, κ_pr, R_a) and a given modified roll 2C
+    ``roll_curvature`` [1/rad] (0: none); None where they are invalid."""
     r_p, k_pr, ratio = x
     sigma = 1 if side == "outside" else -1
     rho_m = r_p + sigma * h_m * math.tan(alpha)
@@ -262,6 +264,9 @@ def _pinion_state(x, m, nn, u, cradle_point, cradle_axis, side, alpha, h_m, edge
                                  ratio_of_roll=ratio)
     except InputError:
         return None
+    if roll_curvature:
+        # 2C does not move M's meshing at q = 0 (φ'(0) = R_a): only the flank's shape
+        ps = ps._replace(settings=replace(ps.settings, modified_roll=(roll_curvature,)))
     return blade, ps
 
 
@@ -269,7 +274,8 @@ def pinion_generate_tools(point, normal, target_shape, *, side: str, blade_angle
                           cutter_axis, tip_height: float, cradle_point, cradle_axis,
                           ratio_of_roll: float, point_radius: float, pinion_blank: Blank,
                           edge_radius: float, start=None,
-                          warm: WarmTools | None = None) -> PinionTools:
+                          warm: WarmTools | None = None,
+                          roll_curvature: float = 0.0) -> PinionTools:
     """Blade and Generate settings whose pinion flank has a prescribed shape operator at M.
 
     Parameters
@@ -301,6 +307,13 @@ def pinion_generate_tools(point, normal, target_shape, *, side: str, blade_angle
     warm : WarmTools, optional
         The last synthesis of the same flank in a series (a development's trials): the
         solution starts from its tools (:func:`solve_tool_unknowns`) and is kept in it.
+    roll_curvature : float — [1/rad]
+        The modified roll's 2C, given (default 0: none): the generating motion's second
+        order, which bends the flank at M together with R_a, so that the same shape
+        operator is met with another ratio of roll (:func:`geometry.synthesis.
+        roll_curvature.third_order_cancelling` finds the 2C that cancels the TE's cubic at
+        M; the synthesis does not use it, docs/own_gear_set.md, "The 12-tooth miter and
+        the modified roll's 2C").
 
     Returns
     -------
@@ -352,7 +365,8 @@ def pinion_generate_tools(point, normal, target_shape, *, side: str, blade_angle
     last = [None]
 
     def evaluate(x):
-        st = _pinion_state(x, m, nn, u, cp, ca, side, blade_angle, h_m, edge_radius)
+        st = _pinion_state(x, m, nn, u, cp, ca, side, blade_angle, h_m, edge_radius,
+                           roll_curvature)
         if st is None:
             return None
         blade, ps = st
