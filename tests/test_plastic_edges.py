@@ -262,3 +262,19 @@ def test_plausibility_quiet_on_the_default_case_loud_at_dE_5(capsys, tmp_path):
     assert 'id="plausibility"' not in render_report(read_netcdf(tmp_path / "default.nc"),
                                                     figures=[])
 
+
+
+def test_stored_force_limits_are_those_of_the_kept_segments_bit_for_bit():
+    # /ltca's force_limit is taken from the solves' limits (all segments, before the
+    # segment axis keeps those in some problem); it must be force_limits of the stored
+    # segments themselves, element by element (the same arithmetic: no tolerance)
+    from contact.ltca.plastic import force_limits, pressure_limits
+
+    ds = _run(500.0)
+    opts = dataclasses.replace(OPTS, edge_pressure_limit="shakedown")
+    kind = (ds["segment_kind"].values != "curve").astype(np.int8)
+    again = force_limits(kind[None, None, :], ds["segment_length"].values,
+                         ds["equivalent_radius"].values, pressure_limits(_case(), opts),
+                         E_STAR)
+    again = np.where(np.isfinite(again), again, np.nan)
+    np.testing.assert_array_equal(ds["force_limit"].values, again)

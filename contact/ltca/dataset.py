@@ -45,7 +45,8 @@ _SEGMENT_DIMS = ("roll", "pair", "segment")
 
 
 def ltca_dataset(setup: LTCASetup, seg: Segments, screening: Screening,
-                 results: RollResults, timing: dict[str, float]) -> xr.Dataset:
+                 results: RollResults, timing: dict[str, float], *,
+                 force_limit: np.ndarray | None = None) -> xr.Dataset:
     """The ``/ltca`` Dataset of an analysis.
 
     Parameters
@@ -61,6 +62,10 @@ def ltca_dataset(setup: LTCASetup, seg: Segments, screening: Screening,
         The solutions (NT, J, K, S).
     timing : dict
         ``easeoff`` and ``segments`` times [s]; ``compliance_asymmetry`` [1] (optional).
+    force_limit : ndarray (J, K, S), optional — [N]
+        The segments' force limits as the solves took them
+        (:func:`contact.ltca.plastic.force_limits` of ``seg``, ``inf`` where a kind has
+        none); default: computed here from ``seg`` (the same numbers, elementwise).
 
     Returns
     -------
@@ -72,7 +77,7 @@ def ltca_dataset(setup: LTCASetup, seg: Segments, screening: Screening,
     data = {
         **_load_vars(lte, screening, results),
         **_segment_vars(seg, screening),
-        **_plastic_vars(setup, seg, results),
+        **_plastic_vars(setup, seg, results, force_limit),
         **_solution_vars(seg, results),
         **_summary_vars(setup, seg, results, lte),
     }
@@ -128,14 +133,16 @@ def _segment_vars(seg: Segments, screening: Screening) -> dict:
     }
 
 
-def _plastic_vars(setup: LTCASetup, seg: Segments, results: RollResults) -> dict:
-    """The segments' states (free, elastic, plastic), their force limits and the share of
-    the torque carried at the limits."""
-    opts = setup.options
-    modulus = contact_modulus(opts.youngs_modulus, opts.poisson_ratio, opts.youngs_modulus,
-                              opts.poisson_ratio)
-    limit = force_limits(seg.kind[None, None, :], seg.length, seg.r_eq,
-                         pressure_limits(setup.case, opts), modulus)
+def _plastic_vars(setup: LTCASetup, seg: Segments, results: RollResults,
+                  limit: np.ndarray | None = None) -> dict:
+    """The segments' states (free, elastic, plastic), their force limits (``limit``, the
+    solves', else computed here) and the share of the torque carried at the limits."""
+    if limit is None:
+        opts = setup.options
+        modulus = contact_modulus(opts.youngs_modulus, opts.poisson_ratio,
+                                  opts.youngs_modulus, opts.poisson_ratio)
+        limit = force_limits(seg.kind[None, None, :], seg.length, seg.r_eq,
+                             pressure_limits(setup.case, opts), modulus)
     limit = (np.full(seg.shape, np.nan) if limit is None
              else np.where(np.isfinite(limit), limit, np.nan))
     plastic = results.state == 2

@@ -182,7 +182,12 @@ def solve_rolls(setup: LTCASetup, seg: Segments, *, progress: bool | str = False
     keep = (seg.kind == 0) | np.any(results.in_problem > 0, axis=(0, 1, 2))
     kept = dataclasses.replace(an.screening, separation=screening.separation[..., keep])
     reach = float(seg.edge_arm_max) * float(np.nanmax(results.rotation, initial=0.0))
-    return ltca_dataset(setup, seg.keep(keep), kept, results.keep(keep), timing), reach
+    idx = np.flatnonzero(keep)
+    # the kept segments' force limits taken from the solves' (elementwise: the same
+    # numbers as computing them again on the kept segments, ~0.7 ms a point less)
+    bounds = None if an.bounds is None else np.take(an.bounds, idx, axis=2)
+    return ltca_dataset(setup, seg.keep(keep), kept, results.keep(keep), timing,
+                        force_limit=bounds), reach
 
 
 def _repeat_roll(an: _Analysis, cont: _Continuation, src: int, j: int) -> None:
