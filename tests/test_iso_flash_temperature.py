@@ -281,6 +281,19 @@ def test_bad_inputs_are_refused_naming_the_field(call, field):
         call()
 
 
+def test_a_transverse_contact_ratio_below_1_is_said_outside_the_standard():
+    """Round 25's 7x45 hypoid (eps_alpha 0.9756 on the virtual cylindrical gears): the
+    verdict's "not checked" carried "eps_alpha: must be finite and >= 1"; the message now
+    names the field, its value and the range ISO/TR 13989-1 clause 5.3 defines X_Gamma on
+    (a text check: no number is computed)."""
+    with pytest.raises(InputError, match=r"eps_alpha: 0\.9756.*below 1.*\[1, 2\]") as info:
+        load_sharing_factor([1.0], 20.0, 9.0, 0.9756, 1.5)
+    assert "must be" not in str(info.value)
+    # at 1 exactly the helical branch (eps_beta >= 1): X_Gamma = 1 / eps_alpha = 1
+    np.testing.assert_allclose(load_sharing_factor([1.0], 20.0, 9.0, 1.0, 1.5), [1.0],
+                               rtol=0, atol=0)
+
+
 @pytest.mark.slow
 def test_the_standard_and_the_ltca_on_tr_sample_1():
     """ISO/TR 10300-30 sample 1 at 300 N·m, 1200 rpm, 75W90 at 90 °C, Rq 0.8 µm: the

@@ -78,6 +78,27 @@ def test_a_solver_that_raises_is_a_failed_solve_naming_it(problem):
     assert sol.status == "failed: backend 'diverges' raised FloatingPointError: ADMM diverged"
 
 
+def test_a_stop_inside_a_backend_is_not_a_failed_solve(problem):
+    """A SIGTERM (the CLI's Terminated, a KeyboardInterrupt) or Ctrl-C that lands inside
+    a compiled kernel reaches the caller as numba's ``SystemError`` chained to it: the
+    solve raises the interrupt itself instead of reporting an unfound solution, which let
+    `ltca synthesize` run to its end after SIGTERM (Round 25, docs/own_gear_set.md). A
+    plain failure is still a failed solve (the test above)."""
+    def stopped(p):
+        try:
+            raise KeyboardInterrupt("signal 15")
+        except KeyboardInterrupt as stop:
+            raise SystemError("CPUDispatcher(...) returned a result with an exception "
+                              "set") from stop
+
+    register_backend("stopped", stopped, replace=True)
+    try:
+        with pytest.raises(KeyboardInterrupt, match="signal 15"):
+            solve_contact(problem, "stopped")
+    finally:
+        unregister_backend("stopped")
+
+
 def test_ltca_run_with_a_solver_of_the_wrong_shape_is_one_line(tmp_path, capsys):
     register_backend("three_forces", lambda p: (np.ones(3), 0.0), replace=True)
     try:

@@ -311,8 +311,9 @@ def load_sharing_factor(position: ArrayLike, path_length: float, base_pitch: flo
     Raises
     ------
     InputError
-        A position off the path, a non-positive length or pitch, ε_α < 1, or the spur
-        branch needed (ε_β < 1) with ε_α > 2 (naming the field).
+        A position off the path, a non-positive length or pitch, ε_α < 1 (said as outside
+        the standard's range, not as a wrong input), or the spur branch needed (ε_β < 1)
+        with ε_α > 2 (naming the field).
 
     Notes
     -----
@@ -322,7 +323,15 @@ def load_sharing_factor(position: ArrayLike, path_length: float, base_pitch: flo
     """
     g = positive("path_length", path_length, "mm")
     p = positive("base_pitch", base_pitch, "mm")
-    ea = real("eps_alpha", eps_alpha, unit="1", low=1.0)
+    ea = real("eps_alpha", eps_alpha, unit="1")
+    if ea < 1.0:
+        # a pair below 1 is a legitimate design (a 7-tooth hypoid pinion at 22.5/20 deg,
+        # eps_alpha 0.976, docs/own_gear_set.md "Round 25"): say what the standard covers,
+        # not that the input is wrong
+        raise InputError(f"eps_alpha: {ea:.4g}, the virtual cylindrical gears' transverse "
+                         "contact ratio, is below 1; ISO/TR 13989-1's load sharing factor "
+                         "X_Gamma (clause 5.3) is defined for eps_alpha in [1, 2] only, so "
+                         "the standard's flash temperature does not cover this pair")
     eb = real("eps_beta", eps_beta, unit="1", low=0.0)
     s = real_array("position", position, unit="mm", low=-1e-9 * g, high=g * (1 + 1e-9))
     helical = np.full(s.shape, 1.0 / ea)

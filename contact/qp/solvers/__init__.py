@@ -38,7 +38,7 @@ from contact.qp.problem import (
 from contact.qp.solvers.active_set import block_pivoting
 from contact.qp.solvers.backend import ACCURACY_LEVELS, Backend, RawResult
 from geometry.core.caches import memoised
-from geometry.core.errors import InputError, PluginError
+from geometry.core.errors import InputError, PluginError, raise_if_interrupted
 from geometry.core.registries import (
     callable_name,
     check_model_name,
@@ -601,6 +601,11 @@ def solve_contact(
     except PluginError:  # a broken backend (what it returned), not a failed solve
         raise
     except Exception as exc:  # any backend failure becomes a reported, unfound solution
+        # but not the user's stop: a SIGTERM or Ctrl-C inside the compiled pivoting
+        # arrives as numba's SystemError chained to it, which this handler took as a
+        # failed solve, and `ltca synthesize` ran to its end after SIGTERM (Round 25's
+        # 13x41 at Sigma 62 deg, docs/own_gear_set.md)
+        raise_if_interrupted(exc)
         log.info("backend %s raised %s: %s", solver, type(exc).__name__, exc)
         raw = RawResult(None, None, False,
                         f"backend {solver!r} raised {type(exc).__name__}: {exc}", 0.0, 0.0)
