@@ -333,7 +333,11 @@ def checked_near_miss(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     the same TE level), towards the same aim. At most
     :data:`NEAR_MISS_DESIGNS` designs; a design is kept only where it meets more targets,
     gives up none it met and is tolerant (:func:`_tolerant_variant`) — not on the
-    objective, whose LTE term may prefer the design as it was. Where the smallest blade
+    objective, whose LTE term may prefer the design as it was. Where a blade step gave up
+    the edge or plastic target, the blade step aimed at the target centre with the
+    pinion's tip edge relieved and the profile crowned
+    (:func:`~contact.optimize.development_height_relieved.checked_height_relieved`); where
+    that keeps nothing and the smallest blade
     step was refused for the LTE or the pattern length alone, two more
     (:func:`~contact.optimize.development_band_edge.band_edge_designs`): the smallest
     blade step into the band, then with the path turned.
@@ -397,6 +401,14 @@ def checked_near_miss(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         if not (vb - va) / (xb - xa) > 0.05:
             break  # no slope to step on
         s = (vb - va) / (xb - xa)  # the slope measured: the next design a secant
+    # the blade steps that gave up the edge or plastic target: the same aimed at the
+    # target centre with the pinion's tip edge relieved and the profile crowned
+    # (development_height_relieved; the truck hypoid 8x47)
+    from contact.optimize.development_height_relieved import checked_height_relieved
+    relieved = checked_height_relieved(best, refused, targets, setup, teeth, say, placed,
+                                       better=lambda b, x: _met_count(x) > _met_count(b))
+    if relieved is not None:
+        return relieved
     values = dict(best.values) | ({TE_NAME: lowered} if lowered is not None else {})
     return band_edge_designs(best, refused, targets, setup, teeth, say, placed,
                              centre_v=footprint_centre_v,
