@@ -331,7 +331,9 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     design still misses its LTE target at the design torque or that limit between the
     torques and nothing else, the shallower root relief with a longer ellipse
     (:func:`contact.optimize.development_relief_ellipse_range.
-    checked_relief_ellipse_range`). Run again where
+    checked_relief_ellipse_range`); last, where its LTE over the torques is still above
+    that limit, a slightly hollow profile with the reliefs rebalanced
+    (:func:`contact.optimize.development_hollow_lte.checked_hollow_lte`). Run again where
     the design torque was lowered after them (to the
     bearing's static flank capacity or its FE root-stress capacity): the light torque
     follows the design torque (``light_load`` × it), and the light-load LTE rises as the
@@ -379,7 +381,11 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     from contact.optimize.development_relief_ellipse_range import (
         checked_relief_ellipse_range,
     )
-    return checked_relief_ellipse_range(best, targets, setup, teeth, say, placed)
+    best = checked_relief_ellipse_range(best, targets, setup, teeth, say, placed)
+    # last, a slightly hollow profile with the reliefs rebalanced where the LTE over the
+    # torques is still above the verdict's limit (the spiral bevel 14x36 at Sigma 70 deg)
+    from contact.optimize.development_hollow_lte import checked_hollow_lte
+    return checked_hollow_lte(best, targets, setup, teeth, say, placed)
 
 
 def steps_on_each(chosen: DevelopmentEvaluation, others: list[DevelopmentEvaluation],
