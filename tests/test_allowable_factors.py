@@ -113,3 +113,41 @@ def test_the_hypoid_factor_of_the_11x43_by_the_standards_formula():
     assert z == 0.6
     z_e, _ = hypoid_factor(50.0, v, b1, b2, bb, math.radians(22.5))
     assert z_e == pytest.approx(0.792, abs=1e-3)
+
+
+def _hertz_tree(torques) -> xr.DataTree:
+    """An analysis whose peak flank pressure is 1500 (T/100)^(1/3) MPa (no root stress)
+    with the 11×43's rating factors (:func:`_rating`), K_A 1, K_v 1.03."""
+    t = np.asarray(torques, float)
+    lt = xr.Dataset({"pressure_max_flank": ("torque", 1500.0 * (t / 100.0) ** (1 / 3))},
+                    coords={"torque": t})
+    rt = _rating(2.968, 1.860).assign(
+        K_A=1.0, K_v=("torque", np.full(t.shape, 1.03)), S_Hmin=1.0).assign_coords(
+        torque=t, member=["pinion", "gear"])
+    return xr.DataTree.from_dict({"/": xr.Dataset(), "/ltca": lt, "/rating": rt})
+
+
+def test_the_torque_cut_line_names_the_lowest_factor(monkeypatch):
+    """root_capacity's line for a local pitting cut carries σ_HP,∞'s breakdown, here the
+    11×43's (:func:`_rating` at its sliding, its rating's long-life factors), after the
+    S_H,loc below S_Hmin; the cut itself is test_development_pitting's (a Hertzian flank,
+    p_max 1500 (T/100)^(1/3) MPa against σ_HP,∞ 1012 MPa)."""
+    from contact.optimize import development_root as dr
+
+    monkeypatch.setattr(dr, "_root_tree", lambda case, torques: _hertz_tree(torques))
+    monkeypatch.setattr(dr, "pitting_allowable_note",
+                        lambda case, torque: contact_allowable_text(_rating(2.968, 1.860)))
+    setup = {"torques": [15.0, 100.0], "source": "the ISO 10300 capacity, the pinion torque"}
+    lines: list[str] = []
+    _, _, text = dr.root_capacity(None, setup, 0.15, lines.append)
+    assert ("below S_Hmin 1 (sigma_HP 1012 MPa = sigma_Hlim 1500 x Z_Hyp 0.60 x Z_K 1.2"
+            in text)
+    assert "the formula's 0.566 held at its lower bound 0.6)) at the design torque" in text
+    assert text in lines[-1]
+
+
+def test_no_rating_leaves_the_cut_line_as_it_was():
+    """Without a case to rate, the note is empty (logged), never an error."""
+    from contact.optimize import development_root as dr
+
+    assert dr.pitting_allowable_note(None, 100.0) == ""
