@@ -364,6 +364,50 @@ def long_life_contact_allowable(rating):
             * rating["Z_R"] * rating["Z_W"] * rating["Z_K"] * rating["Z_Hyp"])
 
 
+def pitting_allowable_note(case, torque: float) -> str:
+    """What the permissible contact stress at long life σ_HP,∞ of ``case``'s ISO 10300
+    rating at ``torque`` is made of, naming its lowest factor — one phrase for the line
+    that cuts the design torque to the local pitting capacity
+    (:func:`contact.load_capacity.iso10300.allowable_factors.contact_allowable_text`);
+    empty where the rating cannot be made (logged, never raised).
+
+    Parameters
+    ----------
+    case : geometry.case.Case — with ``[design]`` and ``[rating]`` tables
+    torque : float — [N·m] the pinion torque
+
+    Returns
+    -------
+    str
+
+    Notes
+    -----
+    Source: ISO 10300-2:2014 cl. 6 and 8, σ_HP = σ_Hlim Z_NT Z_X Z_L Z_v Z_R Z_W Z_K Z_Hyp
+    (Z_NT = 1), at the case's ``[operating]`` pinion speed as
+    :func:`contact.optimize.development_pitting.pitting_pressure_limit` rates it.
+
+    Why: the unseen hypoid 11×43 at Σ 100°, a = 0.25 d_e2 (round 25) had its design torque
+    cut to 0.81 of its ISO capacity against a local pitting limit of 998 MPa on σ_Hlim
+    1500 MPa, and the line did not say that the hypoid factor Z_Hyp, at its lower bound
+    0.6, made it (docs/own_gear_set.md, "The 11×43's local pitting limit").
+    """
+    from contact.load_capacity.iso10300.allowable_factors import contact_allowable_text
+    from contact.load_capacity.iso10300.rating import iso10300_rating
+    from geometry.core.operating_defaults import OPERATING_DEFAULTS
+
+    try:
+        table = {k: v for k, v in (case.extra.get("rating") or {}).items()
+                 if k != "load_cycles"}
+        speed = case.operating.pinion_speed or OPERATING_DEFAULTS["pinion_speed"]
+        ds = iso10300_rating(case, torque=np.atleast_1d(float(torque)), pinion_speed=speed,
+                             rating=table)
+        return contact_allowable_text(ds)
+    except Exception as exc:  # a phrase of a message: its absence is logged, not fatal
+        raise_if_interrupted(exc)
+        log.info("development: the local pitting limit's factors not said: %s", exc)
+        return ""
+
+
 def pitting_safety(tree) -> tuple[np.ndarray, float, str]:
     """(S_H,loc of the weaker member per torque [1], S_Hmin [1], its member) of an analysis
     with an ISO 10300 ``/rating`` at the LTCA's torques: the local flank safety at long life.
@@ -565,9 +609,11 @@ def root_capacity(case, setup: dict[str, Any], light_load: float,
             "K_v)), ISO 10300 with the bearing's own load distribution)"}
     from contact.study.verdicts import shown_below
 
+    factors = {"pitting": pitting_allowable_note(case, torque) if "pitting" in first else ""}
     was = "; ".join(f"{what[k]} {CRITERIA[k][1]} {shown_below(s, s_min)} ({m}) below "
                     f"{CRITERIA[k][1][:3]}"
-                    f"min {s_min:g}" for k, (s, s_min, m) in first.items())
+                    f"min {s_min:g}" + (f" ({factors[k]})" if factors.get(k) else "")
+                    for k, (s, s_min, m) in first.items())
     now = ", ".join(f"{CRITERIA[k][1]} ({m}) is "
                     + (f"{shown_below(float(s[-1]), s_min)} (still below)" if k in fails
                        else f"{float(s[-1]):.2f}")
