@@ -587,9 +587,31 @@ def lte_lost(setup: Mapping[str, Any], teeth: KeptTeeth | None, limit: float,
     return lost
 
 
-def _pitting_limit(best: DevelopmentEvaluation, setup: Mapping[str, Any]) -> float:
-    """[MPa] :func:`pitting_pressure_limit` of the design's case at the design torque;
-    inf where it cannot be had (no case, no rating: logged)."""
+def design_pitting_limit(best: DevelopmentEvaluation, setup: Mapping[str, Any]) -> float:
+    """The local pitting limit of the design's case at the development's design torque.
+
+    Parameters
+    ----------
+    best : DevelopmentEvaluation
+        The design (its ``case``).
+    setup : mapping
+        The development's state (``"torques"`` [N·m], light and design).
+
+    Returns
+    -------
+    float
+        [MPa] :func:`~contact.optimize.development_pitting.pitting_pressure_limit` at the
+        design torque; ``inf`` where it cannot be had (no case or no rating: logged).
+
+    Raises
+    ------
+    Nothing (a missing rating is logged and gives ``inf``).
+
+    Notes
+    -----
+    Source: ISO 10300-2:2014, the permissible contact stress σ_HP (the limit's
+    definition in :mod:`contact.optimize.development_pitting`).
+    """
     from contact.optimize.development_pitting import pitting_pressure_limit
 
     try:
@@ -639,7 +661,7 @@ def checked_edge_peak(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         return best
     from contact.study.verdicts import LTE_LIMIT
 
-    pitting = pitting_lost(_pitting_limit(best, setup))
+    pitting = pitting_lost(design_pitting_limit(best, setup))
     lte = lte_lost(setup, teeth, LTE_LIMIT, float(targets.max_lte))
 
     def lost(kept: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:

@@ -198,7 +198,11 @@ def checked_height_relieved(best: DevelopmentEvaluation,
     near-miss steps −0.073° / −0.124° refused for 0.9 / 1.8 % plastic): docs/synthesis.md,
     "The 8×47's pattern centred in depth".
     """
-    from contact.optimize.development_edge_peak import _pitting_limit, lte_lost, pitting_lost
+    from contact.optimize.development_edge_peak import (
+        design_pitting_limit,
+        lte_lost,
+        pitting_lost,
+    )
     from contact.optimize.development_pattern_steps import LENGTH_PER_ELLIPSE, length_aim
     from contact.study.verdicts import LTE_LIMIT
 
@@ -215,7 +219,7 @@ def checked_height_relieved(best: DevelopmentEvaluation,
     lo, hi = (float(x) for x in targets.variables[HEIGHT_NAME])
     target = float(targets.pattern_centre_v if targets.pattern_centre_v is not None
                    else setup["centre_v"])
-    pitting = pitting_lost(_pitting_limit(best, setup))
+    pitting = pitting_lost(design_pitting_limit(best, setup))
     lte = lte_lost(setup, teeth, float(LTE_LIMIT))  # judged between the torques too
 
     def lost(kept: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:
