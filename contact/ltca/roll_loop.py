@@ -154,7 +154,9 @@ def solve_rolls(setup: LTCASetup, seg: Segments, *, progress: bool | str = False
     cont = _Continuation.empty(torques.size)
     computed = [j for j in range(J) if int(seg.source[j]) == j and screening.usable[j].any()]
     if opts.separation_limit is not None:
-        an.pool.assemble([(j, screening.first_pool(j)) for j in computed])
+        jobs = [(j, screening.first_pool(j)) for j in computed]
+        if any(mask.any() for _, mask in jobs):
+            an.pool.assemble([(j, mask) for j, mask in jobs if mask.any()])
     elif computed:
         an = _assemble_first_pool(an, computed[0])
     bar = None
@@ -333,7 +335,9 @@ def _assemble_other_pools(an: _Analysis, j: int, others: list[int]) -> None:
         mask = (screening.near(i, screening.ute[j] + results.rotation[it_max, j]
                                - screening.ute[i])
                 if results.found[it_max, j] else screening.first_pool(i))
-        jobs.append((i, mask if mask.any() else screening.first_pool(i)))
+        mask = mask if mask.any() else screening.first_pool(i)
+        if mask.any():  # a roll with none keeps no pool: _solve_roll says so in its status
+            jobs.append((i, mask))
     if jobs:
         an.pool.assemble(jobs)
 
