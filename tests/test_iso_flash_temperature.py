@@ -281,6 +281,17 @@ def test_bad_inputs_are_refused_naming_the_field(call, field):
         call()
 
 
+def test_a_transverse_contact_ratio_below_one_says_why_the_standard_does_not_apply():
+    """ε_α < 1 (round 25b's hypoid 6x41: 0.9916) is refused naming the field, its value
+    and why — the verdict's "not checked: scuffing_standard (… the standard's method does
+    not apply here (…))" quotes this text; ε_α = 1 exactly is accepted (X_Γ = 1/ε_α = 1
+    for ε_β >= 1, exact)."""
+    with pytest.raises(InputError, match=r"^eps_alpha: must be >= 1 \[1\], got 0\.9916: "
+                       r"the transverse contact ratio .* below 1, outside ISO/TR 13989-1"):
+        load_sharing_factor([1.0], 20.0, 9.0, 0.9916, 1.2)
+    np.testing.assert_array_equal(load_sharing_factor([1.0], 20.0, 9.0, 1.0, 1.2), [1.0])
+
+
 @pytest.mark.slow
 def test_the_standard_and_the_ltca_on_tr_sample_1():
     """ISO/TR 10300-30 sample 1 at 300 N·m, 1200 rpm, 75W90 at 90 °C, Rq 0.8 µm: the

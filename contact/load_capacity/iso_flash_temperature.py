@@ -322,7 +322,12 @@ def load_sharing_factor(position: ArrayLike, path_length: float, base_pitch: flo
     """
     g = positive("path_length", path_length, "mm")
     p = positive("base_pitch", base_pitch, "mm")
-    ea = real("eps_alpha", eps_alpha, unit="1", low=1.0)
+    ea = real("eps_alpha", eps_alpha, unit="1")
+    if ea < 1.0:  # say why, not only the range (issue 71, round 25b: a 6x41 at 0.9916)
+        raise InputError(f"eps_alpha: must be >= 1 [1], got {ea:.4g}: the transverse "
+                         "contact ratio of the virtual cylindrical gears is below 1, "
+                         "outside ISO/TR 13989-1's load sharing X_Gamma (clause 5.3), "
+                         "which assumes at least one pair in contact at every instant")
     eb = real("eps_beta", eps_beta, unit="1", low=0.0)
     s = real_array("position", position, unit="mm", low=-1e-9 * g, high=g * (1 + 1e-9))
     helical = np.full(s.shape, 1.0 / ea)
