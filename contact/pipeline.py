@@ -402,7 +402,12 @@ def coast_flank_torques(torques, coast: float, design: float) -> tuple[float, ..
     ``design`` — each torque ``t`` below ``design`` to ``t`` × ``coast`` / ``design``
     rounded down (:func:`floor_torque`, as the case's torques are), each at or above it to
     ``coast`` (repeats dropped, the order kept) — where ``coast`` is below ``design`` and a
-    torque is above ``coast``; else ``torques`` as given.
+    torque is above ``coast``; else ``torques`` as given. "At or above ``design``" is at or
+    above ``design`` rounded down as the case writes its torques (``floor_torque(design)``):
+    a given design torque of five digits, 2923.2 N·m, is written to ``[operating]`` as
+    2923 N·m, which is the design torque, not a share of it (before, 2923 × 2694 / 2923.2
+    = 2693.8 was rounded down to 2693 N·m, below the coast design torque 2694 N·m the
+    development had checked; issue 71, round 25b).
 
     A synthesised case runs at the development's light torque ``light_load`` × ``design``
     and at ``design`` (:func:`case_torques`): its coast flank so runs at ``light_load`` ×
@@ -450,7 +455,8 @@ def coast_flank_torques(torques, coast: float, design: float) -> tuple[float, ..
             raise ValueError(f"torques: each must be finite and > 0 [N m], got {t!r}")
     if c >= d or not given or max(given) <= c:
         return given
-    return tuple(dict.fromkeys(c if t >= d else floor_torque(float(f"{t * c / d:.12g}"))
+    top = floor_torque(d)  # the design torque as the case's [operating] torques write it
+    return tuple(dict.fromkeys(c if t >= top else floor_torque(float(f"{t * c / d:.12g}"))
                                for t in given))
 
 

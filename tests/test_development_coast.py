@@ -288,6 +288,22 @@ def test_the_coast_torques_are_one_rule():
     # a share that float arithmetic puts a hair below its decimal: not rounded down past it
     assert 16.4 * 225.0 / 300.0 < 12.3  # 12.299999999999999
     assert coast_flank_torques((16.4, 300.0), 225.0, 300.0) == (12.3, 225.0)
+
+
+def test_a_given_design_torque_written_rounded_down_is_the_design_torque_on_the_coast():
+    """A given design torque of five digits (round 25b's FH truck hypoid 11x43, 2923.2 N·m,
+    0.9 × its ISO capacity 3248) is written to ``[operating]`` rounded down, 2923 N·m
+    (:func:`~contact.pipeline.floor_torque`); that torque is the design torque, so the
+    coast flank runs at its coast design torque 2694 N·m, the torque the development
+    checked (its ``[development.coast]`` torques 404, 2694), not at the share
+    2923 × 2694 / 2923.2 = 2693.82 rounded down to 2693 (before). The light torque keeps
+    its share: 438.4 × 2694 / 2923.2 = 404.03 → 404.0, worked by hand. A torque below the
+    rounded design torque is still a share (2900 × 2694 / 2923.2 = 2672.6 → 2672)."""
+    from contact.pipeline import coast_flank_torques, floor_torque
+
+    assert floor_torque(2923.2) == 2923.0
+    assert coast_flank_torques((438.4, 2923.0), 2694.0, 2923.2) == (404.0, 2694.0)
+    assert coast_flank_torques((2900.0,), 2694.0, 2923.2) == (2672.0,)
     for bad in (0.0, -1.0, math.nan, math.inf):
         with pytest.raises(ValueError, match="coast: must be finite and > 0"):
             coast_flank_torques((45.0, 300.0), bad, 300.0)

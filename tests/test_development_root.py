@@ -154,6 +154,32 @@ def test_a_failed_analysis_is_said_not_raised(monkeypatch):
     assert "not computed (mesh mapping" in lines[-1]
 
 
+def test_a_root_stress_not_computed_beside_a_pitting_check_is_said(monkeypatch):
+    """Round 25b's FH 13x30 at Σ 115° (b2 28.9 applied): the FE model of one design failed
+    ("mesh mapping: element 280 … is inverted or collapsed"), the local pitting check ran
+    and the development said only "at 327.7 N m S_H,loc 1.27 (pinion) >= 1" — the missing
+    S_F,FE was in the log alone. Now a line says it, with the reason. The safeties are
+    given (S_H,loc 1.27 at the design torque, the round's number), not computed."""
+    def no_root(tree):
+        raise LookupError("no root stress (root stress not computed: the FE model failed "
+                          "(mesh mapping: element 280 is inverted or collapsed))")
+
+    monkeypatch.setitem(dr.CRITERIA, "root", (no_root, *dr.CRITERIA["root"][1:]))
+    monkeypatch.setitem(dr.CRITERIA, "pitting",
+                        (lambda tree: (np.array([2.1, 1.27]), 1.0, "pinion"),
+                         *dr.CRITERIA["pitting"][1:]))
+    monkeypatch.setattr(dr, "_root_tree", lambda case, torques: None)
+    lines: list[str] = []
+    setup = {"torques": [49.1, 327.7], "source": "the ISO 10300 capacity"}
+    tree, s, text = dr.root_capacity(None, setup, 0.15, lines.append)
+    assert tree is None and math.isnan(s) and text == "" and "lowered" not in setup
+    assert lines[0] == ("development: S_F,FE at 327.7 N m not checked (no root stress (root "
+                        "stress not computed: the FE model failed (mesh mapping: element "
+                        "280 is inverted or collapsed))); the design torque decided without "
+                        "it")
+    assert lines[-1] == "development: at 327.7 N m S_H,loc 1.27 (pinion) >= 1"
+
+
 def test_floor_torque_rounds_down_and_never_to_zero():
     """The development's torques are rounded down for the case it writes: to 0.1 N·m from
     1 N·m up (the torques of every design of m_mn >= 3 mm below 1000 N·m unchanged), to 4

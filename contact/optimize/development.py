@@ -50,8 +50,9 @@ bearing keeps the verdict's 60 µrad
 (:func:`~contact.optimize.development_lte_capacity.lte_capacity`); where it exceeds the
 local pitting limit, a longer
 pattern and one centred lower are tried first
-(:mod:`contact.optimize.development_pitting`). Then the **coast flank** (:func:`coast_development`):
-the chosen design's coast flank, synthesised from its own prescriptions, is checked at
+(:mod:`contact.optimize.development_pitting`). Then the **coast flank**
+(:func:`~contact.optimize.development_coast_flank.coast_development`): the chosen
+design's coast flank, synthesised from its own prescriptions, is checked at
 :data:`CHECK_LTCA` at the same light and design torque against the same targets (it
 carries the full torque in reverse gear), and where it misses one it gets the same
 stages and check on its own prescriptions (its own blade-angle change) with its own
@@ -356,8 +357,9 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
        the tip plane made again), scored on every target, until the budget
        ``max_evaluations`` is spent but :data:`SECOND_BEARING_DESIGNS`; where the best
        of them misses the LTE target, the same on the next-best bearing with those
-       designs (:func:`_relief_stage`: the relief that keeps the edges elastic is what
-       makes the LTE, docs/synthesis.md "The LTE against the relief").
+       designs (:func:`~contact.optimize.development_stages._relief_stage`: the relief
+       that keeps the edges elastic is what makes the LTE, docs/synthesis.md "The LTE
+       against the relief").
 
     Each stage is a bounded Nelder–Mead (``scipy.optimize.minimize``, variables scaled to
     [0, 1]) that stops at the first design meeting every target of its stage. The search
@@ -378,10 +380,12 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     holds, the torque is raised back as far as its capacity, its drive targets and its
     mounting tolerance hold (:func:`_rewritten_after_cut`).
 
-    3. **coast flank** (:func:`coast_development`): the chosen design's coast flank, as
-       synthesised from its own prescriptions, analysed at :data:`CHECK_LTCA` at the same
-       light and design torque and scored on the same targets — the coast flank carries
-       the full torque in reverse gear; where it misses a target and
+    3. **coast flank**
+       (:func:`~contact.optimize.development_coast_flank.coast_development`): the
+       chosen design's coast flank, as synthesised from its own prescriptions, analysed
+       at :data:`CHECK_LTCA` at the same light and design torque and scored on the same
+       targets — the coast flank carries the full torque in reverse gear; where it
+       misses a target and
        ``coast_max_evaluations`` > 0, stages 1 and 2 and the check on the coast flank's
        own prescriptions with that budget (at most :data:`COAST_BEARING_DESIGNS`
        bearings), the best checked design kept where it scores better than the flank as

@@ -133,8 +133,8 @@ class DevelopmentResult:
         :attr:`stage_seconds`).
     torque_lowered : bool
         The design torque is the bearing's static flank capacity, below the rating's
-        (:func:`_static_capacity`); :meth:`recorded` writes it as the case's
-        ``[rating] design_torque``.
+        (:func:`~contact.optimize.development_check.static_capacity`); :meth:`recorded`
+        writes it as the case's ``[rating] design_torque``.
     coast_best : DevelopmentEvaluation or None
         The coast flank written: a design of its search (checked at :data:`CHECK_LTCA`)
         or, stage ``"synthesised"``, the flank as synthesised from its own prescriptions;
@@ -175,8 +175,9 @@ class DevelopmentResult:
         Why, in numbers (empty where not lowered).
     gear_process_text : str
         Which gear process was kept and why, where ``gear_process = "auto"`` developed the
-        generated gear too (:func:`contact.optimize.development_process.
-        with_generated_gear`); empty where not.
+        generated gear too
+        (:func:`~contact.optimize.development_process.with_generated_gear`); empty where
+        not.
     lte_reach : dict or None
         The drive design of least LTE p-p the check's last LTE step saw at :attr:`torque`
         (:func:`contact.optimize.development_check.checked_crowning_lte`): ``"light"``,
@@ -678,7 +679,8 @@ def _values_text(values: Mapping[str, float]) -> str:
 #: (:attr:`DevelopmentResult.tolerant`)
 TOLERANCE_KEYS = ("toe", "heel", "edge", "plastic")
 
-#: margin below the flank's static strength that :func:`_static_capacity` aims at [1]
+#: margin below the flank's static strength that
+#: :func:`~contact.optimize.development_check.static_capacity` aims at [1]
 STATIC_MARGIN = 0.99
 
 

@@ -487,15 +487,18 @@ CRITERIA: dict[str, tuple[Callable[[Any], tuple[np.ndarray, float, str]], str,
 }
 
 
-def _safeties(tree) -> dict[str, tuple[np.ndarray, float, str]]:
+def _safeties(tree, missing: dict[str, str] | None = None
+              ) -> dict[str, tuple[np.ndarray, float, str]]:
     """Each criterion of :data:`CRITERIA` the analysis can give (the others said in the
-    log)."""
+    log and, where ``missing`` is given, put there: criterion → why)."""
     out = {}
     for name, (fn, _, _) in CRITERIA.items():
         try:
             out[name] = fn(tree)
         except LookupError as exc:
             log.info("development %s capacity not checked: %s", name, exc)
+            if missing is not None:
+                missing[name] = str(exc)
     return out
 
 
@@ -545,9 +548,10 @@ def root_capacity(case, setup: dict[str, Any], light_load: float,
     """
     torques = [float(t) for t in setup["torques"]]
     torque = torques[1]
+    missing: dict[str, str] = {}
     try:
         case = decided_case(case, setup)
-        safe = _safeties(_root_tree(case, torques))
+        safe = _safeties(_root_tree(case, torques), missing)
         if "root" in safe:  # a coarse level's failing root check: decided on the default
             s, s_min, _ = safe["root"]
             finer = refined_for_root(case, setup, f"design torque {plain_number(torque)} N m",
@@ -563,6 +567,10 @@ def root_capacity(case, setup: dict[str, Any], light_load: float,
         say("development: root stress and local pitting safety not checked (no FE root "
             "stress and no ISO 10300 rating)")
         return None, math.nan, ""
+    for k, why in missing.items():  # one criterion alone not given: said, not only logged
+        if k not in safe:
+            say(f"development: {CRITERIA[k][1]} at {plain_number(torque)} N m not checked "
+                f"({why}); the design torque decided without it")
 
     fails = _failing(safe)
     if not fails:
