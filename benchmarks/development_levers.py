@@ -46,6 +46,14 @@ at the torques given (its light and coast design torque), e.g.::
 
 (the flank peak pressure at the design torque [MPa] and the development's objective are
 printed too; ``--tolerance`` checks the drive flank.)
+
+A row reads a design as the development's check does (``checked_analysis``: the same
+numbers, tests/test_development_hollow_target.py), but ``--from-case`` varies the design
+*as written*, after every step: a step inside the check varies the design before the later
+steps (the edge-peak step's relief) change it. On the FH hypoid 9x39 at Σ 95° that made
+the same recipe 1.4 % edge here and 2.4 % in the check's hollow step (root relief 15 vs
+9.55 µm; docs/synthesis.md, "The development and development_levers 1 % apart on the
+9×39's edge"): give the earlier design's values in ``--base`` to read what a check step saw.
 """
 
 from __future__ import annotations

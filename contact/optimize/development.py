@@ -171,6 +171,7 @@ from contact.optimize.development_evaluate import (  # noqa: F401
     lte_spread,
     static_strength,
 )
+from contact.optimize.development_hollow_target import checked_hollow_target
 from contact.optimize.development_lte_capacity import lte_capacity
 from contact.optimize.development_pitting import checked_pitting
 from contact.optimize.development_range_lte import range_record
@@ -507,6 +508,10 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     # the flank's static strength (ltca run's edge_pressure attention) given the relief
     # that takes the load off it, kept where no met target is lost (development_edge_peak)
     best = checked_edge_peak(best, targets, setup, teeth, say, placed)
+    # the development's own LTE target alone missed: the hollow profile with the tip
+    # relief deeper, on the design as it is written (after the edge-peak step's relief;
+    # development_hollow_target)
+    best = checked_hollow_target(best, targets, setup, teeth, say, placed)
     developed = with_flank_options(basic, flank, best.values)
     # the coast flank, after the drive flank is chosen (which it does not change): checked
     # at the default sampling as synthesised, developed where it misses a target
