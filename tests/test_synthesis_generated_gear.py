@@ -847,17 +847,17 @@ def test_cradle_pose_inverts_settings_from_poses():
     assert np.linalg.norm(np.cross(p - point, axis)) < 1e-9  # on the same axis
 
 
-@pytest.mark.parametrize(("name", "limit_um"), [("spiral_bevel_20x30", 0.1),
-                                                ("spiral_bevel_16x16_s60", 15.0)])
-def test_conjugate_pinion_of_a_generated_gear_is_conjugate(name, limit_um):
+@pytest.mark.parametrize(("name", "least_valid"), [("spiral_bevel_20x30", 0.6),
+                                                   ("spiral_bevel_16x16_s60", 0.55)])
+def test_conjugate_pinion_of_a_generated_gear_is_conjugate(name, least_valid):
     """``synthesize(conjugate=True)`` with a generated gear: the pinion generated on the
-    gear's own crown gear (turned to face it) at R_a2 z2/z1 meshes with the gear with
-    (almost) no ease-off. On its own crown gear (before, issue 71) the same call left
-    103 um (20x30) and 527 um (16x16 at Sigma 60, ratio 1) of ease-off over the flank:
-    the start was conjugate only to second order at M. Measured now 0.0 / 10.8 um (the
-    16x16's gear cradle axis passes through the gear's root apex, not the pitch apex, so
-    the three axes do not meet in one point and a small mismatch remains); the limits
-    are those measurements' order."""
+    gear's own crown gear (turned to face it) at R_a2 z2/z1 meshes with the gear with no
+    ease-off. On its own crown gear (before, issue 71) the same call left 103 um (20x30)
+    and 527 um (16x16 at Sigma 60, ratio 1) of ease-off over the flank: the start was
+    conjugate only to second order at M. With the gear's cradle axis through its root apex
+    the 16x16 kept 10.8 um (the three axes did not meet in one point); through the pitch
+    apex (branch shell85) 7e-8 / 5e-8 um (20x30: 7e-8 / 8e-8 um) over 59-61 % (75-77 %) of
+    the flanks; 1e-3 um allowed (the generation's solver noise is far below)."""
     from contact.utca.easeoff import ease_off
 
     basic = load_basic(DATA / "generated_gear" / f"{name}.toml")
@@ -867,20 +867,21 @@ def test_conjugate_pinion_of_a_generated_gear_is_conjugate(name, limit_um):
     assert "the gear's own crown gear turned to face the pinion" in case.source
     for flank in ("drive", "coast"):
         eo = ease_off(case, flank=flank)
-        assert eo.valid.mean() > 0.6
-        assert 1e3 * float(np.nanmax(np.where(eo.valid, eo.ease_off, np.nan))) < limit_um
+        assert eo.valid.mean() > least_valid
+        assert 1e3 * float(np.nanmax(np.where(eo.valid, np.abs(eo.ease_off), np.nan))) < 1e-3
 
 
 def test_a_pinion_the_gears_crown_gear_cannot_make_falls_back_to_its_own():
     """The 20x20 miter of tests/data/limits (ε_vβ 0.64): on the gear's crown gear its
     concave flank's relief finds no ordered blade heights (the ratio of roll moved 1.41 ->
     0.86 by the local synthesis); the synthesis falls back to the pinion's own crown gear
-    (its R_a 0.776 / 1.514, as before) and the source says which."""
+    (its R_a 0.806 / 1.588; 0.776 / 1.514 before the gear's cradle axis moved to its pitch
+    apex, branch shell85: a regression anchor) and the source says which."""
     case, report = _miter()
     assert "the pinion's own crown gear (its synthesis on the gear's crown gear had no " \
            "solution" in case.source
     ra = [report.flanks[f].tools.settings.ratio_of_roll for f in ("concave", "convex")]
-    assert ra == pytest.approx([0.776, 1.514], abs=2e-3)
+    assert ra == pytest.approx([0.806, 1.588], abs=2e-3)
 
 
 def test_the_pinion_crown_gears_are_tried_in_order_and_a_relief_error_is_raised(monkeypatch):
