@@ -87,13 +87,14 @@ def _velocity(s, q, r, h=1e-6):
 
 
 def test_generated_gear_rolls_its_pitch_cone_on_the_crown_gear():
-    """R_a = cos θ_f2 / sin δ2 with γ_m = δ_f2 and the root apex at the machine centre:
-    the line through the machine centre parallel to the gear's pitch generatrix, in the
-    plane of the work and cradle axes (azimuth 0), has no velocity relative to the cradle
-    (< 1e-9 of the roll speed there: the crown gear's pitch cone rolls), whereas the root
-    line slides; the pitch generatrix itself slides by the constant ω_c c × a Δ, Δ the
-    pitch apex's distance from the root apex (0.29 mm here), as with Gleason's settings
-    whose machine centre holds the root apex."""
+    """R_a = cos θ_f2 / sin δ2 with γ_m = δ_f2 and the cradle axis through the gear's pitch
+    apex: the pitch generatrix itself has no velocity relative to the cradle (< 1e-9 of the
+    roll speed there: the crown gear's pitch cone rolls on the gear's), whereas the root
+    line slides. Before (issue 71, branch shell85) the cradle axis passed through the root
+    apex and the line that rolled was the parallel through it, Δ sin δ2 from the pitch
+    generatrix (Δ the root apex's distance from the pitch apex, 0.29 mm here, 8.15 mm on
+    the 12x12 miter, whose gear tooth came out 2.5 mm thin, see
+    test_generated_gear_has_the_iso_thickness_at_the_mean_pitch_point)."""
     geom = load_basic(MITER).blank()
     g = geom.gear
     tools = gear_generate_tools(geom, cutter_radius=geom.design.rc0,
@@ -105,15 +106,51 @@ def test_generated_gear_rolls_its_pitch_cone_on_the_crown_gear():
     assert s.ratio_of_roll == pytest.approx(math.cos(g.delta - g.delta_f) / math.sin(g.delta),
                                             rel=1e-15)
     assert generating_ratio_of_roll(g) == s.ratio_of_roll
+    assert abs(g.t_z - g.t_zR) > 0.2  # the apexes differ: the test tells the two placements
     for cone in (0.8, 1.0, 1.2):  # along the pitch generatrix, from its apex
         L = cone * g.Rm
-        r = np.array([L * math.sin(g.delta), 0.0, -g.t_zR + L * math.cos(g.delta)])
+        r = np.array([L * math.sin(g.delta), 0.0, -g.t_z + L * math.cos(g.delta)])
         assert np.linalg.norm(_velocity(s, 0.0, r)) < 1e-9 * L
-        pitch_line = r + np.array([0.0, 0.0, g.t_zR - g.t_z])
-        assert np.linalg.norm(_velocity(s, 0.0, pitch_line)) == pytest.approx(
-            abs(g.t_z - g.t_zR) * math.cos(s.machine_root_angle), rel=1e-6)
         root = np.array([L * math.sin(g.delta_f), 0.0, -g.t_zR + L * math.cos(g.delta_f)])
         assert np.linalg.norm(_velocity(s, 0.0, root)) > 1e-3 * L
+
+
+def test_generated_gear_has_the_iso_thickness_at_the_mean_pitch_point():
+    """The face-milled generated gear of the 12x12 miter (benchmarks/data/unseen_designs,
+    root apex 8.15 mm beyond its pitch apex, c_ham 0.25): its tooth's transverse arc
+    thickness at the mean pitch point (R_m2 on the pitch cone, the two flanks from
+    flank_points) is ISO 23509's s_mn2 / cos β_m2 (7.019 mm; s_mn2 5.750 mm), an
+    independent measure (the blank's, not the machine's). Measured 7.033 mm (+0.2 %: the
+    generated profile is not the rack's away from the rolling point, and the tooth's
+    normal section is not the transverse one scaled by cos β); allowed 2 %. With the
+    cradle axis through the root apex (before, issue 71, branch shell85) 3.987 mm (−43 %):
+    the gear's teeth came to a point at their tip, the pinion (cut to mate it) 2.5 mm too
+    thick, and `ltca run` refused every case written for this design."""
+    basic = load_basic(UNSEEN / "spiral_bevel_12x12_miter_b35.toml")
+    geom = basic.blank()
+    g = geom.gear
+    assert g.t_z - g.t_zR == pytest.approx(8.151, abs=1e-3)
+    tools = gear_generate_tools(geom, cutter_radius=geom.design.rc0,
+                                blade_angle_drive=geom.pitch.alpha_nD,
+                                blade_angle_coast=geom.pitch.alpha_nC, point_width=None,
+                                edge_radius=None)
+    from geometry.synthesis.gear import blank as case_blank
+
+    b = case_blank(g)
+    z = np.array([-g.t_z + g.Rm * math.cos(g.delta)])
+    rho = np.array([g.Rm * math.sin(g.delta)])
+    phi = {}
+    for flank, blade in tools.blades.items():
+        fp = flank_points(blade, tools.settings, b, "right", z, rho)
+        assert fp.ok.all()
+        phi[flank] = math.atan2(fp.r[0, 1], fp.r[0, 0])
+    pitch = 2.0 * math.pi / g.z
+    gap = math.remainder(phi["concave"] - phi["convex"], 2.0 * math.pi) % pitch
+    arcs = sorted((gap * rho[0], (pitch - gap) * rho[0]))
+    iso = g.smn / math.cos(g.beta_m)
+    assert iso == pytest.approx(7.019, abs=1e-3)
+    # the tooth is the nearer of the two arcs (the other is the slot, ~13 mm)
+    assert arcs[0] == pytest.approx(iso, rel=0.02)
 
 
 @pytest.mark.parametrize("gear_flank", ["concave", "convex"])
@@ -810,17 +847,17 @@ def test_cradle_pose_inverts_settings_from_poses():
     assert np.linalg.norm(np.cross(p - point, axis)) < 1e-9  # on the same axis
 
 
-@pytest.mark.parametrize(("name", "limit_um"), [("spiral_bevel_20x30", 0.1),
-                                                ("spiral_bevel_16x16_s60", 15.0)])
-def test_conjugate_pinion_of_a_generated_gear_is_conjugate(name, limit_um):
+@pytest.mark.parametrize(("name", "least_valid"), [("spiral_bevel_20x30", 0.6),
+                                                   ("spiral_bevel_16x16_s60", 0.55)])
+def test_conjugate_pinion_of_a_generated_gear_is_conjugate(name, least_valid):
     """``synthesize(conjugate=True)`` with a generated gear: the pinion generated on the
-    gear's own crown gear (turned to face it) at R_a2 z2/z1 meshes with the gear with
-    (almost) no ease-off. On its own crown gear (before, issue 71) the same call left
-    103 um (20x30) and 527 um (16x16 at Sigma 60, ratio 1) of ease-off over the flank:
-    the start was conjugate only to second order at M. Measured now 0.0 / 10.8 um (the
-    16x16's gear cradle axis passes through the gear's root apex, not the pitch apex, so
-    the three axes do not meet in one point and a small mismatch remains); the limits
-    are those measurements' order."""
+    gear's own crown gear (turned to face it) at R_a2 z2/z1 meshes with the gear with no
+    ease-off. On its own crown gear (before, issue 71) the same call left 103 um (20x30)
+    and 527 um (16x16 at Sigma 60, ratio 1) of ease-off over the flank: the start was
+    conjugate only to second order at M. With the gear's cradle axis through its root apex
+    the 16x16 kept 10.8 um (the three axes did not meet in one point); through the pitch
+    apex (branch shell85) 7e-8 / 5e-8 um (20x30: 7e-8 / 8e-8 um) over 59-61 % (75-77 %) of
+    the flanks; 1e-3 um allowed (the generation's solver noise is far below)."""
     from contact.utca.easeoff import ease_off
 
     basic = load_basic(DATA / "generated_gear" / f"{name}.toml")
@@ -830,20 +867,21 @@ def test_conjugate_pinion_of_a_generated_gear_is_conjugate(name, limit_um):
     assert "the gear's own crown gear turned to face the pinion" in case.source
     for flank in ("drive", "coast"):
         eo = ease_off(case, flank=flank)
-        assert eo.valid.mean() > 0.6
-        assert 1e3 * float(np.nanmax(np.where(eo.valid, eo.ease_off, np.nan))) < limit_um
+        assert eo.valid.mean() > least_valid
+        assert 1e3 * float(np.nanmax(np.where(eo.valid, np.abs(eo.ease_off), np.nan))) < 1e-3
 
 
 def test_a_pinion_the_gears_crown_gear_cannot_make_falls_back_to_its_own():
     """The 20x20 miter of tests/data/limits (ε_vβ 0.64): on the gear's crown gear its
     concave flank's relief finds no ordered blade heights (the ratio of roll moved 1.41 ->
     0.86 by the local synthesis); the synthesis falls back to the pinion's own crown gear
-    (its R_a 0.776 / 1.514, as before) and the source says which."""
+    (its R_a 0.806 / 1.588; 0.776 / 1.514 before the gear's cradle axis moved to its pitch
+    apex, branch shell85: a regression anchor) and the source says which."""
     case, report = _miter()
     assert "the pinion's own crown gear (its synthesis on the gear's crown gear had no " \
            "solution" in case.source
     ra = [report.flanks[f].tools.settings.ratio_of_roll for f in ("concave", "convex")]
-    assert ra == pytest.approx([0.776, 1.514], abs=2e-3)
+    assert ra == pytest.approx([0.806, 1.588], abs=2e-3)
 
 
 def test_the_pinion_crown_gears_are_tried_in_order_and_a_relief_error_is_raised(monkeypatch):

@@ -325,10 +325,10 @@ def gear_generate_tools(geom: BlankGeometry, *, cutter_radius: float,
         at the mean root) and settings (γ_m = δ_f2, X_p = t_zR2, S_r, q_c placing the slot
         centre line through the mean root point with the spiral angle β_m2), with
         ``process = "Generate"`` and the ratio of roll :func:`generating_ratio_of_roll`
-        (no modified roll, helical or vertical motion). Face hobbing: the Formate
-        gear's cutter pose and indexing κ2 = −z0/z2 at q = θ = 0, the cradle axis moved to
-        the gear's pitch apex (:func:`_cradle_through_pitch_apex`; X_p = −t_z2 along the
-        axis, the sliding base X_b and S_r, q_c keeping the cutter where it was).
+        (no modified roll, helical or vertical motion), the cradle axis moved from the
+        root apex to the gear's pitch apex (:func:`_cradle_through_pitch_apex`; X_p =
+        −t_z2 along the axis, the sliding base X_b and S_r, q_c keeping the cutter where it
+        was). Face hobbing: also the indexing κ2 = −z0/z2 at q = θ = 0.
 
     Raises
     ------
@@ -343,10 +343,16 @@ def gear_generate_tools(geom: BlankGeometry, *, cutter_radius: float,
     Bevel Gear Technology*, 2014; Litvin & Fuentes 2004, ch. 20, the generated gear of a
     spiral bevel pair). At roll q = 0 the cutter stands where the Formate gear's does (its
     tip plane on the root cone, the slot centre line through the mean root point with the
-    spiral angle β_m2); the crown gear it represents rolls on the gear's pitch cone, so the
-    slot width at the pitch cone is the crown gear's tooth thickness there,
-    W + h_fm (tan α_IB + tan α_OB) = π m_mn − s_mn2, and the gear's normal pressure angle
-    at the pitch cone is the blade angle.
+    spiral angle β_m2); the crown gear it represents rolls on the gear's pitch cone (its
+    cradle axis through the pitch apex), so the slot width at the pitch cone is the crown
+    gear's tooth thickness there, W + h_fm (tan α_IB + tan α_OB) = π m_mn − s_mn2, and the
+    gear's normal pressure angle at the pitch cone is the blade angle. With the cradle
+    axis through the root apex (face milling before issue 71, branch shell85) the line
+    that rolled was the parallel to the pitch generatrix through the root apex, Δ sin δ2
+    from it (Δ = t_z2 − t_zR2): on the 12x12 miter (Δ 8.15 mm) the gear's transverse arc
+    thickness at the mean pitch point was 3.99 mm instead of ISO 23509's 7.02 mm, its
+    teeth pointed at the tip, and the shell and FE tooth models refused every case
+    written (``tests/test_synthesis_generated_gear.py``).
     """
     tools = gear_formate_tools(geom, cutter_radius=cutter_radius,
                                blade_angle_drive=blade_angle_drive,
@@ -355,14 +361,13 @@ def gear_generate_tools(geom: BlankGeometry, *, cutter_radius: float,
                                blade_groups=blade_groups)
     settings = replace(tools.settings, process="Generate",
                        ratio_of_roll=generating_ratio_of_roll(geom.gear))
-    if blade_groups:
-        settings = _cradle_through_pitch_apex(settings, geom.gear)
+    settings = _cradle_through_pitch_apex(settings, geom.gear)
     return tools._replace(settings=settings)
 
 
 def _cradle_through_pitch_apex(settings: MachineSettings,
                                member: MemberBlank) -> MachineSettings:
-    """A face-hobbed generated gear's settings (:func:`gear_generate_tools`): the Formate
+    """A generated gear's settings (:func:`gear_generate_tools`): the Formate
     gear's cutter pose kept at q = θ = 0, the cradle axis (its direction normal to the
     root plane) moved along the gear axis from the root apex to the pitch apex.
 
@@ -374,7 +379,10 @@ def _cradle_through_pitch_apex(settings: MachineSettings,
     apex (the Formate gear's machine centre, ``t_zR``) the uniform depth of face hobbing
     puts the cradle axis h_f / sin δ from the pitch apex (16 mm on the 16x16 at Σ 60°),
     and the "conjugate" pinion of the 16x16 carried 253 µm of ease-off; through the pitch
-    apex 0.0 µm (``tests/test_synthesis_fh_generated_gear.py``)."""
+    apex 0.0 µm (``tests/test_synthesis_fh_generated_gear.py``). Face milling's tapered
+    depth puts the root apex Δ = t_z − t_zR from the pitch apex too where ISO 23509 gives
+    the dedendum angle apart from the apexes (8.15 mm on the 12x12 miter, whose gear tooth
+    came out 43 % thin at the mean pitch point through the root apex)."""
     centre, axis = cutter_pose(settings, 0.0, 0.0)
     _, cradle_axis = cradle_pose(settings, 0.0)
     apex = np.array([0.0, 0.0, -member.t_z])
@@ -382,7 +390,7 @@ def _cradle_through_pitch_apex(settings: MachineSettings,
                              cutter_centre=centre, cutter_axis=axis, process="Generate",
                              ratio_of_roll=settings.ratio_of_roll)
     if abs(ps.blank_phase) > 1e-9:
-        raise InputError("synthesis.gear_process: the generated face-hobbed gear's cradle "
+        raise InputError("synthesis.gear_process: the generated gear's cradle "
                          f"cannot be placed at its pitch apex (blank phase {ps.blank_phase:.3g} "
                          "rad)")
     return replace(ps.settings, indexing_ratio=settings.indexing_ratio)
