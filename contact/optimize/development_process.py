@@ -194,7 +194,7 @@ class CutForeseen(Exception):
     """
 
     def __init__(self, torque: float, rated: float) -> None:
-        super().__init__(f"local pitting capacity at most {plain_number(torque)} of "
+        super().__init__(f"local pitting capacity about {plain_number(torque)} of "
                          f"{plain_number(rated)} N m")
         self.torque, self.rated = float(torque), float(rated)
 
@@ -444,7 +444,7 @@ def _generated_after_foreseen(run: Callable[..., Any], basic: Any, foreseen: Cut
     whatever the Formate design ends at, which fails as foreseen), else None: the caller
     develops the Formate gear in full and ranks the two as :func:`with_generated_gear`
     does without the foresight)."""
-    say(f"development: the Formate gear's local pitting capacity is at most "
+    say(f"development: the Formate gear's local pitting capacity is about "
         f"{plain_number(foreseen.torque)} N m, below {FORESEEN_CUT_MARGIN:g} of "
         f"{TORQUE_CUT_FRACTION:g} of its rated {plain_number(foreseen.rated)} N m (a design "
         "torque cut foreseen); developing the pair with a generated gear (gear_process 'auto')")
@@ -456,7 +456,7 @@ def _generated_after_foreseen(run: Callable[..., Any], basic: Any, foreseen: Cut
             "Formate gear in full")
         return second, None
     text = (f"Gear process (auto): generated. The Formate gear's development was stopped at "
-            f"its static capacity, its local pitting capacity at most "
+            f"its static capacity, its local pitting capacity about "
             f"{plain_number(foreseen.torque)} N m, below {FORESEEN_CUT_MARGIN:g} of "
             f"{TORQUE_CUT_FRACTION:g} of its rated {plain_number(foreseen.rated)} N m (a design "
             f"torque cut, a failed outcome: contact.optimize.development_process.cut_foreseen); "
