@@ -827,9 +827,9 @@ BOUND_PITTING_EXPONENT = 0.5
 #: [1] the range of the exponent b :func:`measured_pitting_exponent` measures on a bearing:
 #: at most the line contact's :data:`BOUND_PITTING_EXPONENT` (a bearing's bound is never
 #: above the Hertz one), at least the low end of the capacity step's pitting exponent
-#: (:data:`CRITERIA`); measured between the light and the design torque on the Formate
-#: bearings that set it: 0.26-0.36 (docs/own_gear_set.md, "The Formate gear's cut foreseen
-#: with the bearing's own exponent")
+#: (:data:`CRITERIA`); measured between the light and the design torque on the eight
+#: Formate bearings that set it: 0.268-0.467 (docs/own_gear_set.md, "The Formate gear's
+#: cut foreseen with the bearing's own exponent")
 MEASURED_PITTING_EXPONENT = (0.2, BOUND_PITTING_EXPONENT)
 
 
@@ -857,7 +857,7 @@ def measured_pitting_exponent(light_torque: float, light_safety: float, torque: 
     Source: the power law the capacity steps take (:func:`root_capacity`, b measured
     between the light and the design torque); issue 71/75, branch cut85: the line
     contact's b = 1/2 left the 13x41 at Σ 62°'s Formate bound at 118.9 N·m against its
-    final 86.6 N·m, b 0.34 measured gives 89.6.
+    final 86.6 N·m; b 0.338 measured gives 89.0 N·m.
     """
     low, high = MEASURED_PITTING_EXPONENT
     return _exponent(float(light_torque), float(light_safety), float(torque),
