@@ -92,7 +92,8 @@ def _capacity_stand_ins(monkeypatch, *, lowered: bool, bound: float, process="Fo
         calls.append("pitting")
         return best
 
-    def bound_at(case, torques):
+    def bound_at(case, torques, measured=False):
+        assert measured  # the foresight takes the bearing's own exponent (branch cut85)
         calls.append(f"bound at {torques[1]:g}")
         return bound
 
@@ -195,7 +196,7 @@ def test_a_foreseen_cut_develops_the_generated_gear_at_once(monkeypatch):
     assert kept.report.gear.settings.process == "Generate"
     assert kept.gear_process_text.startswith(
         "Gear process (auto): generated. The Formate gear's development was stopped at its "
-        "static capacity, its local pitting capacity at most 156.6 N m, below 0.9 of 0.5 of "
+        "static capacity, its local pitting capacity about 156.6 N m, below 0.9 of 0.5 of "
         "its rated 361.8 N m")
     assert "does not fail at 371.2 N m; kept the generated gear" in kept.gear_process_text
     assert len(lines) == 2
@@ -259,3 +260,51 @@ def test_the_basic_data_of_the_14x36_is_a_pair_auto_generates():
 
     basic = load_basic(UNSEEN / "spiral_bevel_14x36_s70.toml")
     assert gear_processes(basic) == ("Formate", "Generate")
+
+
+def _power_law_analysis(monkeypatch, b: float, scale: float, s_min: float = 1.0):
+    """The bound's analysis replaced by a bearing whose S_H,loc follows the power law
+    ``scale`` · T^(−b) exactly at whatever torques it is given."""
+    monkeypatch.setattr("contact.pipeline.run_analysis", lambda case, torques, **k: torques)
+    monkeypatch.setattr(development_root, "pitting_safety", lambda torques: (
+        scale * np.asarray(torques, dtype=float) ** -b, s_min, "pinion"))
+
+
+def test_the_bound_s_exponent_measured_from_two_torques_is_the_power_law_s(monkeypatch):
+    """``pitting_capacity_bound(..., measured=True)`` (the Formate foresight's, branch
+    cut85): b of S_H,loc ∝ T^(−b) measured between the analysis's light and design torque
+    equals a stand-in bearing's own power law (b 0.34, the 13x41 at Σ 62°'s, scaled so
+    that S_H,loc is 0.739 at its rated 217.6 N m), and the bound is the torque at which
+    that law reaches S_Hmin, solved independently: (scale / S_Hmin)^(1/b). Tolerance
+    1e-9 relative: the same law evaluated, only rounding between the two. Without
+    ``measured`` the bound keeps the line contact's b = 1/2: 217.6 x 0.739^2 = 118.8 N m,
+    above the stop at 0.9 x 0.5 x 217.6 = 97.9 N m (not foreseen, Round 25), with b 0.34
+    89.4 N m below it (foreseen). A measured b above 1/2 is taken as 1/2 (the bound never
+    above the Hertz one), below 0.2 as 0.2; unmeasurable (equal torques, a NaN safety):
+    1/2."""
+    rated, b, light = 217.6, 0.34, 0.15 * 217.6
+    scale = 0.739 * rated ** b
+    _power_law_analysis(monkeypatch, b, scale)
+    s_light, s = scale * light ** -b, scale * rated ** -b
+    assert development_root.measured_pitting_exponent(light, s_light, rated, s) == (
+        pytest.approx(b, rel=1e-12))
+    measured = development_root.pitting_capacity_bound(object(), [light, rated], measured=True)
+    assert measured == pytest.approx((scale / 1.0) ** (1.0 / b), rel=1e-9)
+    assert measured == pytest.approx(89.4, abs=0.05)
+    half = development_root.pitting_capacity_bound(object(), [light, rated])
+    assert half == pytest.approx(rated * 0.739 ** 2, rel=1e-9)  # 118.8 N m
+    assert cut_foreseen(measured, rated) and not cut_foreseen(half, rated)
+    # the range: above 1/2 the Hertz bound, below 0.2 at 0.2, unmeasurable 1/2
+    _power_law_analysis(monkeypatch, 0.7, 0.739 * rated ** 0.7)
+    assert development_root.pitting_capacity_bound(object(), [light, rated], measured=True) \
+        == pytest.approx(rated * 0.739 ** 2, rel=1e-9)
+    _power_law_analysis(monkeypatch, 0.1, 0.739 * rated ** 0.1)
+    assert development_root.pitting_capacity_bound(object(), [light, rated], measured=True) \
+        == pytest.approx(rated * 0.739 ** 5, rel=1e-9)
+    exponent = development_root.measured_pitting_exponent
+    assert exponent(rated, 0.9, rated, 0.739) == 0.5
+    assert exponent(light, math.nan, rated, 0.739) == 0.5
+    # S_H,loc at or above S_Hmin at the design torque: no bound, whatever b
+    _power_law_analysis(monkeypatch, b, 1.02 * rated ** b)
+    assert development_root.pitting_capacity_bound(object(), [light, rated],
+                                                   measured=True) == math.inf

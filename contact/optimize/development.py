@@ -1111,23 +1111,24 @@ def _cut_foreseen(case: Case | None, setup: dict[str, Any], rated: float,
     """Raise :class:`~contact.optimize.development_process.CutForeseen` where the upper
     estimate of the chosen drive design's local pitting capacity
     (:func:`contact.optimize.development_root.pitting_capacity_bound`, one analysis at
-    the development's torques ``setup["torques"]`` [N·m], no FE) foresees its design
-    torque cut below half of ``rated`` [N·m]
-    (:func:`contact.optimize.development_process.cut_foreseen`); the bound logged either
-    way (issue 71/75: the spiral bevel 14x36 at Σ 70°'s Formate gear, docs/synthesis.md)."""
+    the development's torques ``setup["torques"]`` [N·m], no FE; its exponent measured
+    between those two torques, branch cut85) foresees its design torque cut below half of
+    ``rated`` [N·m] (:func:`contact.optimize.development_process.cut_foreseen`); the bound
+    logged either way (issue 71/75: the spiral bevel 14x36 at Σ 70°'s Formate gear,
+    docs/synthesis.md; the 13x41 at Σ 62°'s, docs/own_gear_set.md)."""
     from contact.optimize.development_process import CutForeseen, cut_foreseen
     from contact.optimize.development_root import pitting_capacity_bound
 
     if case is None:
         return
     torque = float(setup["torques"][1])
-    bound = pitting_capacity_bound(case, setup["torques"])
+    bound = pitting_capacity_bound(case, setup["torques"], measured=True)
     log.info("development: Formate local pitting bound %.1f N m at %.1f N m (rated %.1f N m)",
              bound, torque, rated)
     if cut_foreseen(bound, rated):
-        say(f"  local pitting capacity at most {plain_number(bound)} N m (S_H,loc at "
-            f"{plain_number(torque)} N m), below half the rated {plain_number(rated)} N m "
-            "with the margin: a design torque cut foreseen, stopped")
+        say(f"  local pitting capacity about {plain_number(bound)} N m (S_H,loc at "
+            f"{plain_number(torque)} N m and its exponent measured), below half the rated "
+            f"{plain_number(rated)} N m with the margin: a design torque cut foreseen, stopped")
         raise CutForeseen(bound, rated)
 
 

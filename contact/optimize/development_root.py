@@ -878,15 +878,56 @@ def _exponent(t1: float, s1: float, t2: float, s2: float, default: float = 1.0,
 #: under load give less, hence a lower capacity than the bound)
 BOUND_PITTING_EXPONENT = 0.5
 
+#: [1] the range of the exponent b :func:`measured_pitting_exponent` measures on a bearing:
+#: at most the line contact's :data:`BOUND_PITTING_EXPONENT` (a bearing's bound is never
+#: above the Hertz one), at least the low end of the capacity step's pitting exponent
+#: (:data:`CRITERIA`); measured between the light and the design torque on the eight
+#: Formate bearings that set it: 0.268-0.467 (docs/own_gear_set.md, "The Formate gear's
+#: cut foreseen with the bearing's own exponent")
+MEASURED_PITTING_EXPONENT = (0.2, BOUND_PITTING_EXPONENT)
 
-def pitting_capacity_bound(case, torques: list[float]) -> float:
+
+def measured_pitting_exponent(light_torque: float, light_safety: float, torque: float,
+                              safety: float) -> float:
+    """[1] The exponent b of S_H,loc ∝ T^(−b) between two torques one analysis of a
+    bearing took, within :data:`MEASURED_PITTING_EXPONENT`.
+
+    Parameters
+    ----------
+    light_torque, torque : float — [N·m]
+        The analysis's light and design torque (any two distinct positive torques).
+    light_safety, safety : float — [1]
+        S_H,loc at each (:func:`pitting_safety`).
+
+    Returns
+    -------
+    float
+        b = ln(S_light / S) / ln(T / T_light), bounded to [0.2, 0.5];
+        :data:`BOUND_PITTING_EXPONENT` where it cannot be measured (equal torques, a
+        safety not finite or not positive).
+
+    Notes
+    -----
+    Source: the power law the capacity steps take (:func:`root_capacity`, b measured
+    between the light and the design torque); issue 71/75, branch cut85: the line
+    contact's b = 1/2 left the 13x41 at Σ 62°'s Formate bound at 118.9 N·m against its
+    final 86.6 N·m; b 0.338 measured gives 89.0 N·m.
+    """
+    low, high = MEASURED_PITTING_EXPONENT
+    return _exponent(float(light_torque), float(light_safety), float(torque),
+                     float(safety), BOUND_PITTING_EXPONENT, low, high)
+
+
+def pitting_capacity_bound(case, torques: list[float], measured: bool = False) -> float:
     """[N·m] An upper estimate of the drive flank's local pitting capacity of ``case`` from
     one analysis at ``torques`` (light, design [N·m]) without the FE root stress (no FE
     model built): T · (S_H,loc / S_Hmin)^(1/b) with b = :data:`BOUND_PITTING_EXPONENT`
-    where S_H,loc at the design torque T is below S_Hmin (:func:`pitting_safety`), else
-    inf; inf where the analysis fails (logged). :func:`root_capacity` lowers the design
-    torque to at most its own estimate with b measured on the bearing (≤ 1, a lower
-    capacity for b < 1/2) and never raises it above the torque it checked.
+    (``measured``: b measured between the analysis's two torques,
+    :func:`measured_pitting_exponent`, at most that) where S_H,loc at the design torque T
+    is below S_Hmin (:func:`pitting_safety`), else inf; inf where the analysis fails
+    (logged). :func:`root_capacity` lowers the design torque to at most its own estimate
+    with b measured on the bearing (≤ 1, a lower capacity for b < 1/2) and never raises it
+    above the torque it checked.
 
     Why: a second gear process's development (``outclassed_below``,
     :func:`contact.optimize.development_process.outclassing_torque`) stops here before its
@@ -894,7 +935,10 @@ def pitting_capacity_bound(case, torques: list[float]) -> float:
     one's design torque. Measured on the spiral bevel 13x37 at Σ 60° of
     benchmarks/data/unseen_designs (2026-11-26): its generated gear's drive design, S_H,loc
     0.68 at its static capacity 209.6 N m (bound 96.9 N m), ended at 18 N m after a coast
-    development and an FE build (~70 s of CPU), below the Formate design's 110.4 N m."""
+    development and an FE build (~70 s of CPU), below the Formate design's 110.4 N m. The
+    measured exponent is the Formate foresight's
+    (:func:`contact.optimize.development_process.cut_foreseen`, branch cut85): an estimate
+    of where the development ends rather than a bound above it."""
     from contact.chain import AnalysisChain
     from contact.optimize.development import CHECK_LTCA
     from contact.pipeline import run_analysis
@@ -909,7 +953,13 @@ def pitting_capacity_bound(case, torques: list[float]) -> float:
         raise_if_interrupted(exc)
         log.info("development: no local pitting bound: %s", exc)
         return math.inf
-    s = float(np.asarray(safety)[-1])
+    safeties = np.asarray(safety, dtype=float)
+    s = float(safeties[-1])
+    b = BOUND_PITTING_EXPONENT
+    if measured:
+        b = measured_pitting_exponent(torques[0], float(safeties[0]), torques[-1], s)
+    log.info("development: S_H,loc %.4f / %.4f at %.1f / %.1f N m (S_Hmin %g), b %.3f",
+             float(safeties[0]), s, float(torques[0]), float(torques[-1]), s_min, b)
     if not (math.isfinite(s) and s > 0.0 and s_min > 0.0) or s >= s_min:
         return math.inf
-    return float(torques[1]) * (s / s_min) ** (1.0 / BOUND_PITTING_EXPONENT)
+    return float(torques[-1]) * (s / s_min) ** (1.0 / b)
