@@ -35,7 +35,6 @@ from contact.optimize.development_check import (
     checked_long,
 )
 from contact.optimize.development_coast import CoastCapacity, CoastCheck, coast_capacity
-from contact.optimize.development_coast_budget import extended_coast_budget, issue71_misses
 from contact.optimize.development_evaluate import (
     CHECK_LTCA,
     KeptTeeth,
@@ -512,20 +511,14 @@ def coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
     def basic_of(values: dict[str, float]) -> BasicDesign:
         return with_flank_options(developed, side, values)
 
-    def searched(budget: int) -> DevelopmentEvaluation | None:
-        """The search on ``budget`` designs, its best through the check's steps; None
-        where no design was synthesised. Designs analysed before (a first search's, on
-        the extension) are the evaluator's memo's: not analysed or counted again."""
-        evaluate.n_max = budget  # type: ignore[attr-defined]  (the budget its lines name)
-        if not search_flank(evaluate, evals, basic_of, make, targets, start, developed,
-                            budget, COAST_BEARING_DESIGNS):
-            return None
-
+    chosen = synthesised
+    if search_flank(evaluate, evals, basic_of, make, targets, start, developed, n_max,
+                    COAST_BEARING_DESIGNS):
         def placed(values):
             return synthesize(basic_of(values), memo=memo)[0]
 
         best = checked_best(evals, targets, setup, teeth, say, placed, side="coast",
-                            key_prefix=prefix, n_max=budget, slopes=evaluate.slopes)
+                            key_prefix=prefix, n_max=n_max, slopes=evaluate.slopes)
         # a pattern off its centre along the face: the coast flank's own M placed off the
         # mean cone distance (the drive flank's M stays where it is)
         best = checked_centre_u(best, targets, setup, teeth, say, placed, flank="coast",
@@ -541,32 +534,11 @@ def coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
         best = checked_length(best, targets, setup, teeth, say, placed,
                               level=start.get(TE_NAME, math.nan), flank="coast",
                               key_prefix=prefix)
-        return best
-
-    def kept(current: DevelopmentEvaluation,
-             best: DevelopmentEvaluation | None) -> DevelopmentEvaluation:
-        """``best`` where it is checked, not the flank as synthesised and ranks before
-        ``current`` (the check's one rank, check_rank: a coast LTE ltca run's verdict FAILs
-        (above 2 x 60 urad) last, then every target met, then the objective; issue 71),
-        else ``current``."""
-        if best is None or not best.checked:
-            return current
-        as_synthesised = all(round(v, 9) == round(start[k], 9)
-                             for k, v in best.values.items())
-        return best if not as_synthesised and ranks_better(current, best) else current
-
-    chosen = kept(synthesised, searched(n_max))
-    # the budget spent with an issue-71 criterion still failed: the search goes on once
-    # (development_coast_budget; the FH 13x30 at Sigma 115: light-load edge at 20 designs)
-    misses = issue71_misses(chosen.metrics)
-    more = extended_coast_budget(len(evals), n_max, misses)
-    if more > n_max:
-        log.info("development: coast search extended from %d to %d designs (%s)", n_max,
-                 more, ", ".join(misses))
-        say(f"development: coast flank {side}: its {n_max} designs spent with "
-            f"{', '.join(misses)} on the design chosen; searching on, at most {more} "
-            "designs (once)")
-        chosen = kept(chosen, searched(more))
+        as_synthesised = all(round(v, 9) == round(start[k], 9) for k, v in best.values.items())
+        # the check's one rank (check_rank): a coast LTE ltca run's verdict FAILs (above
+        # 2 x 60 urad) last, then every target met, then the objective (issue 71)
+        if best.checked and not as_synthesised and ranks_better(synthesised, best):
+            chosen = best
     if chosen is synthesised:
         say(f"development: coast flank {side}: no design of its search did better than "
             "as synthesised; kept")

@@ -422,9 +422,7 @@ def evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str, 
             seen[("relief", *key[1:])] = dataclasses.replace(e, objective=e.full[0],
                                                              shortfalls=e.full[1],
                                                              met=e.full[2])
-        # the budget its lines name: ``evaluate.n_max`` where the caller extended it
-        # (the coast search's one extension, development_coast_budget)
-        say(evaluation_line(e, getattr(evaluate, "n_max", n_max), label + stage))
+        say(evaluation_line(e, n_max, label + stage))
         if met:
             raise StageStop
         return e
@@ -432,7 +430,6 @@ def evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str, 
     evaluate.evals = evals  # type: ignore[attr-defined]  (read by _centre_height)
     evaluate.setup = setup  # type: ignore[attr-defined]
     evaluate.slopes = {}  # type: ignore[attr-defined]  (per bearing, _note_slope)
-    evaluate.n_max = n_max  # type: ignore[attr-defined]  (the budget its lines name)
     return evaluate
 
 
