@@ -12,11 +12,13 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
-import numpy as np
-import xarray as xr
+if TYPE_CHECKING:  # every module of contact.commands is imported by `ltca --help`: no
+    # numerical library at import (tests/test_startup.py)
+    import xarray as xr
 
-from geometry.case import Case
+    from geometry.case import Case
 
 __all__ = ["AppliedRemedy", "apply_remedy", "remedy_lines"]
 
@@ -77,6 +79,8 @@ class AppliedRemedy:
 
 def _rows(tree: xr.DataTree) -> dict[tuple[float, str], tuple[float, float]]:
     """(torque, member) → (σ_FE,max [MPa], S_F,FE [1]) of an analysis."""
+    import numpy as np
+
     from contact.study.verdict_checks import has_iso_rating, member_names, root_stress_safety
 
     lt = tree["ltca"].to_dataset()
@@ -95,10 +99,11 @@ def _rows(tree: xr.DataTree) -> dict[tuple[float, str], tuple[float, float]]:
 def _comparison(before: xr.DataTree, after: xr.DataTree) -> list[str]:
     """Per torque and member the FE root stress and S_F,FE as given and remedied, and per
     torque the LTE p-p and the flank peak pressure (what else the edge radius moves)."""
+    nan = float("nan")
     old, new = _rows(before), _rows(after)
     out = ["  FE root stress [MPa] and S_F,FE, as given -> with the edge radius:"]
     for (t, m), (s0, f0) in old.items():
-        s1, f1 = new.get((t, m), (np.nan, np.nan))
+        s1, f1 = new.get((t, m), (nan, nan))
         out.append(f"    {m} at {t:g} N m: {s0:.0f} -> {s1:.0f} MPa ({100 * (s1 / s0 - 1):+.1f} "
                    f"%), S_F,FE {f0:.3f} -> {f1:.3f}")
     lt0, lt1 = before["ltca"], after["ltca"]
