@@ -39,13 +39,15 @@ PREFIX = ("drive bearing", "coast")
 
 def _nine_by_37(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
                 flank="drive", calls=None, lte_root=30.0, flank_tip=1500.0,
-                tip_deep=2300.0):
+                tip_deep=2300.0, light_edge_root=0.0):
     """The 9x37's coast flank at its light and coast design torque: its gear tip 5156 MPa
     with the root relief as written (40 µm), ``tip_deep`` (2300) MPa at 60 µm; its pinion
     edge 4718 MPa with the tip relief 15 µm, 2200 MPa at 22.5 µm; the design torque's LTE
     ``lte_root`` µrad with the deeper root relief (30 as written) and its flank peak
-    ``flank_tip`` MPa with the deeper tip relief (1500 as written). ``calls`` records each
-    call's flank, pinion key and misalignment."""
+    ``flank_tip`` MPa with the deeper tip relief (1500 as written); the light torque's
+    ``p_max edge`` ``light_edge_root`` MPa with the deeper root relief (0 as written, its
+    edge share below the verdict's floor: 0 counted). ``calls`` records each call's flank,
+    pinion key and misalignment."""
     if calls is not None:
         calls.append((flank, tuple(pinion_key), misalignment))
     root, tip = float(case["root_relief"]), float(case["tip_relief"])
@@ -57,7 +59,11 @@ def _nine_by_37(case, torques, misalignment=None, options=None, teeth=None, pini
                  pressure_max_flank=[900.0, float(np.interp(tip, [15.0, 22.5],
                                                             [1500.0, flank_tip]))],
                  **{f"edge_peak_{k}": [0.0, p] for k, p in peaks.items()},
-                 edge_peak=[0.0, max(peaks.values())], edge_static_strength=[STATIC, STATIC])
+                 edge_peak=[0.0, max(peaks.values())], edge_static_strength=[STATIC, STATIC],
+                 pressure_max_edge=[float(np.interp(root, [40.0, 60.0],
+                                                    [0.0, light_edge_root])),
+                                    max(peaks.values())],
+                 edge_contact_share=[0.0, 0.02])
     return m, (0.0, 1.0, 0.0, 1.0, STATIC)
 
 
@@ -102,6 +108,30 @@ def test_a_relief_that_loses_a_coast_target_is_refused(monkeypatch):
                for s in lines)
     assert got.values == COAST | {"tip_relief": 22.5}
     assert dep.edges_above(got) == {"gear_tip": 5156.0}
+
+
+def test_a_relief_that_brings_edge_contact_at_the_light_torque_is_refused(monkeypatch):
+    """The deeper root relief clears the gear tip at the coast design torque but loads an
+    edge at the light torque at 519 MPa (the 13x30 at Σ 115°'s relief start 0.5 → 0.4,
+    written so on main: docs/synthesis.md, "The coast search's budget"), its share below
+    the verdict's floor: refused where the design kept has none there (said, with the
+    pressure); the pinion edge's tip relief, which leaves the light torque as it was, kept.
+    Exact: the rule compares the stand-in's numbers with 0."""
+    _, targets, setup, start = _start(monkeypatch, light_edge_root=519.0)
+    lines = []
+    got = dce.checked_coast_edge_peak(start, targets, setup, None, lines.append, dict,
+                                      bound=math.inf, key_prefix=PREFIX)
+    assert any("root_relief 60 um for the gear tip misses edge contact at the light "
+               "torque (p_max edge 519 MPa" in s for s in lines), lines
+    assert got.values == COAST | {"tip_relief": 22.5}
+    assert float(got.metrics["pressure_max_edge"][0]) == 0.0
+    # the same relief where the light torque's edge is the design's own (the kept design
+    # loaded an edge there already): not this rule's refusal
+    _, targets, setup, start = _start(monkeypatch, light_edge_root=519.0)
+    start.metrics["pressure_max_edge"][0] = 300.0
+    got = dce.checked_coast_edge_peak(start, targets, setup, None, lambda s: None, dict,
+                                      bound=math.inf, key_prefix=PREFIX)
+    assert got.values == COAST | {"root_relief": 60.0, "tip_relief": 22.5}
 
 
 def test_a_relief_that_lowers_the_peak_by_the_samplings_noise_is_refused(monkeypatch):

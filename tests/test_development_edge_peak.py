@@ -96,6 +96,32 @@ def test_a_longer_relief_where_the_deeper_one_does_not_clear(monkeypatch):
     assert dep.edges_above(got) == {}
 
 
+def test_a_relief_that_brings_edge_contact_at_the_light_torque_is_refused(monkeypatch):
+    """The deeper tip relief clears the pinion edge at the design torque but loads an edge
+    at the light torque (p_max edge 519 MPa, as the coast step's 13x30 at Σ 115° on main,
+    docs/synthesis.md "The coast search's budget"; the design kept: none there): refused,
+    said; a variant that leaves the light torque free is still tried. Exact comparisons
+    with the stand-in's numbers."""
+    def law(case, torques, *a, **kw):
+        m, grid = _ten_by_43(case, torques, *a, **kw)
+        deeper = float(case["tip_relief"]) > 15.0
+        m["pressure_max_edge"] = np.array([519.0 if deeper else 0.0, 2770.0])
+        m["edge_contact_share"] = np.array([0.0, 0.02])
+        return m, grid
+
+    seen, fake = seen_designs(law)
+    targets, setup, chosen = stand_in(monkeypatch, fake, [53.5, 357.0])
+    start = chosen(dict(WRITTEN))
+    seen.clear()
+    lines = []
+    got = dep.checked_edge_peak(start, targets, setup, None, lines.append, dict)
+    assert any("tip_relief 22.5 um for the pinion edge misses edge contact at the light "
+               "torque (p_max edge 519 MPa" in s for s in lines), lines
+    assert got.values["tip_relief"] == 15.0
+    assert float(got.metrics["pressure_max_edge"][0]) == 0.0
+    assert (22.5, 0.85) in [(s["tip_relief"], s["tip_relief_start"]) for s in seen]
+
+
 def test_a_relief_that_loses_a_target_is_refused(monkeypatch):
     """The deeper relief clears the edge but lifts the design torque's LTE past the 40 µrad
     target the design met, and the longer one the light torque's: neither kept, the

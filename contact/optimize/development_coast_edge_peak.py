@@ -16,7 +16,9 @@ the static strength falls, ending where no edge is above it) through the check's
 relief loop (:func:`~contact.optimize.development_relief_lte.checked_relief_variants`) on
 the coast flank: its designs placed and checked at ``ltca run``'s sampling on the coast
 flank at its own torques, the kept pinion tooth keyed under the drive's bearing and the
-coast's, the mounting tolerance not asked (the drive flank's, as every coast step's), and
+coast's, no edge contact brought to the light torque
+(:func:`~contact.optimize.development_light_edge.light_edge_lost`), the mounting tolerance
+not asked (the drive flank's, as every coast step's), and
 no target the design met lost — nor its capacity bound (:func:`coast_edge_bound`: the flank
 peak at which the coast capacity search's criteria, the static strength and the local
 pitting safety S_H,loc ≥ S_Hmin, hold at the coast design torque), through the drive step's
@@ -44,6 +46,7 @@ from contact.optimize.development_edge_peak import (
 )
 from contact.optimize.development_evaluate import KeptTeeth
 from contact.optimize.development_keep import SOFT_TARGETS
+from contact.optimize.development_light_edge import light_edge_lost
 from contact.optimize.development_range_lte import SAME_PEAK
 from contact.optimize.development_relief_lte import checked_relief_variants
 from contact.optimize.development_result import DevelopmentEvaluation
@@ -156,7 +159,10 @@ def checked_coast_edge_peak(best: DevelopmentEvaluation, targets: DevelopmentTar
         # Above 60 there it is refused where the design kept was within 60, or where it
         # is above the kept design's by more than SAME_PEAK (the LTE's stated round-off):
         # the FH 20x24 Σ 100° remedied's tip relief back to 15 um went 80.7 -> 94.4 urad
-        gone = pitting(kept, e)
+        # nor with edge contact at the light torque where the design kept had none (the
+        # 13x30 at Σ 115°: the relief start 0.5 -> 0.4 wrote 519 MPa on an edge at 40.8
+        # N m, its share below the verdict's floor; coastedge86)
+        gone = pitting(kept, e) + light_edge_lost(kept, e)
         if any(k not in SOFT_TARGETS for k in gone):  # refused whatever its LTE between
             # the torques (kept_why and verdict_lost both refuse on a target beyond the
             # soft ones): that range's analyses not run (issue 75, speed83: ≈ 0.2 s a

@@ -54,6 +54,7 @@ import numpy as np
 from contact.ltca.edges import EDGE_KINDS
 from contact.optimize.development_evaluate import KeptTeeth
 from contact.optimize.development_keep import lost_targets
+from contact.optimize.development_light_edge import light_edge_lost
 from contact.optimize.development_relief_lte import Relief, Sent, Try, checked_relief_variants
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import DevelopmentTargets
@@ -668,7 +669,9 @@ def checked_edge_peak(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         # no met target lost, the local pitting bound kept, and then the LTE not raised
         # above the verdict's limit for the edge (lte_lost: the 17x38 of round 21, 62 ->
         # 94 urad; its range analysed only where nothing else refuses the variant)
-        return pitting(kept, e) or lte(kept, e)
+        # nor edge contact brought to the light torque (light_edge_lost: the coast
+        # step's 13x30 at Σ 115°, 519 MPa at 40.8 N m; coastedge86)
+        return pitting(kept, e) or light_edge_lost(kept, e) or lte(kept, e)
 
     relief = dataclasses.replace(EDGE_PEAK, lost=lost)
     return checked_relief_variants(best, targets, setup, teeth, say, placed,

@@ -158,6 +158,25 @@ def ltca_metrics(ltca, case: Case) -> dict[str, np.ndarray]:
     out["lte_spread"] = lte_spread(ltca)
     out["tip_edge_share"] = np.asarray(edge_load_share(ltca, kinds=TIP_EDGE_KINDS), float)
     out.update(edge_peak_metrics(ltca))
+    out.update(light_edge_metrics(ltca))
+    return out
+
+
+def light_edge_metrics(ltca) -> dict[str, np.ndarray]:
+    """The edge contact of an ``/ltca`` dataset per torque, as ``ltca run`` prints and
+    judges it: ``pressure_max_edge`` [MPa] (its table's ``p_max edge``, 0 where no edge
+    segment is loaded) and ``edge_contact_share`` [1] (the ``edge_contact`` check's
+    counted share, :func:`contact.study.verdicts.edge_contact_share`); none where the
+    dataset has neither. The edge-peak steps' light-torque rule reads them
+    (:mod:`contact.optimize.development_light_edge`)."""
+    from contact.study.verdicts import edge_contact_share  # imports contact.ltca
+
+    out = {}
+    if "pressure_max_edge" in ltca:
+        out["pressure_max_edge"] = np.nan_to_num(
+            np.asarray(ltca["pressure_max_edge"].values, float))
+    if {"force", "moment_arm", "segment_kind"} <= set(ltca.variables):
+        out["edge_contact_share"] = np.asarray(edge_contact_share(ltca), float)
     return out
 
 

@@ -197,7 +197,8 @@ __all__ = ["CHECKS", "CHECK_ORDER", "DUTY_EFFICIENCY", "DUTY_MIN_SAFETY", "EDGE_
            "MICROPITTING_MIN", "PRINTED_NOT_JUDGED", "SCUFFING_MIN", "SEVERITIES",
            "STUDY_NOT_CHECKED_ATTR", "STUDY_NOT_JUDGED",
            "STUDY_PRINTED", "VH_SAME_POSITION", "VH_TARGET_TOLERANCE", "EdgePeaks", "Finding",
-           "Verdict", "duty_static_bins", "edge_peaks", "efficiency_not_judged",
+           "Verdict", "duty_static_bins", "edge_contact_share", "edge_peaks",
+           "efficiency_not_judged",
            "flank_static_strength",
            "not_checked_line", "quiet_transfer", "shown_above", "shown_below",
            "study_not_checked", "study_not_checked_attrs", "study_not_checked_text",
@@ -556,6 +557,42 @@ def _boundaries(lt: xr.Dataset) -> list[list[str]]:
                    if edge.any()]
         out.append(reached)
     return out
+
+
+def edge_contact_share(lt: xr.Dataset) -> np.ndarray:
+    """The share of the torque on edges the ``edge_contact`` check counts, per torque.
+
+    Parameters
+    ----------
+    lt : xarray.Dataset
+        ``/ltca`` with ``force``, ``moment_arm`` and ``segment_kind`` (a dataset without
+        them: no edge share, zeros).
+
+    Returns
+    -------
+    numpy.ndarray, shape (n_torques,) — [1]
+        The edges' total share of the torque (Σ F·arm over the edge kinds of
+        :data:`_EDGE_WORDS`, :func:`~contact.ltca.summary.edge_load_share`) where it is at
+        least :data:`EDGE_SHARE_MIN`, else 0 (the discretisation's load, no finding).
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    The check's one reading of "edge contact at a torque" by load (its other part, the
+    loaded pattern on the grid's outermost row, is the development's light-torque
+    clearance target); the development's light-torque edge rule reads it
+    (:mod:`contact.optimize.development_light_edge`). Source: seed §3 (edge contact as
+    load on the edge segments); :data:`EDGE_SHARE_MIN` of :mod:`contact.ltca.plausibility`.
+    """
+    n = int(lt.sizes["torque"])
+    total = np.zeros(n)
+    for s in _edge_shares(lt).values():
+        s = np.nan_to_num(np.asarray(s, float))
+        total += np.where(s > 0.0, s, 0.0)
+    return np.where(total >= EDGE_SHARE_MIN, total, 0.0)
 
 
 def _edge_contact(lt: xr.Dataset) -> list[Finding]:
