@@ -62,6 +62,7 @@ from contact.optimize.development_range_lte import (
     range_lte,
     range_peak,
     recorded_range,
+    verdict_lte_limit,
 )
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import VARIABLES, DevelopmentTargets
@@ -95,12 +96,6 @@ BLADE_STEP = -0.02
 
 _NAMES = ("profile_crowning", "tip_relief", "root_relief", "relief_start",
           "tip_relief_start", "blade_angle_change")
-
-
-def _limit() -> float:
-    from contact.study.verdicts import LTE_LIMIT  # imports contact.ltca
-
-    return float(LTE_LIMIT)
 
 
 def hollow_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
@@ -144,7 +139,7 @@ def hollow_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     if any(v > 0.0 for k, v in best.full[1].items() if k not in ("lte", "length")):
         return False
     peak = range_peak(range_lte(best, setup, teeth))[0]
-    return math.isfinite(peak) and peak > _limit()
+    return math.isfinite(peak) and peak > verdict_lte_limit()
 
 
 def hollow_designs(values: Mapping[str, float], targets: DevelopmentTargets
@@ -247,7 +242,7 @@ def checked_hollow_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     """
     if not hollow_runs_on(best, targets, setup, teeth):
         return best
-    limit = _limit()
+    limit = verdict_lte_limit()
     better = range_better(setup, teeth, limit)
     lost = range_lost(setup, teeth, limit)
     start = best

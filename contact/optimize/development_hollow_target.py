@@ -55,6 +55,7 @@ from contact.optimize.development_range_lte import (
     range_lte,
     range_peak,
     recorded_range,
+    verdict_lte_limit,
 )
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import VARIABLES, DevelopmentTargets
@@ -84,12 +85,6 @@ TIP_FACTOR = 1.5
 ROOT_DEEPER = 10.0
 
 _NAMES = ("profile_crowning", "tip_relief", "root_relief")
-
-
-def _limit() -> float:
-    from contact.study.verdicts import LTE_LIMIT  # imports contact.ltca
-
-    return float(LTE_LIMIT)
 
 
 def target_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
@@ -135,7 +130,7 @@ def target_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     if {k for k, v in best.full[1].items() if v > 0.0} != {"lte"}:
         return False
     peak = range_peak(range_lte(best, setup, teeth))[0]
-    return math.isfinite(peak) and peak <= _limit()
+    return math.isfinite(peak) and peak <= verdict_lte_limit()
 
 
 def target_designs(values: Mapping[str, float], targets: DevelopmentTargets
@@ -226,7 +221,7 @@ def checked_hollow_target(best: DevelopmentEvaluation, targets: DevelopmentTarge
     """
     if not target_runs_on(best, targets, setup, teeth):
         return best
-    limit = _limit()
+    limit = verdict_lte_limit()
 
     def lost(b: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:
         out = lost_targets(b, e)

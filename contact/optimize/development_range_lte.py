@@ -96,7 +96,23 @@ STAGE = "range lte"
 ELLIPSE_STEPS = (1, 2, 3)
 
 
-def _limit() -> float:
+def verdict_lte_limit() -> float:
+    """``ltca run``'s verdict limit on the LTE p-p [µrad], read when asked.
+
+    Returns
+    -------
+    float
+        :data:`contact.study.verdicts.LTE_LIMIT` [µrad].
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Imported inside (``contact.study.verdicts`` imports ``contact.ltca``). Source: issue 71
+    ("LTE p-p ≤ 60 µrad at every torque").
+    """
     from contact.study.verdicts import LTE_LIMIT  # imports contact.ltca
 
     return float(LTE_LIMIT)
@@ -178,7 +194,8 @@ def range_lte(e: DevelopmentEvaluation, setup: Mapping[str, Any], teeth: KeptTee
     try:
         alone = dict(zip(between, analyse(between), strict=True)) if between else {}
         values = [own[t] if t in own else alone[t] for t in judged]
-        torques, lte, _ = bisected(judged, values, _limit(), lambda t: analyse([t])[0])
+        torques, lte, _ = bisected(judged, values, verdict_lte_limit(),
+                                   lambda t: analyse([t])[0])
     except Exception as exc:  # reported, never fatal: the design is not judged between
         raise_if_interrupted(exc)
         log.info("development: the LTE between %.4g and %.4g N m of %s not analysed: %s",
@@ -301,7 +318,7 @@ def range_better(setup: Mapping[str, Any], teeth: KeptTeeth | None,
     (:func:`~contact.optimize.development_keep.verdict_lost`) does for the verdict's FAIL
     (issue 71).
     """
-    cap = _limit() if limit is None else float(limit)
+    cap = verdict_lte_limit() if limit is None else float(limit)
 
     def better(best: DevelopmentEvaluation, e: DevelopmentEvaluation) -> bool:
         old, _ = range_peak(range_lte(best, setup, teeth, flank=flank, key_prefix=key_prefix))
@@ -572,7 +589,7 @@ def checked_range_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     if found is None:
         return best
     recorded_range(setup, best, found)
-    limit = _limit()
+    limit = verdict_lte_limit()
     peak, at = range_peak(found)
     if not acts_between(peak, lte_ends(best), limit):  # NaN: not run
         return best
