@@ -360,8 +360,12 @@ def long_life_contact_allowable(rating):
     Source: ISO 10300-2:2014 cl. 6 (Method B1), σ_HP = σ_Hlim Z_NT Z_X Z_L Z_v Z_R Z_W Z_K
     Z_Hyp with Z_NT = 1 (ISO/TR 10300-30:2024 sample 1 checks the factors).
     """
-    return (rating["sigma_Hlim"] * rating["Z_X"] * rating["Z_L"] * rating["Z_speed"]
-            * rating["Z_R"] * rating["Z_W"] * rating["Z_K"] * rating["Z_Hyp"])
+    from contact.load_capacity.iso10300.allowable_factors import CONTACT_FACTORS
+
+    allowable = rating["sigma_Hlim"]
+    for name, _ in CONTACT_FACTORS:  # Z_X Z_L Z_v Z_R Z_W Z_K Z_Hyp, in this order
+        allowable = allowable * rating[name]
+    return allowable
 
 
 def pitting_allowable_note(case, torque: float) -> str:
