@@ -884,6 +884,97 @@ def test_a_pinion_the_gears_crown_gear_cannot_make_falls_back_to_its_own():
     assert ra == pytest.approx([0.806, 1.588], abs=2e-3)
 
 
+def _transverse_tooth_arc(member, blank) -> float:
+    """A case member's transverse arc thickness [mm] at its mean pitch point (R_m on the
+    pitch cone of the ISO 23509 member ``blank``): the angle about the member axis from its
+    convex to its concave flank (``flank_points``) through the tooth, times the radius. The
+    tooth lies against the convex flank's outward normal (its circumferential part); the
+    concave flank's normal points the other way, which the helper checks."""
+    z = -blank.t_z + blank.Rm * math.cos(blank.delta)
+    rho = blank.Rm * math.sin(blank.delta)
+    phi, side = {}, {}
+    for flank in ("concave", "convex"):
+        tool = member.flank(flank)
+        fp = flank_points(tool.blade, tool.machine, member.blank, member.hand, [z], [rho])
+        assert fp.ok[0]
+        phi[flank] = math.atan2(fp.r[0, 1], fp.r[0, 0])
+        side[flank] = float(fp.n[0] @ [-math.sin(phi[flank]), math.cos(phi[flank]), 0.0])
+    way = -math.copysign(1.0, side["convex"])  # from the convex flank into the tooth
+    assert way * side["concave"] > 0.5
+    return (way * (phi["concave"] - phi["convex"])) % (2.0 * math.pi / blank.z) * rho
+
+
+def test_pinion_on_its_own_crown_gear_has_the_iso_thickness_and_meets_the_gear_at_m():
+    """The 20x20 miter of tests/data/limits, whose pinion falls back to its own crown gear
+    ("process 3", the only bundled design found to take it after branch shell85; issue 71,
+    branch process3_86): the crown gear's cradle axis passes through the pinion's root
+    apex, 6.0 mm from its pitch apex (Δ1 = t_z1 − t_zR1), with R_a = cos θ_f1 / sin δ1 as
+    the start, the defect shell85 removed from the generated gear. On the pinion it is not
+    one: each flank is made to pass through its M with the gear's normal (the coast flank's
+    M turned for ISO's backlash j_mn), the local synthesis solves R_a and shifts the cradle
+    axis so that M is generated at roll 0 (``pinion_generate_tools``), so the tooth's
+    thickness is the gear's slot less the backlash, whatever line the start rolled.
+    Measured: the pinion's transverse arc thickness at the mean pitch point 8.864 mm
+    against ISO 23509's s_mn1 / cos β_m1 = 8.917 mm (−0.60 %; the gear's 7.891 against
+    7.844, +0.60 %); allowed 2 % (shell85's tolerance for the gear, the generated profile
+    not the rack's away from M). The tools reach M (point error ≤ 1e-9 mm, measured ≤ 3e-13;
+    shape operator ≤ 1e-8 1/mm, measured ≤ 3e-16), and each flank's ease-off at the grid
+    node nearest M (0.11 / 0.12 mm from it) is below 1 µm (measured 0.31 / 0.00 µm: the
+    ease-off grows from M only to second order). The cradle axis moved to the pitch apex
+    instead leaves the thickness alike (the 12x12 below) but this pinion's concave root
+    line ungenerated: the synthesis stops."""
+    from contact.utca.easeoff import ease_off
+
+    case, report = _miter()
+    assert "the pinion's own crown gear" in case.source
+    geom = report.blank
+    assert geom.pinion.t_z - geom.pinion.t_zR == pytest.approx(5.999, abs=1e-3)
+    for member, blank, iso in ((case.pinion, geom.pinion, 8.917),
+                               (case.gear, geom.gear, 7.844)):
+        assert blank.smn / math.cos(blank.beta_m) == pytest.approx(iso, abs=1e-3)
+        assert _transverse_tooth_arc(member, blank) == pytest.approx(iso, rel=0.02)
+    for flank in ("concave", "convex"):
+        tools = report.flanks[flank].tools
+        assert tools.point_error <= 1e-9 and tools.shape_error <= 1e-8
+    for flank in ("drive", "coast"):
+        eo = ease_off(case, flank=flank)
+        zg, pg = case.extra["synthesis"][eo.pinion_flank]["gear_projection_mm"]
+        near = np.where(eo.valid, np.hypot(eo.axial - zg, eo.radius - pg), np.inf)
+        k = np.unravel_index(np.argmin(near), near.shape)
+        assert near[k] < 0.5
+        assert 1e3 * eo.ease_off[k] < 1.0
+
+
+def test_pinion_thickness_does_not_depend_on_its_crown_gear(tmp_path):
+    """The 12x12 miter (benchmarks/data/unseen_designs) with a 6-in cutter, the drive path
+    at −60° and the relief raised to 140 / 40 µm (docs/own_gear_set.md, miter85's rows that
+    wrote with process 3 before branch shell85): synthesised with its pinion on the gear's
+    crown gear (process 2, what it takes now) and forced onto its own crown gear (process
+    3; pinion root apex 4.28 mm from its pitch apex). The pinion's transverse arc thickness
+    at the mean pitch point is ISO 23509's (12.940 mm) within 2 % on both (measured 12.915
+    and 12.915 mm, −0.19 %), and the two agree to 0.01 mm: the thickness is the local
+    synthesis's, M on each flank, not the crown gear's (issue 71, branch process3_86)."""
+    from geometry.synthesis.case_synthesis import _synthesize
+
+    text = (UNSEEN / "spiral_bevel_12x12_miter_b35.toml").read_text()
+    text = text.replace("rc0 = 44.45", "rc0 = 76.2") + (
+        "\n[synthesis]\npath_angle = -60.0\ntip_relief = 140.0\nroot_relief = 40.0\n")
+    path = tmp_path / "miter_12x12_rc76p2_p60.toml"
+    path.write_text(text)
+    basic = load_basic(path)
+    assert basic.design.rc0 == 76.2
+    geom = basic.blank()
+    iso = geom.pinion.smn / math.cos(geom.pinion.beta_m)
+    assert iso == pytest.approx(12.940, abs=1e-3)
+    arcs = []
+    for crown in ("gear", "own"):
+        case, _ = _synthesize(basic, process="Generate", pinion_crown=crown)
+        arcs.append(_transverse_tooth_arc(case.pinion, geom.pinion))
+    assert arcs[0] == pytest.approx(iso, rel=0.02)
+    assert arcs[1] == pytest.approx(iso, rel=0.02)
+    assert abs(arcs[1] - arcs[0]) < 0.01
+
+
 def test_the_pinion_crown_gears_are_tried_in_order_and_a_relief_error_is_raised(monkeypatch):
     """With the synthesis body replaced by a stub (no geometry): a generated gear's pinion
     is tried on the gear's crown gear, then on its own where that has no solution; a

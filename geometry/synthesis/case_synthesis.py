@@ -1113,7 +1113,16 @@ def _generating_tools(pair: _PairData, pf: str, gblade: Blade, gp: FlankPoint,
         # plane that touches the root cone along M's root generatrix, its point at the root
         # apex, ratio of roll cos θ_f1 / sin δ1, an untilted cutter (axis = cradle axis)
         # touching M, whose blade angle follows from M's normal; the local synthesis's
-        # mismatch by the same three unknowns as for a Formate gear
+        # mismatch by the same three unknowns as for a Formate gear. The root apex is only
+        # the start: unlike the generated gear's fixed machine (branch shell85, whose
+        # cradle through the root apex left the 12x12's gear 43 % thin), each pinion flank
+        # passes through its M (the coast M turned for ISO's backlash) and
+        # pinion_generate_tools solves R_a and shifts the cradle axis so that M is
+        # generated at roll 0, so the tooth thickness is the gear slot's less the
+        # backlash: 20x20 miter −0.60 % of ISO 23509's at the mean pitch point, the 12x12
+        # forced here −0.19 % as on the gear's crown gear; through the pitch apex the
+        # 20x20's concave root line is not generated (issue 71, branch process3_86,
+        # docs/own_gear_set.md "The generated gear's pinion on its own crown gear")
         pb = pair.pinion_blank
         psi = math.atan2(m_loc[1], m_loc[0])
         df1 = pb.root_angle
