@@ -14,6 +14,7 @@ from development_stand_ins import stand_in
 
 from contact.optimize.development_coast import (
     CLOSENESS,
+    EDGE_EXPONENT,
     PLASTIC_STEP,
     CoastCheck,
     coast_capacity,
@@ -1126,3 +1127,80 @@ def test_coast_start_is_the_coast_sides_iso_capacity_where_that_is_lower():
         dict(basic.rating) | {"coast_design_torque": 12000.0}))
     assert coast_flank.coast_start(case, own, 15830.0) == (
         12000.0, "its [rating] coast_design_torque")
+
+
+def _edged_flank(edge_at_272: float, a: float, edge_limit: bool):
+    """A synthetic coast flank whose contact curves hold (1345 MPa at 272.1 N·m, p ∝ T^(1/3))
+    and whose counted edge peaks p_e = edge_at_272 (T/272.1)^a — the FH 13×30 at Σ 115°'s
+    coast pinion edge, 4481 MPa at 272.1 N·m, a = 0.62 measured between 80 and 272.1 N·m
+    (docs/own_gear_set.md, "The FH 13×30's coast edges at its design torque")."""
+    seen = []
+
+    def analyse(t: float) -> CoastCheck:
+        seen.append(t)
+        return CoastCheck(t, 1345.0 * (t / 272.1) ** (1.0 / 3.0), LIMIT,
+                          edge_peak=edge_at_272 * (t / 272.1) ** a, edge_limit=edge_limit)
+    return analyse, seen
+
+
+def test_the_coast_edges_bound_the_coast_design_torque_only_where_asked():
+    """``[development] coast_edge_capacity``: the counted edges' peak judged against the
+    static strength as the flank peak is. Off (the default): the 13×30's coast flank holds
+    at 272.1 N·m, one analysis, its edge at 4481 MPa left to the verdict's attention. On:
+    the first step takes the line contact's a = 1/2 (272.1 (0.99 × 2400/4481)² = 76.5
+    N·m), the bracket's measured exponent (0.62, exact for this law) brings it up to
+    272.1 (0.99 × 2400/4481)^(1/0.62) = 97.8 N·m (97.7 written, rounded down), where the
+    law gives 0.99 × 2400 MPa (an identity of the law, to the 0.1 N·m round-down of each
+    step: abs 0.2 N·m)."""
+    analyse, seen = _edged_flank(4481.0, 0.62, edge_limit=False)
+    cap = coast_capacity(analyse, 272.1)
+    assert seen == [272.1] and cap.holds and not cap.lowered and cap.reason == ""
+    analyse, seen = _edged_flank(4481.0, 0.62, edge_limit=True)
+    cap = coast_capacity(analyse, 272.1)
+    exact = 272.1 * (0.99 * LIMIT / 4481.0) ** (1.0 / 0.62)
+    assert EDGE_EXPONENT == 0.5
+    assert seen[1] == pytest.approx(272.1 * (0.99 * LIMIT / 4481.0) ** 2, abs=0.1)
+    assert cap.holds and cap.torque == pytest.approx(exact, abs=0.2)
+    assert cap.final.edge_peak <= LIMIT
+    assert "edge peak pressure 4481 MPa above the static strength 2400 MPa" in cap.reason
+    assert f"edge peak pressure {cap.final.edge_peak:.0f} MPa within 2400 MPa" in cap.reason
+
+
+def test_an_edge_peak_not_known_or_within_the_static_strength_is_no_failure():
+    """NaN (no material named) and a peak at the strength fail nothing; the step is the
+    least of the failing criteria with the edge's among them."""
+    assert CoastCheck(300.0, 1500.0, LIMIT, edge_peak=math.nan, edge_limit=True).failures == {}
+    assert CoastCheck(300.0, 1500.0, LIMIT, edge_peak=LIMIT, edge_limit=True).failures == {}
+    c = CoastCheck(300.0, 3000.0, LIMIT, edge_peak=4800.0, edge_limit=True)
+    assert set(c.failures) == {"flank", "edge"}
+    t, why = coast_torque_step(c)
+    # edge: 300 (0.99/2)^2 = 73.5 N m below the flank's 300 (0.792)^3 = 149.0 N m
+    assert why == "edge" and t == pytest.approx(300.0 * (0.99 * LIMIT / 4800.0) ** 2, abs=0.1)
+
+
+def test_coast_edge_capacity_must_be_a_boolean():
+    from contact.optimize.development_targets import DevelopmentTargets, targets_from_table
+    from geometry.core.errors import InputError
+
+    assert DevelopmentTargets().coast_edge_capacity is False
+    assert targets_from_table({"coast_edge_capacity": True}).coast_edge_capacity is True
+    with pytest.raises(InputError, match=r"development\.coast_edge_capacity: must be true or"):
+        targets_from_table({"coast_edge_capacity": "yes"})
+
+
+def test_an_edge_that_vanishes_below_the_cap_is_bracketed_by_the_geometric_mean():
+    """An edge counted only above 90 N·m (the 13×30's coast pinion edge: 0 MPa counted at
+    86.5 N·m, 2518 MPa at 100): the first step lands where no edge is counted, which gives
+    no exponent; the bracket is then halved in log (as for plastic segments) instead of
+    ending at the first step: 272.1 → 76.5 (holds) → 144.2 (fails) → 105.0 (fails) →
+    89.6 N·m (holds), below the law's 272.1 (2400/4481)^(1/0.62) = 99.4 N·m, inside the
+    bracket left after REFINE_STEPS 3 (89.6–105.0)."""
+    def analyse(t: float) -> CoastCheck:
+        edge = 4481.0 * (t / 272.1) ** 0.62 if t > 90.0 else 0.0
+        return CoastCheck(t, 1345.0 * (t / 272.1) ** (1.0 / 3.0), LIMIT, edge_peak=edge,
+                          edge_limit=True)
+
+    cap = coast_capacity(analyse, 272.1)
+    true = 272.1 * (LIMIT / 4481.0) ** (1.0 / 0.62)
+    assert [c.torque for c in cap.checks] == [272.1, 76.5, 144.2, 105.0, 89.6]
+    assert cap.holds and cap.torque == 89.6 < true < 105.0

@@ -24,7 +24,7 @@ CoastCheck        one analysis of the coast flank at its light and design torque
 CoastCapacity     the coast design torque found, its checks and why it was lowered
 coast_torque_step the next torque of the search from one or two checks (pure)
 coast_capacity    the search on a case (an analysis callable: testable without an LTCA)
-COAST_STEPS, REFINE_STEPS, CLOSENESS, PLASTIC_STEP
+COAST_STEPS, REFINE_STEPS, CLOSENESS, PLASTIC_STEP, EDGE_EXPONENT
 """
 
 from __future__ import annotations
@@ -40,8 +40,8 @@ from contact.optimize.development_root import root_capacity_step
 from geometry.core.errors import raise_if_interrupted
 from geometry.core.text import plain_number
 
-__all__ = ["CLOSENESS", "COAST_STEPS", "PLASTIC_STEP", "REFINE_STEPS", "CoastCapacity",
-           "CoastCheck", "coast_capacity", "coast_torque_step"]
+__all__ = ["CLOSENESS", "COAST_STEPS", "EDGE_EXPONENT", "PLASTIC_STEP", "REFINE_STEPS",
+           "CoastCapacity", "CoastCheck", "coast_capacity", "coast_torque_step"]
 
 log = logging.getLogger(__name__)
 
@@ -57,6 +57,12 @@ CLOSENESS = 1.05
 #: segment is at its pressure limit, so its pressure says nothing of how far below the
 #: torque lies where it is elastic; 0.85 per step reaches 0.52 of the start in 4 steps
 PLASTIC_STEP = 0.85
+#: the exponent a of an edge's peak pressure p ∝ T^a for the first step of the ``edge``
+#: criterion [1]: 1/2, Hertz's line contact of the edge's rounding on the mating flank
+#: (Johnson 1985, eq. 4.45); measured on the FH 13×30 at Σ 115°'s coast pinion edge
+#: between 80 and 272.1 N m: 2097 → 4481 MPa, a = 0.62 (docs/own_gear_set.md, "The FH
+#: 13×30's coast edges at its design torque: relief or capacity")
+EDGE_EXPONENT = 0.5
 
 
 @dataclass(frozen=True)
@@ -89,6 +95,13 @@ class CoastCheck:
         (:func:`contact.ltca.root_stress.slot_bottom_notes`): its S_F,FE is then a lower
         bound, set by the model's radius (docs/fe.md, "The coast design torque of two
         spiral bevels"), and the root failure says so
+    edge_peak : float — [MPa] the largest edge peak pressure at ``torque`` that ``ltca
+        run``'s ``edge_pressure`` check counts (:func:`contact.study.verdicts.edge_peaks`:
+        edge kinds carrying at least ``EDGE_SHARE_MIN`` of the torque, below the edges'
+        contact-pressure limit; 0: none; NaN: not known)
+    edge_limit : bool — the edges are judged against the static strength ``limit`` too
+        (``[development] coast_edge_capacity``; default False: the edges are ``ltca
+        run``'s attention, not a criterion of the coast design torque)
     """
 
     torque: float
@@ -107,6 +120,8 @@ class CoastCheck:
     pitting_member: str = ""
     light_pitting_safety: float = math.nan
     root_at_rounding: bool = False
+    edge_peak: float = math.nan
+    edge_limit: bool = False
 
     @property
     def failures(self) -> dict[str, str]:
@@ -117,6 +132,9 @@ class CoastCheck:
         if math.isfinite(self.pressure) and self.pressure > self.limit:
             out["flank"] = (f"flank peak pressure {self.pressure:.0f} MPa above the static "
                             f"strength {self.limit:.0f} MPa")
+        if self.edge_limit and math.isfinite(self.edge_peak) and self.edge_peak > self.limit:
+            out["edge"] = (f"edge peak pressure {self.edge_peak:.0f} MPa above the static "
+                           f"strength {self.limit:.0f} MPa")
         if self.plastic > self.plastic_limit:
             out["plastic"] = (f"plastic segments carry {100 * self.plastic:.2g} % of the "
                               "torque")
@@ -191,7 +209,10 @@ def coast_torque_step(check: CoastCheck, previous: CoastCheck | None = None,
     * pitting: :func:`contact.optimize.development_root.root_capacity_step` on the local
       pitting safety S_H,loc ∝ T^(−b), b measured as for the root stress, else 1/3
       (Hertz's point contact), bounded to [0.2, 1];
-    * plastic: T × :data:`PLASTIC_STEP`.
+    * plastic: T × :data:`PLASTIC_STEP`;
+    * edge (``check.edge_limit`` only): T (m p_lim / p_edge)^(1/a), a =
+      :data:`EDGE_EXPONENT` for the first step (the edge rounding's Hertzian line
+      contact), then measured as for the flank.
 
     Rounded down (:func:`contact.optimize.development_result.floor_torque`: 0.1 N·m,
     two significant digits below 1 N·m).
@@ -205,12 +226,13 @@ def coast_torque_step(check: CoastCheck, previous: CoastCheck | None = None,
     Returns
     -------
     (torque [N·m], criterion) — criterion one of ``"flank"``, ``"root"``, ``"pitting"``,
-    ``"plastic"``.
+    ``"plastic"``, ``"edge"``.
 
     Notes
     -----
     Source: Hertz's p_max ∝ F^(1/3) for a point contact (Johnson, *Contact Mechanics*,
-    1985, eq. 4.23); the root stress linear in the load for fixed influence coefficients
+    1985, eq. 4.23), p_max ∝ F^(1/2) for a line contact (eq. 4.45); the root stress
+    linear in the load for fixed influence coefficients
     (:func:`contact.optimize.development_root.root_capacity_step`).
     """
     fails = check.failures
@@ -223,6 +245,11 @@ def coast_torque_step(check: CoastCheck, previous: CoastCheck | None = None,
              _exponent(previous.torque, previous.pressure, t, check.pressure, 1.0 / 3.0,
                        0.2, 1.0))
         steps["flank"] = t * (margin * check.limit / check.pressure) ** (1.0 / a)
+    if "edge" in fails:
+        a = (EDGE_EXPONENT if previous is None else
+             _exponent(previous.torque, previous.edge_peak, t, check.edge_peak,
+                       EDGE_EXPONENT, 0.2, 1.0))
+        steps["edge"] = t * (margin * check.limit / check.edge_peak) ** (1.0 / a)
     if "root" in fails:
         if previous is not None and math.isfinite(previous.root_safety):
             b = _exponent(previous.torque, previous.root_safety, t, check.root_safety, 1.0,
@@ -359,11 +386,16 @@ def coast_capacity(analyse: Callable[[float], CoastCheck], start: float,
 def _inside(bad: CoastCheck, ok: CoastCheck) -> tuple[float, float]:
     """The capacity estimated between ``ok`` (holds) and ``bad`` (fails) — the step from
     ``bad`` with the exponents measured between the two (:func:`coast_torque_step`;
-    plastic: their geometric mean) — and the next torque to check: that estimate kept a
-    tenth of the bracket's log-width from either end, rounded down (``floor_torque``)."""
+    plastic, or an edge that carries nothing counted at ``ok``'s torque: their geometric
+    mean) — and the next torque to check: that estimate kept a tenth of the bracket's
+    log-width from either end, rounded down (``floor_torque``).
+
+    An edge without a counted peak at ``ok`` gives no exponent: the 13×30 at Σ 115°'s
+    coast flank stopped at 86.5 N·m (the first step's estimate again) with its edges
+    within the static strength up to ≈ 94 N·m."""
     lo, hi = math.log(ok.torque), math.log(bad.torque)
     t, why = coast_torque_step(bad, ok)
-    if why == "plastic" or not t > 0:
+    if why == "plastic" or not t > 0 or (why == "edge" and not ok.edge_peak > 0):
         t = math.sqrt(ok.torque * bad.torque)
     x = min(max(math.log(t), lo + 0.1 * (hi - lo)), hi - 0.1 * (hi - lo))
     return t, floor_torque(math.exp(x))
@@ -374,6 +406,8 @@ def _within(c: CoastCheck) -> list[str]:
     out = [f"flank peak pressure {c.pressure:.0f} MPa within {c.limit:.0f} MPa",
            "no plastic segment" if c.plastic == 0.0 else
            f"plastic share {100 * c.plastic:.2g} % within {100 * c.plastic_limit:g} %"]
+    if c.edge_limit and math.isfinite(c.edge_peak):
+        out.append(f"edge peak pressure {c.edge_peak:.0f} MPa within {c.limit:.0f} MPa")
     if math.isfinite(c.root_safety) and math.isfinite(c.s_min):
         out.append(f"S_F,FE {c.root_safety:.2f} ({c.member}) >= S_Fmin {c.s_min:g}")
     if math.isfinite(c.pitting_safety) and math.isfinite(c.s_h_min):

@@ -204,12 +204,15 @@ def _as_run(case: Case, basic: BasicDesign, setup: dict[str, Any], coast: float)
 
 
 def _coast_check(case: Case, basic: BasicDesign, setup: dict[str, Any], torque: float,
-                 root_stress: bool, plastic_limit: float = 0.0) -> CoastCheck:
+                 root_stress: bool, plastic_limit: float = 0.0,
+                 edge_limit: bool = False) -> CoastCheck:
     """The coast flank of the written ``case`` analysed as ``ltca run --flank coast``
     analyses it with the coast design torque ``torque`` (:func:`_as_run`,
     :func:`contact.pipeline.flank_torques`; :data:`CHECK_LTCA`, the FE root stress where
     ``root_stress`` and the ISO 10300 rating of the coast side); ``plastic_limit``: the
-    plastic share allowed [1] (the development's ``max_plastic_share``)."""
+    plastic share allowed [1] (the development's ``max_plastic_share``); ``edge_limit``:
+    the counted edges' peak judged against the static strength too (the development's
+    ``coast_edge_capacity``)."""
     from contact.chain import AnalysisChain
     from contact.optimize.development_root import pitting_safety, root_safety
     from contact.pipeline import flank_torques, run_analysis
@@ -251,7 +254,9 @@ def _coast_check(case: Case, basic: BasicDesign, setup: dict[str, Any], torque: 
                       float(torques[1 - k]) if len(torques) == 2 else math.nan,
                       (ms, grid, tuple(float(t) for t in torques)), plastic_limit,
                       float(pit[k]), s_h_min, pit_member,
-                      float(pit[1 - k]) if len(torques) == 2 else math.nan, rounding)
+                      float(pit[1 - k]) if len(torques) == 2 else math.nan, rounding,
+                      float(ms["edge_peak"][k]) if "edge_peak" in ms else math.nan,
+                      edge_limit)
 
 
 def light_and_design(metrics: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
@@ -284,14 +289,15 @@ def coast_flank_capacity(case: Case, basic: BasicDesign, coast: _CoastOutcome,
     (:func:`coast_start`)."""
     def analyse(torque: float) -> CoastCheck:
         check = _coast_check(decided_case(case, setup), basic, setup, torque, root_stress,
-                             targets.max_plastic_share)
+                             targets.max_plastic_share, targets.coast_edge_capacity)
         if "root" in check.failures and refined_for_root(
                 decided_case(case, setup), setup,
                 f"coast design torque ({plain_number(torque)} N m)",
                 check.root_safety, check.s_min, say) is not None:
             # a coarse level's failing root check: the coast torque decided on the default
             check = _coast_check(decided_case(case, setup), basic, setup, torque,
-                                 root_stress, targets.max_plastic_share)
+                                 root_stress, targets.max_plastic_share,
+                                 targets.coast_edge_capacity)
         return check
 
     try:

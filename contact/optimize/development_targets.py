@@ -271,6 +271,13 @@ class DevelopmentTargets:
         bearings, 7 reliefs), in [0, 500]; 0 turns the coast development off (the coast
         flank is synthesised from its own prescriptions and checked once). The search runs
         only where the coast flank as synthesised misses a target.
+    coast_edge_capacity : bool
+        The coast design torque's search (:func:`~contact.optimize.development_coast.
+        coast_capacity`) also lowers it until no edge ``ltca run --flank coast`` counts
+        peaks above the flank's static strength (its ``edge_pressure`` attention);
+        default False: the edges are the edge-peak step's (a relief) and the verdict's
+        attention, not a bound of the coast design torque (docs/own_gear_set.md, "The FH
+        13×30's coast edges at its design torque: relief or capacity").
     variables : mapping name → (low, high) or None
         Developed synthesis inputs (``[synthesis]`` names and units); default None:
         :data:`VARIABLES` with the µm bounds of :data:`SIZE_SCALED_VARIABLES` ×
@@ -315,6 +322,7 @@ class DevelopmentTargets:
     mounting_tolerance: float | None = None
     max_evaluations: int = 36
     coast_max_evaluations: int = 20
+    coast_edge_capacity: bool = False
     variables: Mapping[str, tuple[float, float]] | None = None
     size_scale: float = 1.0
 
@@ -343,6 +351,9 @@ class DevelopmentTargets:
             chk(name, 0.0, 5.0, unit="mm")
         if self.variables is None:  # the defaults, µm bounds following the tooth size
             object.__setattr__(self, "variables", scaled_variables(self.size_scale))
+        if not isinstance(self.coast_edge_capacity, bool):
+            raise InputError(f"development.coast_edge_capacity: must be true or false, got "
+                             f"{self.coast_edge_capacity!r}")
         for name, low in (("max_evaluations", 1), ("coast_max_evaluations", 0)):
             n = getattr(self, name)
             if isinstance(n, bool) or not isinstance(n, int) or not low <= n <= 500:
