@@ -32,7 +32,12 @@ interpolated by the hat functions as everywhere between load points), ``rows8`` 
 ``rows6`` / ``rows5`` (8, 6 or 5 rows of unit loads along the profile instead of 11, the
 21 columns kept: wider hats), ``step2`` (rows 0, 1, 2, 4, 6, 8, 10 of the 11 solved, the full grid's
 hats: ``FEOptions(load_row_step=2)``), and combinations; ``coarse`` —
-``FEOptions.at_level("coarse")``, the same model as ``face8+depth/1.5+step2``.
+``FEOptions.at_level("coarse")``, the same model as ``face8+depth/1.5+step2``;
+``coarse10`` — ``FEOptions.at_level("coarse10")`` (``ltca synthesize``'s level), and on
+it ``coarse9`` (9 along the face), ``coarse10+loads15`` (15 columns of unit loads) and
+``coarse10+across4`` (4 across the tooth: the same model, the root size sets them;
+docs/performance.md, "A new design to its verdict: the FE level and the check's sampling
+measured as levers").
 Measured 2026-11-26 on six designs: docs/fe.md, "Mesh levels on six designs" (the runs of
 a design at several times share its cache directory: a level already built is read back,
 its CPU then the read's, and ``--table`` keeps the cold build's).
@@ -92,6 +97,10 @@ def levels() -> dict:
         "face8+step2": rep(d, face_divisions=8, load_row_step=2),
         # FEOptions.at_level("coarse"): face8+depth/1.5+step2 under its name
         "coarse": FEOptions.at_level("coarse"),
+        "coarse10": FEOptions.at_level("coarse10"),
+        "coarse9": FEOptions.at_level("coarse", face_divisions=9),
+        "coarse10+loads15": FEOptions.at_level("coarse10", load_nu=15),
+        "coarse10+across4": FEOptions.at_level("coarse10", across_divisions=4),
     }
 
 
