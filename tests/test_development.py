@@ -668,6 +668,35 @@ def test_the_first_line_says_the_contact_ratios(short_developments):
             "virtual cylindrical gears); varying ") in first
 
 
+def _same_case(fresh: str, written: str) -> None:
+    """Two case files the same: every field equal, the floats to 1e-9 relative (1e-9 mm or
+    deg absolute near 0). Why not bit for bit: a synthesis with the development's memo
+    places step 8's tip plane by a secant from the memo's last placement of the same
+    blade side (geometry.synthesis.case_synthesis._tip_on_root_cone), one without from
+    its own start; both converge to the placement's tolerance. Measured on the short
+    development below with the light-edge step's root relief 50 um (branch light86):
+    tip_plane_moved_mm -0.1856887405141466 fresh, -0.18568874051773263 written (2e-11
+    relative), the cutter's point radius 1.4e-14 relative apart."""
+    import tomllib
+
+    def walk(a, b, at):
+        assert type(a) is type(b), at
+        if isinstance(a, dict):
+            assert a.keys() == b.keys(), at
+            for k in a:
+                walk(a[k], b[k], f"{at}.{k}")
+        elif isinstance(a, list):
+            assert len(a) == len(b), at
+            for i, (x, y) in enumerate(zip(a, b, strict=True)):
+                walk(x, y, f"{at}[{i}]")
+        elif isinstance(a, float):
+            assert math.isclose(a, b, rel_tol=1e-9, abs_tol=1e-9), (at, a, b)
+        else:
+            assert a == b, at
+
+    walk(tomllib.loads(fresh), tomllib.loads(written), "case")
+
+
 def test_coast_development_off_keeps_the_coast_as_synthesised(short_developments):
     """coast_max_evaluations = 0 gives the behaviour before the coast development: no
     coast design, the coast flank's prescriptions the basic file's, the written case the
@@ -680,7 +709,7 @@ def test_coast_development_off_keeps_the_coast_as_synthesised(short_developments
     assert r.coast_status == "off" and r.coast_evaluations == ()
     assert not r.coast_best.full[2]  # the search would have run
     plain = with_flank_options(r.basic, r.basic.options.drive_flank, r.best.values)
-    assert synthesize(plain)[0].to_toml() == r.case.to_toml()
+    _same_case(synthesize(plain)[0].to_toml(), r.case.to_toml())
     coast = "convex" if r.basic.options.drive_flank == "concave" else "concave"
     given = load_basic(DESIGNS / "pc_hypoid_10x43.toml").options.flank(coast)
     assert r.basic.options.flank(coast) == given

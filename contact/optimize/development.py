@@ -172,6 +172,7 @@ from contact.optimize.development_evaluate import (  # noqa: F401
     static_strength,
 )
 from contact.optimize.development_hollow_target import checked_hollow_target
+from contact.optimize.development_light_edge_relief import checked_light_edge
 from contact.optimize.development_lte_capacity import lte_capacity
 from contact.optimize.development_pitting import checked_pitting
 from contact.optimize.development_range_lte import range_record
@@ -507,6 +508,10 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     # the end of the drive development: an edge whose peak at the design torque is above
     # the flank's static strength (ltca run's edge_pressure attention) given the relief
     # that takes the load off it, kept where no met target is lost (development_edge_peak)
+    # edge contact at the light torque, as ltca run reads it (p_max edge above 0): the
+    # relief of the edge the light-load pattern reaches, grown until it is clear, kept
+    # where no met target is lost (development_light_edge_relief)
+    best = checked_light_edge(best, targets, setup, teeth, say, placed)
     best = checked_edge_peak(best, targets, setup, teeth, say, placed)
     # the development's own LTE target alone missed: the hollow profile with the tip
     # relief deeper, on the design as it is written (after the edge-peak step's relief;
