@@ -367,7 +367,7 @@ def test_a_root_limited_coast_torque_is_decided_on_the_default_model(monkeypatch
         builds = counted_builds(monkeypatch)
         seen: list[str] = []
 
-        def check(case, basic, setup, torque, root_stress, plastic_limit=0.0):
+        def check(case, basic, setup, torque, root_stress, plastic_limit=0.0, edge_limit=False):
             level = fe_level_of(case)
             seen.append(level)
             return CoastCheck(torque, 1000.0, 2000.0, 0.0,
