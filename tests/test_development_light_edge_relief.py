@@ -69,10 +69,9 @@ def test_the_root_relief_grows_longer_until_the_light_torque_is_clear(monkeypatc
 def test_deeper_once_the_start_is_at_its_bound(monkeypatch):
     """A longer relief that does not clear the edge (down to the start's bound 0.2): the
     relief then grown deeper by the edge-peak step's factor 1.5 from 10.2 µm (15.3, 22.95
-    µm …) on the longest start; the first design clear (22.95 µm) raises an LTE already
-    above the verdict's 60 µrad by 17 % (76 → 88.75 µrad), more than :data:`LTE_GROWTH`
-    (5 %): refused, and the deeper ones with it (more LTE still); the design returned as
-    it was (the 14x36 at Σ 70°'s 70 → 84 µrad for a 0.068 % light edge, 2026-11-28)."""
+    µm) on the longest start, the first design clear (22.95 µm) kept; the design already
+    above the verdict's 60 µrad, its LTE's rise (76 → 88.75 µrad, below the FAIL level
+    120) does not refuse it."""
     law = functools.partial(_fourteen_by_35, clear_at=20.0, clear_start=-1.0)
     seen, fake = seen_designs(law)
     targets, setup, chosen = stand_in(monkeypatch, fake, [46.6, 310.8])
@@ -80,8 +79,9 @@ def test_deeper_once_the_start_is_at_its_bound(monkeypatch):
     seen.clear()
     got = dle.checked_light_edge(start, targets, setup, None, lambda s: None, dict)
     assert [(s["root_relief"], s["relief_start"]) for s in seen] == [
-        (10.2, 0.241), (10.2, 0.2), (15.3, 0.2), (22.95, 0.2), (34.42, 0.2), (51.63, 0.2)]
-    assert got is start
+        (10.2, 0.241), (10.2, 0.2), (15.3, 0.2), (22.95, 0.2)]
+    assert got.values == WRITTEN | {"root_relief": 22.95, "relief_start": 0.2}
+    assert float(got.metrics["lte_peak_to_peak"][1]) == pytest.approx(88.75)
 
 
 def test_nothing_clears_within_the_steps(monkeypatch):
@@ -142,10 +142,8 @@ def test_the_edge_is_the_row_the_light_pattern_reaches(over, kinds):
 
 
 def test_the_lte_rule():
-    """:func:`lte_limit_lost`: lost where the kept design is within the limit at every
-    torque and the variant is not (60 µrad: 60.0 within, 60.1 not), or where the kept
-    design is above it and the variant's largest LTE exceeds its by more than
-    :data:`LTE_GROWTH` (the bounds exact to the digit the arithmetic carries)."""
+    """:func:`lte_limit_lost`: lost only where the kept design is within the limit at
+    every torque and the variant is not (60 µrad: 60.0 within, 60.1 not)."""
     t = DevelopmentTargets()
 
     def design(lte):
@@ -155,12 +153,4 @@ def test_the_lte_rule():
     assert lost(design([30.0, 60.0]), design([30.0, 60.1])) == [
         "LTE p-p 60.1 urad (limit 60)"]
     assert lost(design([30.0, 60.0]), design([59.0, 60.0])) == []
-    # an LTE already above the limit may grow by LTE_GROWTH (5 %) at most: the 14x35 at
-    # Sigma 70's 75.7 -> 77.8 urad (+2.8 %) kept, the 14x36's 70 -> 84 urad (+20 %) lost
-    assert dle.LTE_GROWTH == 0.05
-    assert lost(design([42.5, 75.7]), design([47.7, 77.8])) == []
-    assert lost(design([36.0, 70.0]), design([49.0, 84.0])) == [
-        "LTE p-p 84.0 urad (limit 60, the design's own 70.0 urad not to grow by more "
-        "than 5 %)"]
-    assert lost(design([30.0, 61.0]), design([30.0, 64.05])) == []  # 5.0 %: kept
-    assert lost(design([30.0, 61.0]), design([30.0, 64.1])) != []   # 5.08 %: lost
+    assert lost(design([30.0, 61.0]), design([30.0, 100.0])) == []

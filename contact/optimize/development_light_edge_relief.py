@@ -52,8 +52,8 @@ from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import EDGE_ROW_SHORTFALL, DevelopmentTargets
 from geometry.case import Case
 
-__all__ = ["LEVER_ORDER", "LIGHT_EDGE_RELIEF", "LIGHT_EDGE_STEPS", "LTE_GROWTH", "ROW_EDGES",
-           "TIP_EDGES", "checked_light_edge", "light_edge_kinds", "light_edge_loaded",
+__all__ = ["LEVER_ORDER", "LIGHT_EDGE_RELIEF", "LIGHT_EDGE_STEPS", "ROW_EDGES", "TIP_EDGES",
+           "checked_light_edge", "light_edge_kinds", "light_edge_loaded",
            "light_edge_runs_on", "lte_limit_lost"]
 
 #: the edge kind (:data:`contact.ltca.edges.EDGE_KINDS`) a light-load pattern on each of
@@ -217,21 +217,10 @@ LIGHT_EDGE_RELIEF = Relief("light edge", light_edge_runs_on, _light_edge_designs
                            ends=lambda e: not light_edge_loaded(e))
 
 
-#: [1] how much a design's LTE p-p already above the verdict's limit may grow for the
-#: light edge cleared: the LTE's own reproducibility between the check's and ``ltca run``'s
-#: samplings (≈ 3 %, docs/performance.md "the check's sampling measured as levers"). The
-#: spiral bevel 14x35 at Σ 70° cleared its light edge at 75.7 → 77.8 µrad (+2.8 %, kept);
-#: the 14x36 at Σ 70° at 70 → 84 µrad (+20 %) for a 0.068 % light edge (now refused;
-#: docs/own_gear_set.md, "Two FM generated-gear designs re-measured on the corrected gear")
-LTE_GROWTH = 0.05
-
-
 def lte_limit_lost(limit: float) -> Callable[[DevelopmentEvaluation, DevelopmentEvaluation],
                                              list[str]]:
     """The step's LTE rule: a variant's LTE p-p above ``limit`` at a torque of the check
-    where the design kept is within it at every one is lost; where the design kept is
-    already above ``limit``, a variant whose largest LTE p-p exceeds the design's by more
-    than :data:`LTE_GROWTH` is lost.
+    where the design kept is within it at every one is lost.
 
     Parameters
     ----------
@@ -251,9 +240,7 @@ def lte_limit_lost(limit: float) -> Callable[[DevelopmentEvaluation, Development
     -----
     Issue 71's Done-when asks both: no edge at the light torque and the LTE p-p within
     60 µrad at every torque. Where the design already misses the LTE, the edge is the
-    criterion left to gain — but not for an LTE made worse beyond its reproducibility
-(:data:`LTE_GROWTH`): a light edge of a few hundredths of a percent of the torque is not
-worth a louder mesh at every torque —, and the LTE's FAIL level (2 × 60 µrad) is the keep rule's own
+    criterion left to gain, and the LTE's FAIL level (2 × 60 µrad) is the keep rule's own
     (:func:`~contact.optimize.development_keep.verdict_lost`). Source: issue 71.
     """
     def lost(kept: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:
@@ -261,10 +248,6 @@ worth a louder mesh at every torque —, and the LTE's FAIL level (2 × 60 µrad
         new = np.asarray(e.metrics["lte_peak_to_peak"], float)
         if np.all(was <= limit) and not np.all(new <= limit):
             return [f"LTE p-p {float(np.nanmax(new)):.1f} urad (limit {limit:.0f})"]
-        top, now = float(np.nanmax(was)), float(np.nanmax(new))
-        if top > limit and now > top * (1.0 + LTE_GROWTH):
-            return [f"LTE p-p {now:.1f} urad (limit {limit:.0f}, the design's own "
-                    f"{top:.1f} urad not to grow by more than {100 * LTE_GROWTH:g} %)"]
         return []
 
     return lost
