@@ -56,12 +56,11 @@ from typing import Any
 from contact.optimize.development_evaluate import KeptTeeth
 from contact.optimize.development_keep import kept_why
 from contact.optimize.development_range_lte import (
+    kept_range_said,
     range_better,
-    range_curve,
     range_lost,
     range_lte,
     range_peak,
-    recorded_range,
     verdict_lte_limit,
 )
 from contact.optimize.development_result import DevelopmentEvaluation
@@ -259,10 +258,5 @@ def checked_hollow_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
             best = e
             if range_peak(range_lte(best, setup, teeth))[0] <= limit:
                 break
-    if best is not start:
-        found = range_lte(best, setup, teeth)
-        if found is not None:
-            recorded_range(setup, best, found)
-            say(f"  design {best.index + 1} kept with the hollow profile: "
-                f"{range_curve(found)}")
+    kept_range_said(setup, start, best, teeth, say, "the hollow profile")
     return best

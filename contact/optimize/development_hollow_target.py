@@ -51,10 +51,9 @@ from contact.optimize.development_edge_peak import edge_excess, edge_gain
 from contact.optimize.development_evaluate import KeptTeeth
 from contact.optimize.development_keep import kept_why, lost_targets
 from contact.optimize.development_range_lte import (
-    range_curve,
+    kept_range_said,
     range_lte,
     range_peak,
-    recorded_range,
     verdict_lte_limit,
 )
 from contact.optimize.development_result import DevelopmentEvaluation
@@ -245,10 +244,5 @@ def checked_hollow_target(best: DevelopmentEvaluation, targets: DevelopmentTarge
             best = e
             if bool(best.full[2]):
                 break
-    if best is not start:
-        found = range_lte(best, setup, teeth)
-        if found is not None:
-            recorded_range(setup, best, found)
-            say(f"  design {best.index + 1} kept with the hollow profile for the LTE "
-                f"target: {range_curve(found)}")
+    kept_range_said(setup, start, best, teeth, say, "the hollow profile for the LTE target")
     return best

@@ -59,8 +59,9 @@ from geometry.core.errors import raise_if_interrupted
 from geometry.core.text import plain_number
 
 __all__ = ["ELLIPSE_STEPS", "RANGE_KEY", "SAME_PEAK", "STAGE", "acts_between",
-           "checked_range_lte", "peak_better", "range_better", "range_curve", "range_lost",
-           "range_lte", "range_peak", "range_record", "recorded_range"]
+           "checked_range_lte", "kept_range_said", "peak_better", "range_better",
+           "range_curve", "range_lost", "range_lte", "range_peak", "range_record",
+           "recorded_range"]
 
 log = logging.getLogger("contact.optimize.development")
 
@@ -433,6 +434,43 @@ def recorded_range(setup: Mapping[str, Any], e: DevelopmentEvaluation,
     setup.setdefault(RANGE_KEY, {})[key] = {"torques": found[0], "lte": found[1],
                                             "peak": peak, "at": at,
                                             "values": dict(e.values)}
+
+
+def kept_range_said(setup: Mapping[str, Any], start: DevelopmentEvaluation,
+                    best: DevelopmentEvaluation, teeth: KeptTeeth | None,
+                    say: Callable[[str], None], how: str) -> None:
+    """The end of a check step that judges the LTE over the range: where it kept a design
+    (``best`` is not ``start``), that design's LTE over the range recorded
+    (:func:`recorded_range`) and said, ``"  design <n> kept with <how>: <curve>"``
+    (:func:`range_curve`); nothing where none was kept or the range was not analysed.
+
+    Parameters
+    ----------
+    setup : mapping
+        The development's state (``torques`` [N·m]; the record is kept in it).
+    start, best : DevelopmentEvaluation
+        The design the step started from and the one it ends with.
+    teeth : KeptTeeth or None
+        The kept shell teeth.
+    say : callable
+        The development's printer.
+    how : str
+        What the kept design was given (the step's words).
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: ``ltca run``'s ``lte_range`` step (:mod:`contact.ltca.lte_range`, issue 71).
+    """
+    if best is start:
+        return
+    found = range_lte(best, setup, teeth)
+    if found is not None:
+        recorded_range(setup, best, found)
+        say(f"  design {best.index + 1} kept with {how}: {range_curve(found)}")
 
 
 def range_curve(found: tuple[tuple[float, ...], tuple[float, ...]]) -> str:

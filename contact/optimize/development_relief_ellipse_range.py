@@ -51,12 +51,11 @@ from contact.optimize.development_load_lte import RELIEF_ELLIPSE_FRACTIONS, RELI
 from contact.optimize.development_matched_te import lte_ends
 from contact.optimize.development_range_lte import (
     acts_between,
+    kept_range_said,
     range_better,
-    range_curve,
     range_lost,
     range_lte,
     range_peak,
-    recorded_range,
 )
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import DevelopmentTargets
@@ -262,10 +261,6 @@ def checked_relief_ellipse_range(best: DevelopmentEvaluation, targets: Developme
             best = e
             if best.full[2] and range_peak(range_lte(best, setup, teeth))[0] <= limit:
                 break
-    if best is not start:
-        found = range_lte(best, setup, teeth)
-        if found is not None:
-            recorded_range(setup, best, found)
-            say(f"  design {best.index + 1} kept with the shallower root relief and the "
-                f"longer ellipse: {range_curve(found)}")
+    kept_range_said(setup, start, best, teeth, say,
+                    "the shallower root relief and the longer ellipse")
     return best
