@@ -104,6 +104,21 @@ def test_default_rating_table_is_valid_and_sourced():
         assert word in DEFAULT_RATING["source"]
 
 
+def test_default_rating_source_says_the_flank_roughness_the_rating_uses():
+    """The stated defaults give no flank_roughness, so the rating takes the case's Rq as
+    Rz = 6 √(2/π) Rq (contact.load_capacity.iso10300.rating.case_rating_inputs): the
+    source says so, not the former "flank/root Rz 8/16 um" (branch iso87: on the FH hypoid
+    10x41 a45 Rz 8 would have given an ISO capacity of 124.9 N m, not 141.1), and its
+    3.83 um at Rq 0.8 is what the rating uses (to the 0.01 um quoted)."""
+    from contact.load_capacity.iso10300.rating import RZ_PER_RQ
+
+    source = DEFAULT_RATING["source"]
+    assert "flank/root Rz 8/16" not in source
+    assert "[operating] roughness Rq as Rz = 6 sqrt(2/pi) Rq (3.83 um at Rq 0.8 um" in source
+    assert "flank_roughness" not in DEFAULT_RATING
+    assert RZ_PER_RQ * 0.8 == pytest.approx(3.83, abs=5e-3)
+
+
 def _basic_with_rating(tmp_path: Path, rating: dict | None) -> Path:
     text = BASIC.read_text(encoding="utf-8")
     if rating is not None:

@@ -103,8 +103,10 @@ DEFAULT_RATING: Mapping[str, Any] = MappingProxyType({
         "(gear), the grades of the TR's f_pt (sample 1: 12 and 26 um at its sizes); load "
         "cycles: long life (Z_NT = Y_NT = 1, the TR's samples); materials: both members "
         "the case's material (case-carburised steel, geometry/core/data/materials.toml) at "
-        "ISO 6336-5 quality MQ; pattern checked under a light test load, flank/root Rz "
-        "8/16 um, S_H,min 1.0, S_F,min 1.3 (RatingInputs' defaults, docs/rating.md)."),
+        "ISO 6336-5 quality MQ; flank Rz: the case's [operating] roughness Rq as Rz = "
+        "6 sqrt(2/pi) Rq (3.83 um at Rq 0.8 um; the rating's Z_R and the LTCA's film see "
+        "one roughness); pattern checked under a light test load, root Rz 16 um, "
+        "S_H,min 1.0, S_F,min 1.3 (RatingInputs' defaults, docs/rating.md)."),
 })
 
 _ADJUSTABLE = ("de2", "dm2", "b2", "rc0", "beta_m", "theta_a2", "theta_f2", "c_ham")
