@@ -279,7 +279,10 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
         µm amounts following the design's size (``size_scale``,
         :meth:`geometry.synthesis.basic_design.BasicDesign.size_scale`).
     progress : callable, optional
-        Called with one plain line per analysed design (the CLI prints them).
+        Called with one plain line per analysed design (the CLI prints them). Default:
+        the lines go to this module's logger at INFO (``logging.basicConfig(level=
+        logging.INFO)`` shows them; ``progress=print`` prints them), not dropped: a
+        development runs 30-120 s of CPU (issue 71, round 26d).
     synthesis_progress : optional
         The ``progress`` of the final synthesis of the developed design
         (:func:`geometry.synthesis.case_synthesis.synthesize`).
@@ -420,6 +423,7 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     # the FE level of the root-stress checks ``ltca synthesize`` uses where the basic
     # design names none, so that the API and the command develop the same design
     basic = with_synthesis_fe_level(basic)
+    progress = progress or log.info
     if apply_remedy or gear_fallback:
         return _wrapped(basic, apply_remedy, targets=targets, progress=progress,
                         synthesis_progress=synthesis_progress, root_stress=root_stress,
