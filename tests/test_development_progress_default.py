@@ -18,6 +18,7 @@ import pytest
 import contact
 import geometry
 from contact.optimize import development
+from geometry.core.errors import InputError
 
 DESIGNS = Path(__file__).resolve().parents[1] / "tests" / "data" / "designs"
 
@@ -45,3 +46,29 @@ def test_the_lines_reach_the_logger_or_the_callable(monkeypatch, caplog, given):
         assert logged == ["development: a first line"]
     else:
         assert seen == ["development: a first line"] and logged == []
+
+
+def test_a_basic_file_path_is_read_and_a_case_is_refused_naming_basic(monkeypatch):
+    """Round 26d: ``contact.develop("file.toml")`` and ``contact.develop(case)`` stopped
+    with ``AttributeError: ... has no attribute 'root_stress'``. A path is read as
+    ``ltca synthesize FILE`` reads it (the same BasicDesign as geometry.load_basic); a
+    case is refused naming the argument."""
+    got = []
+
+    def wrapped(basic, apply_remedy, **kw):
+        got.append(basic)
+        raise _Stop
+
+    monkeypatch.setattr(development, "_wrapped", wrapped)
+    path = DESIGNS / "spiral_bevel_13x39.toml"
+    for given in (path, str(path)):
+        with pytest.raises(_Stop):
+            contact.develop(given)
+    assert got[0].design == got[1].design == geometry.load_basic(path).design
+    case, _ = geometry.synthesize(geometry.load_basic(path))
+    with pytest.raises(InputError, match=r"^basic: must be a BasicDesign \(geometry\.load_"
+                                         r"basic\(FILE\)\) or a basic design file's path, got "
+                                         r"the analysis case 'spiral_bevel_13x39'"):
+        contact.develop(case)
+    with pytest.raises(InputError, match=r"^basic: .* got dict$"):
+        contact.develop({})
