@@ -74,6 +74,7 @@ __all__ = [
     "fillet_stress",
     "import_rexs",
     "influence_coefficients",
+    "iso10300_capacity",
     "iso10300_rating",
     "load_share_figure",
     "loaded_tca",
@@ -136,6 +137,7 @@ _LAZY = {
     # hide the subpackage)
     **dict.fromkeys(("OptimizeProblem", "develop", "DevelopmentTargets"), "contact.optimize"),
     "iso10300_rating": "contact.load_capacity.iso10300",
+    "iso10300_capacity": "contact.load_capacity.iso10300.capacity",
     **dict.fromkeys(("available_rating_methods", "rate_load_capacity", "register_rating_method",
                      "unregister_rating_method"), "contact.load_capacity.methods"),
     "scuffing_micropitting": "contact.load_capacity.scuffing_micropitting",

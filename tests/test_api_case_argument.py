@@ -24,6 +24,7 @@ RESOLVING = {
     "run_analysis": lambda c: contact.run_analysis(c, [250.0]),
     "rate_load_capacity": lambda c: contact.rate_load_capacity(c),
     "iso10300_rating": lambda c: contact.iso10300_rating(c),
+    "iso10300_capacity": lambda c: contact.iso10300_capacity(c),
     "sweep": lambda c: contact.sweep(c, delta_E=[0.0]),
     "sample": lambda c: contact.sample(c, {"delta_E": scipy.stats.norm(0.0, 0.01)}, 2),
     "vh_check": lambda c: contact.vh_check(c),

@@ -157,6 +157,30 @@ def test_scuffing_standard_below_its_minimum_is_said_beside_the_judged_one():
     assert not _found(v, "scuffing")  # the judged S_B passes
 
 
+def test_a_spiral_bevels_variant_with_the_standards_numbers_is_said_once():
+    """Issue 71, round 26d (branch api87): the FH spiral bevel 18x22 at Σ 60° (no offset)
+    listed the scuffing_standard finding twice, the second "with the hypoid's lengthwise
+    sliding" with the standard's numbers (S_B 1.12, 0.80 at the low end, equal to the
+    last digit in its /rating/flash_temperature). Equal numbers: one finding, saying the
+    variant gives the same; a hypoid's different numbers keep both (the test above)."""
+    sm = xr.Dataset({"scuffing_safety": ("torque", [2.54, 1.73])},
+                    coords={"torque": [163.9, 1093.0]})
+    flash = _flash([163.9, 1093.0], [[3.417, 1.117], [3.417, 1.117]],
+                   [[2.458, 0.8035], [2.458, 0.8035]], [[3.417, 1.117], [3.417, 1.117]])
+    tree = _tree({"/ltca": _ltca([163.9, 1093.0], [[1.0, 1.0], [1.0, 1.0]]),
+                  "/scuffing_micropitting": sm, "/rating": xr.Dataset(
+                      coords={"torque": [163.9, 1093.0]}),
+                  "/rating/flash_temperature": flash})
+    (f,) = _found(verdict(tree), "scuffing_standard")
+    assert f.reason.startswith("ISO/TS 6336-20 on the ISO 10300 virtual cylindrical gears "
+                               "(the standard) gives S_B 1.12 at 1093 N·m, but its uncertain "
+                               "constants")
+    assert ("put it down to 0.80, below 1; its lengthwise-sliding variant (not a standard) "
+            "gives the same numbers (no offset); the verdict judges the LTCA's S_B, 1.73"
+            ) in f.reason
+    assert "the hypoid's" not in f.reason
+
+
 def test_the_judged_scuffing_safety_is_named():
     sm = xr.Dataset({"scuffing_safety": ("torque", [0.9])}, coords={"torque": [300.0]})
     v = verdict(_tree({"/ltca": _ltca([300.0], [[1.0, 1.0]]),

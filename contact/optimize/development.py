@@ -111,6 +111,7 @@ import dataclasses
 import functools
 import logging
 import math
+import os
 import time
 from collections.abc import Callable
 from typing import Any
@@ -119,6 +120,7 @@ from typing import Any
 # replace (development_evaluate.analyse_design, development_coast_flank.coast_development):
 # those are called through their modules, and patched there
 from contact.optimize import development_coast_flank as coast_flank
+from contact.optimize.development_basic_arg import basic_design_of
 from contact.optimize.development_check import (
     PATH_STEPS,
     VERIFIED_DESIGNS,
@@ -259,7 +261,8 @@ def _wrapped(basic: BasicDesign, apply_remedy: bool, **kw: Any) -> DevelopmentRe
 
 
 @blas_threads()  # small dense matrices: one BLAS thread (geometry.core.blas)
-def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
+def develop(basic: BasicDesign | str | os.PathLike[str], *,
+            targets: DevelopmentTargets | None = None,
             progress: Callable[[str], None] | None = None,
             synthesis_progress: Any = None, root_stress: bool = True,
             gear_fallback: bool = True, outclassed_below: float = math.nan,
@@ -269,8 +272,10 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
 
     Parameters
     ----------
-    basic : BasicDesign
-        The design (its drive flank's ``[synthesis]`` prescriptions are the start where a
+    basic : BasicDesign, str or path-like
+        The design, or its basic design file's path (read as ``ltca synthesize FILE``
+        reads it; :func:`~contact.optimize.development_basic_arg.basic_design_of`). The
+        design (its drive flank's ``[synthesis]`` prescriptions are the start where a
         variable's bound allows, else the middle of the bound). Its root stress is checked
         on its ``[root_stress] fe_level``, else on the level ``ltca synthesize`` uses
         (:func:`~contact.optimize.development_written.with_synthesis_fe_level`).
@@ -279,7 +284,10 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
         µm amounts following the design's size (``size_scale``,
         :meth:`geometry.synthesis.basic_design.BasicDesign.size_scale`).
     progress : callable, optional
-        Called with one plain line per analysed design (the CLI prints them).
+        Called with one plain line per analysed design (the CLI prints them). Default:
+        the lines go to this module's logger at INFO (``logging.basicConfig(level=
+        logging.INFO)`` shows them; ``progress=print`` prints them), not dropped: a
+        development runs 30-120 s of CPU (issue 71, round 26d).
     synthesis_progress : optional
         The ``progress`` of the final synthesis of the developed design
         (:func:`geometry.synthesis.case_synthesis.synthesize`).
@@ -333,7 +341,8 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     Raises
     ------
     InputError
-        Bad targets, or no design could be synthesised and analysed (the reasons);
+        ``basic`` neither a BasicDesign nor a path (named), bad targets, or no design
+        could be synthesised and analysed (the reasons);
         ``apply_remedy`` where no contact ratio is below its limit (before any work) or
         no remedy passed its check (each refusal said).
     Outclassed
@@ -419,7 +428,8 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
 
     # the FE level of the root-stress checks ``ltca synthesize`` uses where the basic
     # design names none, so that the API and the command develop the same design
-    basic = with_synthesis_fe_level(basic)
+    basic = with_synthesis_fe_level(basic_design_of(basic))
+    progress = progress or log.info
     if apply_remedy or gear_fallback:
         return _wrapped(basic, apply_remedy, targets=targets, progress=progress,
                         synthesis_progress=synthesis_progress, root_stress=root_stress,

@@ -286,16 +286,20 @@ def _scuffing_standard(flash: xr.Dataset, judged: xr.Dataset | None) -> list:
         variants = [(str(v), flash.isel(variant=k)) for k, v in enumerate(labels)]
     else:
         variants = [(None, flash)]
+    numbers = {v: [_safeties(one, i) for i in range(one.sizes["torque"])]
+               for v, one in variants}
     for v, one in variants:
         what = _VARIANT_WORDS.get(v, "ISO/TS 6336-20 on the virtual cylindrical gears")
         for i, t in enumerate(one["torque"].values):
-            s = float(one["scuffing_safety"].values[i])
-            lo = (float(one["scuffing_safety_low"].values[i])
-                  if "scuffing_safety_low" in one else np.nan)
-            hi = (float(one["scuffing_safety_high"].values[i])
-                  if "scuffing_safety_high" in one else np.nan)
+            s, lo, hi = numbers[v][i]
             if not (s < SCUFFING_MIN or lo < SCUFFING_MIN):
                 continue
+            if v != "standard" and _same(numbers.get("standard"), i, (s, lo, hi)):
+                continue  # said once, on the standard's finding (no offset: no sliding)
+            same = ("; its lengthwise-sliding variant (not a standard) gives the same "
+                    "numbers (no offset)"
+                    if v == "standard" and _same(numbers.get("lengthwise_sliding"), i,
+                                                 (s, lo, hi)) else "")
             spread = (f" ({lo:.2f}–{hi:.2f} over its uncertain constants)"
                       if np.isfinite(lo) else "")
             if s < SCUFFING_MIN:
@@ -312,8 +316,28 @@ def _scuffing_standard(flash: xr.Dataset, judged: xr.Dataset | None) -> list:
                 if np.isfinite(sb):
                     beside = f"; the verdict judges the LTCA's S_B, {sb:.2f}"
             out.append(Finding("attention", "scuffing_standard",
-                               head + beside + " (docs/verdicts.md, Scuffing)"))
+                               head + same + beside + " (docs/verdicts.md, Scuffing)"))
     return out
+
+
+def _safeties(one: xr.Dataset, i: int) -> tuple[float, float, float]:
+    """(S_B, its low and high end) of one variant at the torque index ``i`` (NaN where
+    the dataset gives no range)."""
+    s = float(one["scuffing_safety"].values[i])
+    lo = float(one["scuffing_safety_low"].values[i]) if "scuffing_safety_low" in one else np.nan
+    hi = (float(one["scuffing_safety_high"].values[i]) if "scuffing_safety_high" in one
+          else np.nan)
+    return s, lo, hi
+
+
+def _same(numbers: list | None, i: int, these: tuple[float, float, float]) -> bool:
+    """Another variant's numbers at the torque index ``i`` equal ``these`` (to 1e-9
+    relative; NaN equal to NaN): a spiral bevel's lengthwise-sliding variant is the
+    standard's, line for line (issue 71, round 26d: an FH 18x22 listed the finding twice,
+    the second naming "the hypoid's lengthwise sliding")."""
+    if numbers is None or i >= len(numbers):
+        return False
+    return bool(np.allclose(numbers[i], these, rtol=1e-9, atol=0.0, equal_nan=True))
 
 
 def analysis_checks(tree: xr.DataTree, lt: xr.Dataset | None, rt: xr.Dataset | None,

@@ -19,14 +19,19 @@ import logging
 import math
 from collections.abc import Mapping
 from types import MappingProxyType
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from geometry.core.errors import InputError
 
-__all__ = ["capacity_torque", "design_torque", "floor_capacity", "with_coast_design_torque",
-           "with_design_torque"]
+if TYPE_CHECKING:
+    import os
+
+    from geometry.case import Case
+
+__all__ = ["capacity_torque", "design_torque", "floor_capacity", "iso10300_capacity",
+           "with_coast_design_torque", "with_design_torque"]
 
 #: the torques [N·m] the capacity is bracketed on (log-spaced, one rating call)
 _GRID = np.geomspace(1e-2, 1e6, 161)
@@ -99,6 +104,72 @@ def capacity_torque(case, speed: float | None = None,
         speed = case.operating.pinion_speed or OPERATING_DEFAULTS["pinion_speed"]
     with _quiet():
         return _capacity(case, speed, rating)
+
+
+def iso10300_capacity(case: Case | str | os.PathLike[str] | None = None,
+                      pinion_speed: float | None = None,
+                      rating: Mapping[str, Any] | None = None, *,
+                      flank: str | None = None) -> float:
+    """The pair's ISO 10300 long-life capacity: the pinion torque ``ltca synthesize`` takes
+    as the design torque where the basic file gives none.
+
+    The public form of :func:`capacity_torque` (issue 71, round 26d: a script user who
+    wanted to give a design torque "at 1.0 x its ISO capacity" had only ``ltca synthesize
+    --no-development`` to print it, or an internal module).
+
+    Parameters
+    ----------
+    case : Case, str, path-like or None
+        A case with ``[design]`` and ``[rating]`` tables (a synthesised one has them:
+        ``geometry.synthesize(geometry.load_basic(FILE))[0]``), a case file's path or a
+        bundled case's name (:func:`contact.resolve_case`; None: the default case).
+    pinion_speed : float, optional — [rpm]
+        Finite and > 0; default the case's ``[operating] pinion_speed``, or 1500 rpm where
+        the case gives none (as :func:`capacity_torque`).
+    rating : mapping, optional
+        Replaces the case's ``[rating]`` table (its fields: docs/rating.md).
+    flank : {"drive", "coast"}, optional
+        The pinion flank that carries the torque; default ``"drive"``. ``"coast"`` rates
+        the other side of the pair (ISO 10300's ``side``), as the case's ``[rating]
+        coast_design_torque`` is found.
+
+    Returns
+    -------
+    float — [N·m]
+        The smallest pinion torque at which S_H = S_H,min or S_F = S_F,min for pinion or
+        gear at long life, to 1e-6 relative. ``ltca synthesize`` prints it rounded down to
+        4 significant digits (:func:`floor_capacity`).
+
+    Raises
+    ------
+    InputError
+        ``pinion_speed`` not finite and > 0, ``flank`` not ``"drive"`` or ``"coast"``, an
+        unknown case (the resolver's message), a bad ``[design]`` or ``[rating]`` table
+        (named), or no torque in [0.01, 1e6] N·m at which the safety reaches its minimum.
+
+    Notes
+    -----
+    Source: ISO 10300-2:2014 and -3:2014 cl. 6, Method B1, inverted for the torque
+    (:func:`capacity_torque`).
+
+    Examples
+    --------
+    >>> import contact
+    >>> round(contact.iso10300_capacity("hypoid_iso23509_s2"), 1) > 0.0
+    True
+    """
+    from contact.catalogue import resolve_case
+    from geometry.core.validation import one_of, positive
+
+    if pinion_speed is not None:
+        pinion_speed = positive("pinion_speed", pinion_speed, "rpm")
+    side = one_of("flank", "drive" if flank is None else flank, ("drive", "coast"))
+    case = resolve_case(case)
+    if side == "coast":
+        table = dict((case.extra.get("rating") or {}) if rating is None else rating)
+        table["side"] = "coast" if case.pair.drive_flank == "concave" else "drive"
+        rating = table
+    return capacity_torque(case, pinion_speed, rating)
 
 
 @contextlib.contextmanager
