@@ -1111,6 +1111,11 @@ def _run_synthesize(args: argparse.Namespace) -> int:
     if process is not None:
         print("note: " + process)
     print(f"wrote {path}")
+    from contact.load_capacity.iso10300.face_contact import face_width_text
+
+    wide = face_width_text(float(geom.design.b2), float(geom.gear.Re), float(geom.met2))
+    if wide is not None:
+        notes = [wide, *notes]
     for line in notes:
         print("note: " + line)
     if basic.optimize:

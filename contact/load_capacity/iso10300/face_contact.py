@@ -43,11 +43,27 @@ import dataclasses
 import math
 from dataclasses import dataclass
 
-__all__ = ["FACE_CONTACT_RATIO_MIN", "FACE_WIDTH_LIMIT", "PROFILE_CONTACT_RATIO_MIN",
-           "RATIO_AT_TARGET", "OverlapRemedy", "ProfileRemedy", "RatioChange", "at_target",
-           "at_target_text", "loaded_ratio_text", "low_ratio_text", "overlap_changes",
-           "overlap_remedy", "overlap_text",
-           "profile_changes", "profile_remedy"]
+__all__ = [
+    "FACE_CONTACT_RATIO_MIN",
+    "FACE_WIDTH_LIMIT",
+    "FACE_WIDTH_MODULES",
+    "FACE_WIDTH_OUTER",
+    "PROFILE_CONTACT_RATIO_MIN",
+    "RATIO_AT_TARGET",
+    "OverlapRemedy",
+    "ProfileRemedy",
+    "RatioChange",
+    "at_target",
+    "at_target_text",
+    "face_width_text",
+    "loaded_ratio_text",
+    "low_ratio_text",
+    "overlap_changes",
+    "overlap_remedy",
+    "overlap_text",
+    "profile_changes",
+    "profile_remedy",
+]
 
 #: the least face contact ratio ε_vβ bevel-gear design practice asks for (AGMA 2005-D03,
 #: face contact ratio m_F); below it ``ltca synthesize`` adds a note and the LTE-spread
@@ -73,6 +89,14 @@ RATIO_AT_TARGET = 0.01
 #: (AGMA 2005-D03 and Gleason practice: b2 ≤ 0.3 R_e2; wider, the toe's teeth become too
 #: small and the pattern's movement under load too large)
 FACE_WIDTH_LIMIT = 0.3
+
+#: the widest gear face bevel-gear practice accepts, as a fraction of R_e2 and as a multiple
+#: of the outer transverse module m_et2 (Niemann & Winter, *Maschinenelemente* III:
+#: b ≤ R_e/3; AGMA 2005-D03: b ≤ 0.3 A_o and ≤ 10/P_d = 10 m_et): :func:`face_width_text`
+#: notes a face above either; :data:`FACE_WIDTH_LIMIT` is the usual largest the remedies
+#: stay within
+FACE_WIDTH_OUTER = 1.0 / 3.0
+FACE_WIDTH_MODULES = 10.0
 
 #: the largest mean spiral angle tried [deg] (spiral bevel and hypoid practice stays at or
 #: below 45°; the thrust grows with tan β_m)
@@ -636,3 +660,49 @@ def loaded_ratio_text(eps_va: float, eps_vb: float, pairs) -> str:
         out.append(f"loaded contact ratio {n.mean():.2f} (the mean of the tooth pairs "
                    f"carrying load, {share})")
     return "; ".join(out)
+
+
+def face_width_text(b2: float, re2: float, met2: float) -> str | None:
+    """``ltca synthesize``'s note on a gear face wider than bevel-gear practice accepts, or
+    None where it is within.
+
+    Parameters
+    ----------
+    b2 : float — [mm]
+        Gear face width.
+    re2 : float — [mm]
+        Gear outer cone distance R_e2 (ISO 23509 blank).
+    met2 : float — [mm]
+        Gear outer transverse module m_et2 = d_e2 / z2.
+
+    Returns
+    -------
+    str or None
+        E.g. "gear face width b2 44.9 mm is above R_e2/3 = 34.4 mm (bevel-gear practice:
+        b2 <= 0.3 R_e2 and <= 10 m_et, here 30.9 mm; …) …";
+        None where b2 ≤ R_e2/3 and b2 ≤ 10 m_et (or an input is not a positive number).
+
+    Notes
+    -----
+    Source: Niemann & Winter, *Maschinenelemente* III (b ≤ R_e/3, the outer end of bevel
+    gear practice) and AGMA 2005-D03 (b ≤ 0.3 A_o and ≤ 10/P_d, i.e. 10 m_et). A wider face
+    makes the toe's teeth small (top land and root strength at the toe) and the bearing
+    move far along the face under load and mounting deflections; the tool analyses the
+    face as given and says so (round 26d: an FM 11×35 at Σ 105° took b2 60 mm without a
+    word).
+    """
+    vals = (b2, re2, met2)
+    if not all(isinstance(v, (int, float)) and math.isfinite(v) and v > 0.0 for v in vals):
+        return None
+    outer, modules = FACE_WIDTH_OUTER * re2, FACE_WIDTH_MODULES * met2
+    over = [f"R_e2/3 = {outer:.1f} mm" if b2 > outer else "",
+            f"{FACE_WIDTH_MODULES:g} m_et = {modules:.1f} mm" if b2 > modules else ""]
+    over = [o for o in over if o]
+    if not over:
+        return None
+    usual = min(FACE_WIDTH_LIMIT * re2, modules)
+    return (f"gear face width b2 {b2:g} mm is above {' and '.join(over)} (bevel-gear "
+            "practice: b2 <= 0.3 R_e2 and <= 10 m_et, here "
+            f"{usual:.1f} mm; AGMA 2005-D03): the toe's teeth become small (top "
+            "land, root strength) and the bearing moves far along the face under load and "
+            "mounting deflections; the face is analysed as given")
