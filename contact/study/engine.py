@@ -32,6 +32,7 @@ workers and returns one dataset over a ``point`` dimension.
 Public functions
 ----------------
 analyse_point   one point's summaries (runs on a worker)
+one_cycle       a point's LTCA options: the study's over one mesh cycle
 run_points      all points of a study, on Dask
 check_plausible_points  refuse points whose misalignment is beyond the blanks' range
 open_client     a Dask client for a scheduler argument (context manager)
@@ -74,8 +75,8 @@ from geometry.core.conventions import data_var
 from geometry.core.errors import InputError, raise_if_interrupted
 
 __all__ = ["CLOSE_TIMEOUT", "SYNCHRONOUS", "WORKER_ENVIRON_UNSET", "analyse_point",
-           "check_plausible_points", "close_local_cluster", "open_client", "run_points",
-           "run_tasks", "stream_tasks", "worker_environment", "write_study"]
+           "check_plausible_points", "close_local_cluster", "one_cycle", "open_client",
+           "run_points", "run_tasks", "stream_tasks", "worker_environment", "write_study"]
 
 log = logging.getLogger(__name__)
 
@@ -121,7 +122,8 @@ def analyse_point(shared: StudyInputs, index: int, point: Mapping[str, float]) -
     a point; the LTCA over one mesh cycle, :func:`one_cycle`) and
     :func:`friction.efficiency.efficiency_analysis` of its ``/ltca`` at each speed, so a
     study's numbers equal those of single analyses at the same inputs (but for the order
-    of floating-point sums: ≈ 1e-15 relative). The analysis runs inside
+    of floating-point sums: ≈ 1e-15 relative, the LTE harmonics ≤ 1e-14 of the largest
+    over one cycle instead of two). The analysis runs inside
     :func:`geometry.core.caches.rows_not_kept`: its contact segments are new, so the
     compliance's mapped points and columns are computed as in a process that kept none
     (a point no longer depends, at round-off, on the rows earlier points left in the
