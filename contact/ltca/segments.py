@@ -155,6 +155,11 @@ def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], 
     first = np.flatnonzero(source == np.arange(target.shape[0]))
     geo = _kept_segment_geometry(case, eo, target[first], rp[first], segments, spacing,
                                  edges, edge_limit)
+    if first.size == target.shape[0]:
+        # every roll its own (one mesh cycle, as a study point runs it): the segments
+        # as computed, their arrays read-only (the memo's), instead of a copy of all
+        # of them (≈ 5 MB at 20 rolls); the analysis only reads them
+        return geo
     return geo.rolls(np.searchsorted(first, source), source)
 
 
