@@ -419,4 +419,6 @@ def test_the_teeth_remedy_keeps_the_ratio_as_near_as_whole_teeth_allow():
     assert _eps_vb(dataclasses.replace(design, z1=z1 - 1, z2=round((z1 - 1) * 29 / 17))
                    ) < FACE_CONTACT_RATIO_MIN
     assert teeth_remedy(dataclasses.replace(design, z1=z1, z2=z2)) is None
+    with pytest.raises(InputError, match=r"^target: .*\(0, 5\]"):
+        teeth_remedy(design, math.nan)
     assert "the module is the lever left" not in overlap_text(design)

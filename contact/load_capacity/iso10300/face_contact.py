@@ -254,9 +254,19 @@ def teeth_remedy(design, target: float = FACE_CONTACT_RATIO_MIN) -> tuple[int, i
     numbers: the spiral bevel 12x12 miter of benchmarks/data/unseen_designs (d_e2 90 mm,
     b2 19 mm = 0.3 R_e2, β_m 35°), ε_vβ 0.564, reaches 1.25 at 27x27 (1.269 = 0.564 ·
     27/12), where no face width up to R_e2/2 (1.07) nor spiral angle up to 50° (0.96)
-    alone does (docs/own_gear_set.md, "The FM generated-gear designs re-measured on the
+    alone does (docs/own_gear_set.md, "Four FM generated-gear designs re-measured on the
     corrected gear").
+
+    Raises
+    ------
+    InputError
+        ``target`` not a number in (0, 5].
     """
+    from geometry.core.errors import InputError
+
+    if not (isinstance(target, (int, float)) and math.isfinite(target) and 0.0 < target <= 5.0):
+        raise InputError(f"target: the face contact ratio aimed at must be a number in "
+                         f"(0, 5], got {target!r}")
     z1, z2 = int(design.z1), int(design.z2)
     if not _eps_vb_or_nan(design) < target:
         return None
