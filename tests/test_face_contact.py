@@ -365,3 +365,60 @@ def test_synthesizes_note_gives_the_developed_lte_in_numbers():
     dev.best.metrics["lte_peak_to_peak"] = np.array([30.0, 38.0])
     assert low_overlap_lte(dev).endswith("drive 30/38 urad at 28.8/192 N m (light/design), "
                                          "the development's target 40 urad met")
+
+
+def test_the_12x12_miters_note_names_the_teeth_where_no_width_nor_angle_reaches():
+    """The spiral bevel 12x12 miter (d_e2 90, b2 19 mm = 0.3 R_e2, β_m 35°; issue 71,
+    branch remeasure87): ε_vβ 0.564 (ISO 10300-1 A.2 with b_v,eff 0.85 b2; by hand with the
+    whole b2, b2 sin β_m / (π m_mn) = 0.664). Neither the face width up to R_e2/2 nor the
+    spiral angle up to 50° alone reaches 1.25; the note says what each reaches there and
+    names the fewest teeth at the same d_e2, b2 and β_m that do: m_mn falls as 1/z, so
+    ε_vβ grows in proportion to z (checked by hand to 1e-9: the same virtual face width
+    and spiral angle), and 27x27 is the first (26x26 falls short, by hand)."""
+    from contact.load_capacity.iso10300.face_contact import teeth_remedy
+    from geometry.iso23509.blank import blank_geometry
+
+    design = load_basic(ROOT / "tests" / "data" / "limits"
+                        / "spiral_bevel_12x12_miter_b35.toml").design
+    eps = _eps_vb(design)
+    assert eps == pytest.approx(0.564, abs=1e-3)
+    m_mn = float(blank_geometry(design).m_mn)
+    assert 19.0 * math.sin(math.radians(35.0)) / (math.pi * m_mn) == pytest.approx(0.664,
+                                                                                  abs=1e-3)
+    r = overlap_remedy(design)
+    assert math.isnan(r.b2_needed) and math.isnan(r.beta_m_needed)
+    half = 0.5 * r.b2_limit / 0.3
+    at_b = _eps_vb(dataclasses.replace(design, b2=half))
+    at_beta = _eps_vb(dataclasses.replace(design, beta_m=math.radians(50.0)))
+    assert at_b < FACE_CONTACT_RATIO_MIN and at_beta < FACE_CONTACT_RATIO_MIN
+    assert teeth_remedy(design) == (27, 27)
+    for z in (26, 27):
+        assert _eps_vb(dataclasses.replace(design, z1=z, z2=z)) == pytest.approx(
+            eps * z / 12, rel=1e-9)
+    assert _eps_vb(dataclasses.replace(design, z1=26, z2=26)) < FACE_CONTACT_RATIO_MIN
+    assert _eps_vb(dataclasses.replace(design, z1=27, z2=27)) >= FACE_CONTACT_RATIO_MIN
+    text = overlap_text(design)
+    assert "eps_vb 0.56 is below 1.25" in text
+    assert (f"no face width up to R_e2/2 (eps_vb {at_b:.2f} at {half:.1f} mm) nor spiral "
+            f"angle up to 50 deg ({at_beta:.2f}) alone reaches 1.25") in text
+    assert "z1 27 and z2 27 (now 12 and 12; m_mn 2.32 mm, now 5.23) reach 1.25" in text
+    assert "the ratio then" not in text
+
+
+def test_the_teeth_remedy_keeps_the_ratio_as_near_as_whole_teeth_allow():
+    """A non-miter below its target (the 17x29 at Σ 100°, ε_vβ 0.96 at b2 24 mm): the
+    tooth numbers returned keep z2 = round(z1 u) and reach 1.25 by hand, the pinion one
+    tooth fewer does not (at its own rounded z2); a design at its target gets None; the
+    17x29's own note, whose face width and spiral angle reach the target, names no teeth."""
+    from contact.load_capacity.iso10300.face_contact import teeth_remedy
+
+    design = load_basic(DESIGNS / "spiral_bevel_17x29_s100_m0.toml").design
+    z1, z2 = teeth_remedy(design)
+    assert z2 == round(z1 * 29 / 17)
+    assert _eps_vb(dataclasses.replace(design, z1=z1, z2=z2)) >= FACE_CONTACT_RATIO_MIN
+    assert _eps_vb(dataclasses.replace(design, z1=z1 - 1, z2=round((z1 - 1) * 29 / 17))
+                   ) < FACE_CONTACT_RATIO_MIN
+    assert teeth_remedy(dataclasses.replace(design, z1=z1, z2=z2)) is None
+    with pytest.raises(InputError, match=r"^target: .*\(0, 5\]"):
+        teeth_remedy(design, math.nan)
+    assert "the module is the lever left" not in overlap_text(design)

@@ -31,6 +31,8 @@ Public functions
 overlap_remedy     ε_vβ of a design and the b2, β_m that reach the target
 overlap_changes    those as basic-file changes (RatioChange), as the note prints them
 overlap_text       that as a sentence, or None where ε_vβ meets the target
+teeth_remedy       the tooth numbers at the same d_e2, b2, β_m that reach it, where
+                   neither b2 nor β_m alone does
 profile_remedy     ε_vα of a design and the k_d, α_dD that reach the target
 profile_changes    those as basic-file changes (RatioChange), as the note prints them
 low_ratio_text     the sentence of every contact ratio below its limit, or None
@@ -63,6 +65,7 @@ __all__ = [
     "overlap_text",
     "profile_changes",
     "profile_remedy",
+    "teeth_remedy",
 ]
 
 #: the least face contact ratio ε_vβ bevel-gear design practice asks for (AGMA 2005-D03,
@@ -237,6 +240,103 @@ def overlap_remedy(design, target: float = FACE_CONTACT_RATIO_MIN) -> OverlapRem
                          beta_need)
 
 
+def _eps_vb_or_nan(design, **change) -> float:
+    """ε_vβ [1] of ``design`` with the ``[design]`` ``change``; NaN where the blank refuses
+    it."""
+    from geometry.core.errors import InputError
+
+    try:
+        return _eps_vb(dataclasses.replace(design, **change))
+    except (InputError, ValueError, ZeroDivisionError):
+        return math.nan
+
+
+def teeth_remedy(design, target: float = FACE_CONTACT_RATIO_MIN) -> tuple[int, int] | None:
+    """The fewest teeth, at the same outer pitch diameter, face width and spiral angle,
+    whose face contact ratio ε_vβ reaches ``target``: the lever left where neither the
+    face width nor the spiral angle alone reaches it (:func:`overlap_text`).
+
+    Parameters
+    ----------
+    design : geometry.iso23509.design_data.BevelGearDesign
+        The basic design data (``z1``, ``z2`` [1]; lengths [mm], angles [rad]).
+    target : float — [1]
+        The face contact ratio aimed at; default :data:`FACE_CONTACT_RATIO_MIN`.
+
+    Returns
+    -------
+    (z1, z2) : (int, int) or None
+        The least pinion tooth number z1 above the design's (up to 4 z1 and 500), with
+        z2 = round(z1 u) at the design's ratio u (z2 ≥ z1), whose ISO 23509 blank gives
+        ε_vβ ≥ ``target``; None where the design already reaches it or none up to that
+        does (or the blank refuses each).
+
+    Notes
+    -----
+    At a fixed outer pitch diameter d_e2 and face width b2 the cone distances are kept and
+    the mean normal module m_mn = 2 R_m sin δ2 cos β_m / z2 falls as 1/z2, so ε_vβ =
+    b_v,eff sin β_v / (π m_mn) (ISO 10300-1:2014, A.2) grows in proportion to the tooth
+    numbers: the spiral bevel 12x12 miter of benchmarks/data/unseen_designs (d_e2 90 mm,
+    b2 19 mm = 0.3 R_e2, β_m 35°), ε_vβ 0.564, reaches 1.25 at 27x27 (1.269 = 0.564 ·
+    27/12), where no face width up to R_e2/2 (1.07) nor spiral angle up to 50° (0.96)
+    alone does (docs/own_gear_set.md, "Four FM generated-gear designs re-measured on the
+    corrected gear").
+
+    Raises
+    ------
+    InputError
+        ``target`` not a number in (0, 5].
+    """
+    from geometry.core.errors import InputError
+
+    if not (isinstance(target, (int, float)) and math.isfinite(target) and 0.0 < target <= 5.0):
+        raise InputError(f"target: the face contact ratio aimed at must be a number in "
+                         f"(0, 5], got {target!r}")
+    z1, z2 = int(design.z1), int(design.z2)
+    if not _eps_vb_or_nan(design) < target:
+        return None
+    u = z2 / z1
+    for n1 in range(z1 + 1, min(4 * z1, 500) + 1):
+        n2 = max(n1, round(n1 * u))
+        if n2 > 500:
+            return None
+        if _eps_vb_or_nan(design, z1=n1, z2=n2) >= target:
+            return n1, n2
+    return None
+
+
+def _none_text(design, r: OverlapRemedy) -> str:
+    """The phrase for no face width nor spiral angle alone reaching ``r.target``, with
+    the ε_vβ each reaches at its bound (R_e2/2, :data:`_SPIRAL_ANGLE_MAX`) where its blank
+    can be computed."""
+    half = 0.5 * r.b2_limit / FACE_WIDTH_LIMIT
+    at_b = _eps_vb_or_nan(design, b2=max(r.b2, half))
+    at_beta = _eps_vb_or_nan(design, beta_m=math.radians(max(r.beta_m, _SPIRAL_ANGLE_MAX)))
+    b_said = f" (eps_vb {at_b:.2f} at {half:.1f} mm)" if math.isfinite(at_b) else ""
+    beta_said = f" ({at_beta:.2f})" if math.isfinite(at_beta) else ""
+    return (f"no face width up to R_e2/2{b_said} nor spiral angle up to "
+            f"{_SPIRAL_ANGLE_MAX:g} deg{beta_said}")
+
+
+def _teeth_text(design, target: float) -> str:
+    """"; " and the tooth numbers of :func:`teeth_remedy` as the note's last clause, or
+    "" where none is found."""
+    z = teeth_remedy(design, target)
+    if z is None:
+        return ""
+    z1, z2 = int(design.z1), int(design.z2)
+    ratio = ("" if z[1] * z1 == z[0] * z2 else
+             f", the ratio then {z[1] / z[0]:.3f} (now {z2 / z1:.3f})")
+    from geometry.iso23509.blank import blank_geometry
+
+    m_now = float(blank_geometry(design).m_mn)
+    m_then = float(blank_geometry(dataclasses.replace(design, z1=z[0], z2=z[1])).m_mn)
+    return (f"; the module is the lever left: more teeth at the same d_e2, b2 and beta_m "
+            f"lower the mean normal module and raise eps_vb in proportion, z1 {z[0]} and "
+            f"z2 {z[1]} (now {z1} and {z2}{ratio}; m_mn {m_then:.2f} mm, now {m_now:.2f}) "
+            f"reach {target:g} (not checked by a synthesis)")
+
+
 def _profile_after(design, **change) -> str:
     """"; eps_va then 0.98, below 1" where the basic-file ``change`` an overlap remedy
     offers takes the profile contact ratio ε_vα below :data:`PROFILE_CONTACT_RATIO_MIN`;
@@ -327,9 +427,11 @@ def overlap_text(design, target: float = FACE_CONTACT_RATIO_MIN, judge=None) -> 
     changes = overlap_changes(r, design)
     if at_target(r.eps_vb, r.target):
         return at_target_text("face contact ratio eps_vb", r.eps_vb, r.target, changes)
-    none = "no face width up to R_e2/2 nor spiral angle up to 50 deg"
+    none = _none_text(design, r) if not changes else \
+        f"no face width up to R_e2/2 nor spiral angle up to {_SPIRAL_ANGLE_MAX:g} deg"
     remedy = (judge(changes, r.target, none) if judge is not None and changes
-              else _either([c.text for c in changes], r.target, none))
+              else _either([c.text for c in changes], r.target, none)
+              + ("" if changes else _teeth_text(design, r.target)))
     return (f"face contact ratio eps_vb {_below(r.eps_vb, r.target)} is below {r.target:g}, "
             "the least "
             "bevel-gear design practice asks for (AGMA 2005-D03): a localised bearing then "
