@@ -26,6 +26,7 @@ from contact.optimize.run import SharedDesign, _pinion_flank
 from contact.optimize.variables import _measured_relief, case_at, start_values
 from contact.pipeline import run_analysis
 from contact.study.summary import point_summary
+from contact.study.verdicts import verdict
 from geometry.case import load_case
 
 #: the optimiser's coarse sampling in these tests (ltca run's is LTCAOptions())
@@ -108,10 +109,22 @@ def test_constraints_met_agree_with_ltca_run_of_the_written_case(tmp_path, capsy
     confirm_lines = [ln for ln in captured.err.splitlines() if "ltca run's sampling" in ln]
     assert len(confirm_lines) == conf["designs_confirmed"] >= 1
     written = load_case(out)
-    ref = _ltca_run(written, torque)
+    from contact.chain import AnalysisChain
+
+    tree = run_analysis(written, list(torque), deviations=False,
+                        steps=AnalysisChain.analysis().without("geometry", "root_stress"))
+    ref = point_summary(tree, written)
     for k in ("pressure_max_flank", "lte_peak_to_peak", "edge_load_share", "lte_mean"):
         np.testing.assert_allclose(np.asarray(conf[k])[0], ref[k], rtol=1e-9, atol=1e-6,
                                    err_msg=k)
+    # its verdict and the reasons of an ATTENTION are the independent analysis's (round 27:
+    # a confirmed ATTENTION used to be printed without its reason)
+    v = verdict(tree)
+    assert conf["verdict"] == v.severity
+    attention = list(dict.fromkeys(f.reason for f in v.findings if f.severity == "attention"))
+    assert conf["verdict_attention"] == attention
+    if v.severity == "attention":
+        assert all(r in captured.err for r in attention)
     problem = OptimizeProblem(torque=torque, max_edge_share=max_edge)
     _, g, _ = score(problem, {k: np.asarray(ref[k], float)[None, :] for k in METRICS})
     met = bool(np.all(g <= 0))
@@ -256,3 +269,22 @@ def test_a_limit_met_only_at_the_coarse_sampling_is_not_reported_met():
     assert name in res.confirmation.violated
     assert len(res.confirmations) == 2
     assert "NOT every constraint met at ltca run's sampling" in _outcome(res, 2)
+
+
+def test_a_confirmed_attention_says_why():
+    """A confirmation whose constraints are met but whose verdict is ATTENTION names the
+    ATTENTION findings in its line (round 27: the FH 6×43 at Σ 80° printed "ltca run's
+    verdict ATTENTION" alone, its pattern reaching the gear's tip); a FAIL names its FAIL
+    findings only, a PASS nothing. Exact strings: the line is built from the findings."""
+    from contact.optimize.confirm import Confirmation
+
+    def conf(severity, findings=(), attention=()):
+        return Confirmation(2, np.zeros(1), {}, np.zeros(0), (), severity, findings, "", 1.0,
+                            False, attention)
+
+    tip = "at 80.1 N m: the loaded pattern reaches the gear's tip"
+    assert conf("attention", attention=(tip,)).summary() == (
+        f"constraints met; ltca run's verdict ATTENTION ({tip})")
+    assert conf("fail", ("S_F 1.1 below 1.3",), (tip,)).summary() == (
+        "constraints met; ltca run's verdict FAIL (S_F 1.1 below 1.3)")
+    assert conf("pass").summary() == "constraints met; ltca run's verdict PASS"

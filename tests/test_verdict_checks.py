@@ -296,6 +296,27 @@ def test_duty_cycle_judges_a_bin_as_ltca_run_judges_its_torque():
     assert root_safety_severity(0.3, 1.3, 150.0, 100.0, above_static=True) == "fail"
 
 
+
+def test_a_duty_root_safety_just_below_its_minimum_is_shown_below_it():
+    """Round 27 (the FM hypoid 12x37 at Σ 95°, its design torque the ISO capacity where the
+    gear's S_F is 1.30): the illustrative duty cycle's top bin, at its made-up deflection,
+    FAILed the gear's root with "S_F,FE 1.30 below S_Fmin 1.3", and its next step said the
+    same. Both now print as many decimals as show the value below (shown_below): 1.2996 →
+    "1.2996". The severity is root_safety_severity's, unchanged (exact strings)."""
+    from contact.commands.next_steps import duty_cycle_lines
+
+    ds = xr.Dataset(
+        {"contact_safety_factor": ("member", [2.0, 2.0]),
+         "root_stress_safety": (("bin", "member"), [[3.0, 2.5], [1.76, 1.2996]]),
+         "bending_safety_min": 1.3, "rating_design_torque": 536.5,
+         "torque": ("bin", [53.65, 536.5])},
+        coords={"bin": [0, 1], "member": ["pinion", "gear"]})
+    (fail,) = _found(verdict(ds), "root_stress")
+    assert fail.severity == "fail"
+    assert fail.reason.startswith("gear: FE root safety S_F,FE 1.2996 below S_Fmin 1.3 ")
+    lines = duty_cycle_lines(ds, "x.toml", None, ["root_stress"])
+    assert "has the lowest FE root safety S_F,FE 1.2996, below S_Fmin 1.3" in lines[0]
+
 def test_duty_root_fail_names_the_bins_misalignment():
     """Issue 71: the pc_hypoid_10x43's illustrative duty cycle FAILed its gear root at 357
     N·m (S_F,FE 1.29 < 1.3) where `ltca run` at 357 N·m reads 1.32: the bin carries the

@@ -325,6 +325,7 @@ def duty_cycle_lines(ds, shown: str, flank: str | None,
     if ("root_stress" in fail_checks and "damage" not in fail_checks
             and "root_stress_safety" in ds):  # the bin ltca run fails on its root (issue 71)
         from contact.study.verdict_checks import root_safety_severity
+        from contact.study.verdicts import shown_below
 
         safety = np.asarray(ds["root_stress_safety"].transpose("bin", "member").values, float)
         design = (float(ds["rating_design_torque"]) if "rating_design_torque" in ds
@@ -333,9 +334,10 @@ def duty_cycle_lines(ds, shown: str, flank: str | None,
             root_safety_severity(float(x), float(ds["bending_safety_min"]),
                                  float(torque[b]), design) == "fail" for x in safety[b])]
         worst = min(failed or range(safety.shape[0]), key=lambda b: np.nanmin(safety[b]))
+        s_min = float(ds["bending_safety_min"])
         why = (f"bin {worst} ({plain_number(torque[worst])} N m) has the lowest FE root "
-               f"safety S_F,FE {np.nanmin(safety[worst]):.2f}, below S_Fmin "
-               f"{float(ds['bending_safety_min']):g} as ltca run judges it")
+               f"safety S_F,FE {shown_below(float(np.nanmin(safety[worst])), s_min)}, below "
+               f"S_Fmin {s_min:g} as ltca run judges it")
         bin_flags = _bin_misalignment_flags(ds, worst)
         if bin_flags:
             why += " at the bin's misalignment (the deflection table's and the assembly's)"

@@ -64,6 +64,14 @@ class Confirmation:
         Empty, or why the FE mesh of the pinion's tooth cannot be built.
     seconds : float
         Wall time [s].
+    bearing_fail : bool
+        A failing finding is one of :data:`BEARING_CHECKS`.
+    attention : tuple of str
+        The verdict's ATTENTION findings (one sentence each): printed where the verdict is
+        ATTENTION, so that a design whose constraints are met but whose verdict is worse
+        than PASS says why (round 27: the FH 6×43 at Σ 80°, PASS as synthesised, was
+        confirmed "ltca run's verdict ATTENTION" without the reason, its pattern reaching
+        the gear's tip at the design torque).
     """
 
     index: int
@@ -76,6 +84,7 @@ class Confirmation:
     mesh: str
     seconds: float
     bearing_fail: bool = False
+    attention: tuple[str, ...] = ()
 
     @property
     def met(self) -> bool:
@@ -95,8 +104,10 @@ class Confirmation:
         parts = ["constraints met" if self.met else
                  "not met: " + ", ".join(self.violated)]
         if self.severity:
+            why = self.findings if self.severity == "fail" else (
+                self.attention if self.severity == "attention" else ())
             parts.append(f"ltca run's verdict {self.severity.upper()}"
-                         + (f" ({'; '.join(self.findings)})" if self.findings else ""))
+                         + (f" ({'; '.join(why)})" if why else ""))
         return "; ".join(parts)
 
 
@@ -164,7 +175,7 @@ def confirm_design(shared, ev: Evaluation, *, root_stress_options=None) -> Confi
         return Confirmation(ev.index, x, metrics, np.full(len(names), np.inf), names, "",
                             (), mesh, time.perf_counter() - t0)
     opts = LTCAOptions(solver=problem.options.solver, compliance=problem.options.compliance)
-    severity, findings, bearing = SEVERITIES[0], [], False
+    severity, findings, bearing, attention = SEVERITIES[0], [], False, []
     try:
         for im, mis in enumerate(problem.misalignments):
             c = dataclasses.replace(case, misalignment=mis)
@@ -182,6 +193,8 @@ def confirm_design(shared, ev: Evaluation, *, root_stress_options=None) -> Confi
                 if f.severity == "fail":
                     findings.append(f.reason)
                     bearing = bearing or f.check in BEARING_CHECKS
+                elif f.severity == "attention":
+                    attention.append(f.reason)
         _, g, _ = score(problem, metrics)
     except Exception as exc:  # the confirmation of one design never stops the command
         raise_if_interrupted(exc)
@@ -192,4 +205,4 @@ def confirm_design(shared, ev: Evaluation, *, root_stress_options=None) -> Confi
     violated = tuple(n for n, gi in zip(names, g, strict=True) if not gi <= 0.0)
     return Confirmation(ev.index, x, metrics, np.asarray(g, float), violated, severity,
                         tuple(dict.fromkeys(findings)), "", time.perf_counter() - t0,
-                        bearing)
+                        bearing, tuple(dict.fromkeys(attention)))

@@ -522,6 +522,7 @@ def optimized_case(result: OptimizeResult, *, provenance: Mapping[str, object] |
                         "mesh of the pinion tooth (contact.optimize.confirm)",
             "constraints_met": bool(conf.met), "not_met": list(conf.violated),
             "verdict": conf.severity, "verdict_fail": list(conf.findings),
+            "verdict_attention": list(conf.attention),
             "designs_confirmed": len(result.confirmations),
             **{k: np.round(conf.metrics[k], 6).tolist() for k in
                ("lte_mean", "lte_peak_to_peak", "edge_load_share", "pressure_max_flank")}}

@@ -1409,7 +1409,8 @@ def _duty_root_stress(ds: xr.Dataset) -> list[Finding]:
                    "the root damage over the cycle decides")
             out.append(Finding(
                 severity, "root_stress",
-                f"{m}: FE root safety S_F,FE {safety[i, k]:.2f} below S_Fmin {smin:g} (the "
+                f"{m}: FE root safety S_F,FE {shown_below(float(safety[i, k]), smin)} below "
+                f"S_Fmin {smin:g} (the "
                 f"rating's, as `ltca run` judges it; long life, K_A K_v on the FE stress) in "
                 f"bin{'s' * (len(bins) > 1)} {', '.join(str(b) for b in bins)} (lowest: bin "
                 f"{i}, {_t(float(torques[i]))}) — {why}; the cycle's S_F line is against 1"))
