@@ -288,3 +288,58 @@ def test_a_confirmed_attention_says_why():
     assert conf("fail", ("S_F 1.1 below 1.3",), (tip,)).summary() == (
         "constraints met; ltca run's verdict FAIL (S_F 1.1 below 1.3)")
     assert conf("pass").summary() == "constraints met; ltca run's verdict PASS"
+
+
+def _stand_in_evals(objectives):
+    from contact.optimize.objective import Evaluation
+
+    return [Evaluation(i, np.array([float(i)]), 0, "", {}, np.zeros(0), np.zeros(1), o, 0.0)
+            for i, o in enumerate(objectives)]
+
+
+def _stand_in_confirm(severities):
+    """confirm_design's stand-in: design i met every constraint with verdict
+    ``severities[i]``."""
+    from contact.optimize.confirm import Confirmation
+
+    def confirm(shared, ev, **kw):
+        return Confirmation(ev.index, ev.x, {}, np.zeros(0), (), severities[ev.index], (),
+                            "", 0.0, False, ())
+    return confirm
+
+
+@pytest.mark.parametrize(("severities", "written", "worse"), [
+    # the start PASS, the better-ranked designs ATTENTION: the start is written (round 27's
+    # FH 6x43 at Sigma 80 deg, PASS as synthesised, was written ATTENTION)
+    (("pass", "attention", "attention"), 0, True),
+    # the start ATTENTION, the best ranked PASS: that design is written
+    (("attention", "attention", "pass"), 2, False),
+    # the start FAIL, an ATTENTION design is better: written
+    (("fail", "attention", "fail"), 2, False),
+])
+def test_a_design_worse_than_the_start_by_the_verdict_is_not_written(
+        monkeypatch, severities, written, worse):
+    """The optimiser confirms the start as ``ltca run`` analyses it and accepts no design
+    whose verdict is worse than the start's; where every better-ranked design is worse, the
+    start is the design written and the headline says why. Exact: the rule compares
+    severities only (the stand-in's designs all meet their constraints)."""
+    import contact.optimize.confirm as confirm_module
+    from contact.commands.optimize import _outcome
+    from contact.optimize.run import _confirmed
+
+    monkeypatch.setattr(confirm_module, "confirm_design", _stand_in_confirm(severities))
+    # objectives: design 2 ranks first, then 1, then the start
+    evals = _stand_in_evals([3.0, 2.0, 1.0])
+    lines: list[str] = []
+    e, conf, tried = _confirmed(None, evals, 5, lines.append)
+    assert e.index == written and conf.index == written
+    assert lines[0].startswith("optimize: the start (design 1) at ltca run's sampling")
+    assert len(tried) == len(lines)  # one line per confirmation, the start once
+    assert any(c.worse_than_start for c in tried) is worse
+    assert conf.accepted and not conf.worse_than_start
+    if worse:
+        assert all("worse than the start's PASS: not accepted" in ln for ln in lines[1:])
+
+        class _R:  # the result fields _outcome reads
+            confirmation, confirmations, case, feasible = conf, tried, object(), True
+        assert "the start case is written" in _outcome(_R, 5)

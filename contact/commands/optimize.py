@@ -153,6 +153,13 @@ def _outcome(result, confirm: int) -> str:
                 f"{conf.index + 1})")
         if conf.severity == "fail":
             head += f"; but ltca run's verdict is FAIL: {'; '.join(conf.findings)}"
+        if conf.index == 0 and any(c.worse_than_start for c in result.confirmations):
+            head += ("; the start case is written: every better-ranked design confirmed "
+                     f"was judged worse than its {conf.severity.upper()} by ltca run's "
+                     "verdict")
+        elif conf.worse_than_start:
+            head += (f"; but its verdict {conf.severity.upper()} is worse than the start's "
+                     f"{conf.start_severity.upper()}")
         return head
     why = f" ({', '.join(conf.violated)})" if conf is not None and conf.violated else ""
     return (f"NOT every constraint met at ltca run's sampling{why}: of "

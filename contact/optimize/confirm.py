@@ -72,6 +72,10 @@ class Confirmation:
         than PASS says why (round 27: the FH 6×43 at Σ 80°, PASS as synthesised, was
         confirmed "ltca run's verdict ATTENTION" without the reason, its pattern reaching
         the gear's tip at the design torque).
+    start_severity : str
+        The start case's verdict confirmed the same way (``""`` where not known, e.g. the
+        start's own confirmation): a design whose verdict is worse than it is not accepted
+        (round 27: the optimiser wrote an ATTENTION design for a PASS start).
     """
 
     index: int
@@ -85,6 +89,17 @@ class Confirmation:
     seconds: float
     bearing_fail: bool = False
     attention: tuple[str, ...] = ()
+    start_severity: str = ""
+
+    @property
+    def worse_than_start(self) -> bool:
+        """The verdict is worse than the start's (both known): PASS → ATTENTION or FAIL,
+        ATTENTION → FAIL (:data:`contact.study.verdicts.SEVERITIES`, mildest first)."""
+        from contact.study.verdicts import SEVERITIES
+
+        if self.severity not in SEVERITIES or self.start_severity not in SEVERITIES:
+            return False
+        return SEVERITIES.index(self.severity) > SEVERITIES.index(self.start_severity)
 
     @property
     def met(self) -> bool:
@@ -93,9 +108,11 @@ class Confirmation:
 
     @property
     def accepted(self) -> bool:
-        """Constraints met, the FE mesh built, and no bearing finding of ``ltca run``'s
-        verdict a FAIL (a capacity FAIL is the gear set's, which no flank setting answers)."""
-        return self.met and not self.mesh and not self.bearing_fail
+        """Constraints met, the FE mesh built, no bearing finding of ``ltca run``'s verdict
+        a FAIL (a capacity FAIL is the gear set's, which no flank setting answers), and the
+        verdict no worse than the start's (:attr:`worse_than_start`)."""
+        return (self.met and not self.mesh and not self.bearing_fail
+                and not self.worse_than_start)
 
     def summary(self) -> str:
         """One line: what the confirmation found."""
@@ -108,6 +125,9 @@ class Confirmation:
                 self.attention if self.severity == "attention" else ())
             parts.append(f"ltca run's verdict {self.severity.upper()}"
                          + (f" ({'; '.join(why)})" if why else ""))
+        if self.worse_than_start:
+            parts.append(f"worse than the start's {self.start_severity.upper()}: not "
+                         "accepted")
         return "; ".join(parts)
 
 

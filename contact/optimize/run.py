@@ -446,26 +446,49 @@ def optimize(case: Case, variables: Sequence[DesignVariable], problem: OptimizeP
 
 
 def _confirmed(shared: SharedDesign, evals: Sequence[Evaluation], budget: int, say: Any):
-    """(evaluation, confirmation, all confirmations) of the design to write: the best
-    ranked design that ``ltca run``'s analysis accepts (:func:`confirm_design`), trying the
-    optimiser's feasible designs in rank order, at most ``budget``; else the first whose FE
-    mesh builds; else (None, None, ...)."""
+    """(evaluation, confirmation, all confirmations) of the design to write.
+
+    The start (``evals[0]``, the case given) is confirmed first, as ``ltca run`` analyses it;
+    then the optimiser's feasible designs in rank order, at most ``budget`` besides the
+    start, each judged against the start's verdict (:attr:`~contact.optimize.confirm.
+    Confirmation.worse_than_start`): the best ranked one ``ltca run``'s analysis accepts
+    (:func:`contact.optimize.confirm.confirm_design`); else the start where it is accepted
+    (no design beat it by the verdict: round 27's FH 6×43 at Σ 80°, PASS as given, was
+    written ATTENTION); else the first whose FE mesh builds, one no worse than the start
+    by the verdict first; else (None, None, ...)."""
     from contact.optimize.confirm import confirm_design
 
-    tried = []
-    fallback = None
-    for e in sorted((e for e in evals if e.status < 2), key=_rank):
-        if len(tried) >= budget or (tried and not e.feasible):
-            break
-        conf = confirm_design(shared, e)
-        tried.append(conf)
+    def said(e, conf, what):
         if callable(say):
-            say(f"optimize: design {e.index + 1} at ltca run's sampling: {conf.summary()} "
+            say(f"optimize: {what} at ltca run's sampling: {conf.summary()} "
                 f"[{conf.seconds:.0f} s]")
+
+    start_ev = evals[0]
+    start_conf = confirm_design(shared, start_ev)
+    said(start_ev, start_conf, f"the start (design {start_ev.index + 1})")
+    tried, ranked = [start_conf], 0
+    fallback = worse = None
+    for e in sorted((e for e in evals if e.status < 2), key=_rank):
+        if ranked >= budget or (ranked and not e.feasible):
+            break
+        ranked += 1
+        if e.index == start_ev.index:
+            conf = start_conf
+        else:
+            conf = dataclasses.replace(confirm_design(shared, e),
+                                       start_severity=start_conf.severity)
+            tried.append(conf)
+            said(e, conf, f"design {e.index + 1}")
         if conf.accepted:
             return e, conf, tuple(tried)
-        if fallback is None and not conf.mesh:
-            fallback = (e, conf)
+        if not conf.mesh:
+            if conf.worse_than_start:
+                worse = worse or (e, conf)
+            else:
+                fallback = fallback or (e, conf)
+    if start_conf.accepted:
+        return start_ev, start_conf, tuple(tried)
+    fallback = fallback or worse
     if fallback is None:
         return None, None, tuple(tried)
     return fallback[0], fallback[1], tuple(tried)
