@@ -218,6 +218,7 @@ from contact.optimize.development_targets import (
 )
 from contact.optimize.development_written import with_synthesis_fe_level
 from contact.optimize.development_written_drive import written_drive_check
+from contact.optimize.development_written_lte import written_lte_capacity
 from geometry.case import Case
 from geometry.core.blas import blas_threads
 from geometry.core.errors import InputError, raise_if_interrupted
@@ -517,6 +518,13 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     # relief deeper, on the design as it is written (after the edge-peak step's relief;
     # development_hollow_target)
     best = checked_hollow_target(best, targets, setup, teeth, say, placed)
+    if basic.options.design_torque is None and basic.rating.get("design_torque") is None:
+        # after the last drive step that can raise its LTE: the design torque no higher
+        # than where the written bearing keeps the verdict's LTE limit at every torque
+        # (the 14x36 at Sigma 70 deg: 84 urad at its ISO capacity, below the FAIL level
+        # lte_capacity acts on; development_written_lte)
+        best = written_lte_capacity(best, targets, setup, teeth, say)
+        _outclassed(setup, outclassed_below)
     developed = with_flank_options(basic, flank, best.values)
     # the coast flank, after the drive flank is chosen (which it does not change): checked
     # at the default sampling as synthesised, developed where it misses a target
