@@ -162,6 +162,7 @@ def written_lte_capacity(best: DevelopmentEvaluation, targets: DevelopmentTarget
     seen = dict(zip(found[0], found[1], strict=True))
     before = _curve(found)
     key = bearing_key(best.values)
+    tried: list[str] = []
     for _ in range(_TRIES):
         ts = sorted(seen)
         new = lowered_torque(ts, [seen[t] for t in ts], limit, design)
@@ -194,11 +195,13 @@ def written_lte_capacity(best: DevelopmentEvaluation, targets: DevelopmentTarget
             say(f"  design torque {plain_number(design)} -> {plain_number(torques[1])} N m: "
                 f"{source}")
             return lowered
+        tried.append(f"at {plain_number(torques[1])} N m {_curve(there)}")
         seen.update(zip(there[0], there[1], strict=True))
         if there[1][0] > limit:  # the lowered light torque above the limit already
             break
     say(f"  the written drive LTE p-p {before}: no design torque below "
-        f"{plain_number(design)} N m found where it keeps {limit:g} urad at every torque")
+        f"{plain_number(design)} N m found where it keeps {limit:g} urad at every torque"
+        + (f" (tried {'; '.join(tried)})" if tried else ""))
     return best
 
 
