@@ -99,11 +99,40 @@ def test_no_cut_where_the_lte_keeps_the_limit_or_no_torque_does(monkeypatch):
     assert "lowered" not in setup and "no design torque below 371.2" in lines[-1]
 
 
+#: the 14x36's written bearing as `ltca run --torque` measured it (2026-11-28, branch
+#: lte87: 15-55.6 N m) and as the development's range read it (160.8-371.2 N m): the LTE
+#: falls from the unloaded TE's 70 µrad at light load and rises again above 160 N m
+_MEASURED = ((15.0, 70.3), (20.0, 68.2), (25.0, 65.9), (31.8, 62.4), (40.0, 58.1),
+             (48.0, 53.2), (55.6, 49.1), (160.8, 32.3), (187.1, 46.0), (213.4, 60.7),
+             (266.0, 71.5), (371.2, 83.9))
+
+
+def test_lte_window_is_the_first_run_within_the_limit():
+    """The measured 14x36: 60 µrad crossed at 31.8 + 2.4/4.3 × 8.2 = 36.377 and 187.1 +
+    14/14.7 × 26.3 = 212.147 N m (linear interpolation: exact to round-off)."""
+    from contact.optimize.development_written_lte import lte_window
+
+    t, y = np.array(_MEASURED).T
+    low, high = lte_window(t, y, 60.0)
+    assert low == pytest.approx(31.8 + 2.4 / 4.3 * 8.2, abs=1e-9)
+    assert high == pytest.approx(187.1 + 14.0 / 14.7 * 26.3, abs=1e-9)
+    assert lte_window([1.0, 2.0], [50.0, 55.0], 60.0) == (1.0, 2.0)
+    assert all(math.isnan(x) for x in lte_window([1.0, 2.0], [61.0, 65.0], 60.0))
+    with pytest.raises(ValueError):
+        lte_window([1.0], [], 60.0)
+
+
 def test_a_lowered_light_torque_above_the_limit_keeps_the_design(monkeypatch):
-    """An LTE that rises at light load (70 µrad below 30 N m) and above 60 µrad at the
-    design torque: the lowered torque's light torque (0.15 × ~158 ≈ 24 N m) is above the
-    limit, so no lowered torque keeps it at every torque: the design as it was."""
-    law = ((10.0, 70.0), (30.0, 70.0), (55.6, 49.1), (161.0, 60.3), (371.2, 83.5))
-    targets, setup, best, seen = _start(monkeypatch, law)
-    got = written_lte_capacity(best, targets, setup, None, lambda s: None)
+    """The measured 14x36: within 60 µrad only from 36.4 to 212.1 N m, narrower than the
+    light torque's 0.15 of the design torque (0.15 × 212.1 = 31.8 N m, 62.4 µrad there): no
+    lowered torque keeps the limit at every torque, the design as it was, the window said
+    in the line and the design torque's source."""
+    targets, setup, best, seen = _start(monkeypatch, _MEASURED)
+    lines: list[str] = []
+    got = written_lte_capacity(best, targets, setup, None, lines.append)
     assert got is best and "lowered" not in setup
+    assert len(seen) >= 2  # the range at the design torque, then one lowered torque tried
+    assert "no design torque below 371.2" in lines[-1] and "tried at 212" in lines[-1]
+    assert "only, and a design torque's light torque is 0.15 of it" in lines[-1]
+    assert setup["source"].startswith("the ISO 10300 capacity")
+    assert "at no lower design torque" in setup["source"]

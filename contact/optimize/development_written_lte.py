@@ -24,7 +24,7 @@ the LTE once more). A design torque the basic file gives is kept.
 
 Public names
 ------------
-written_lte_capacity, lowered_torque
+written_lte_capacity, lowered_torque, lte_window
 """
 
 from __future__ import annotations
@@ -50,7 +50,7 @@ from contact.study.lte_within import within_torque
 from geometry.core.errors import raise_if_interrupted
 from geometry.core.text import plain_number
 
-__all__ = ["lowered_torque", "written_lte_capacity"]
+__all__ = ["lowered_torque", "lte_window", "written_lte_capacity"]
 
 log = logging.getLogger("contact.optimize.development")
 
@@ -124,7 +124,8 @@ def written_lte_capacity(best: DevelopmentEvaluation, targets: DevelopmentTarget
     setup : dict
         The development's setup: ``torques`` [N·m] (light, design), ``source``,
         ``centre_v``; updated (``torques``, ``source``, ``lowered``) where the torque is
-        lowered.
+        lowered, its ``source`` extended by the LTE found where no lower torque keeps the
+        limit (:func:`lte_window`).
     teeth : KeptTeeth or None
         The shell teeth kept across the development's designs.
     say : callable (str) → None
@@ -199,10 +200,71 @@ def written_lte_capacity(best: DevelopmentEvaluation, targets: DevelopmentTarget
         seen.update(zip(there[0], there[1], strict=True))
         if there[1][0] > limit:  # the lowered light torque above the limit already
             break
+    ts = sorted(seen)
+    low, high = lte_window(ts, [seen[t] for t in ts], limit)
+    window = ""
+    if math.isfinite(low) and math.isfinite(high):
+        window = (f"; it keeps {limit:g} urad from about {plain_number(round(low, 1))} to "
+                  f"{plain_number(round(high, 1))} N m only, and a design torque's light "
+                  f"torque is {targets.light_load:g} of it")
     say(f"  the written drive LTE p-p {before}: no design torque below "
         f"{plain_number(design)} N m found where it keeps {limit:g} urad at every torque"
-        + (f" (tried {'; '.join(tried)})" if tried else ""))
+        + (f" (tried {'; '.join(tried)})" if tried else "") + window)
+    setup["source"] = (f"{setup['source']}; the written bearing keeps the drive LTE within "
+                       f"{limit:g} urad at no lower design torque ({before}{window})")
     return best
+
+
+def lte_window(torques: Sequence[float], lte: Sequence[float], limit: float
+               ) -> tuple[float, float]:
+    """The torques [N·m] between which an LTE p-p keeps ``limit``: the first run of
+    torques at which it does, each end linear to the neighbour above the limit.
+
+    Parameters
+    ----------
+    torques : sequence of float, shape (n,) — [N·m]
+        Ascending torques.
+    lte : sequence of float, shape (n,) — [µrad]
+        The LTE p-p at each.
+    limit : float — [µrad]
+
+    Returns
+    -------
+    (low, high) : (float, float) — [N·m]
+        The lower end (the first torque where the run starts at it) and the upper end
+        (the last torque where the run ends at it); NaN, NaN where no value keeps the
+        limit or a value is not finite.
+
+    Raises
+    ------
+    ValueError
+        ``torques`` and ``lte`` of different lengths, or empty.
+
+    Notes
+    -----
+    Linear between the torques analysed, as
+    :func:`~contact.study.lte_within.within_torque`. Source: issue 71 ("LTE p-p ≤ 60 µrad
+    at every torque" from the light torque, 15 % of the design torque, to the design
+    torque): a window narrower than that ratio holds no design torque.
+    """
+    t = np.asarray(torques, float)
+    y = np.asarray(lte, float)
+    if t.shape != y.shape or t.size == 0:
+        raise ValueError(f"lte_window: {t.size} torques and {y.size} LTE values")
+    inside = np.flatnonzero(y <= limit)
+    if inside.size == 0 or not (np.all(np.isfinite(t)) and np.all(np.isfinite(y))):
+        return math.nan, math.nan
+    first = int(inside[0])
+    last = first
+    while last + 1 < t.size and y[last + 1] <= limit:
+        last += 1
+
+    def crossing(i: int, j: int) -> float:
+        return float(t[i] + (limit - y[i]) / (y[j] - y[i]) * (t[j] - t[i]))
+
+    low = float(t[0]) if first == 0 else crossing(first - 1, first)
+    high = float(t[-1]) if last == t.size - 1 else crossing(last, last + 1)
+    return low, high
 
 
 def _curve(found: tuple[Sequence[float], Sequence[float]]) -> str:
