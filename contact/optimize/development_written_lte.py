@@ -24,7 +24,7 @@ the LTE once more). A design torque the basic file gives is kept.
 
 Public names
 ------------
-written_lte_capacity, lowered_torque, lte_window
+written_lte_capacity, lowered_torque, lte_window, redeveloped_in_window
 """
 
 from __future__ import annotations
@@ -50,7 +50,7 @@ from contact.study.lte_within import within_torque
 from geometry.core.errors import raise_if_interrupted
 from geometry.core.text import plain_number
 
-__all__ = ["lowered_torque", "lte_window", "written_lte_capacity"]
+__all__ = ["lowered_torque", "lte_window", "redeveloped_in_window", "written_lte_capacity"]
 
 log = logging.getLogger("contact.optimize.development")
 
@@ -212,7 +212,90 @@ def written_lte_capacity(best: DevelopmentEvaluation, targets: DevelopmentTarget
         + (f" (tried {'; '.join(tried)})" if tried else "") + window)
     setup["source"] = (f"{setup['source']}; the written bearing keeps the drive LTE within "
                        f"{limit:g} urad at no lower design torque ({before}{window})")
+    if math.isfinite(low) and math.isfinite(high) and high < design:
+        setup["lte_window"] = (low, high, before)
     return best
+
+
+def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], basic: Any,
+                          say: Callable[[str], None]) -> Any:
+    """The drive development run again at the upper end of the torque window its written
+    bearing kept the verdict's LTE limit in (:func:`written_lte_capacity` records it where
+    no lowered torque kept it with that bearing), kept where its own written design keeps
+    the limit at every torque ``ltca run`` judges.
+
+    Parameters
+    ----------
+    run : callable (float) → DevelopmentResult
+        The development of the same basic data at a given design torque [N·m] (the
+        drive search, the check and its steps, the coast flank and the case, at that
+        torque's light and design torque).
+    setup : dict
+        The development's setup; its ``"lte_window"`` (low, high [N·m], the LTE text)
+        where :func:`written_lte_capacity` found no lower torque.
+    basic : BasicDesign
+        The basic data as given (the result's ``basic``: no design torque of its own).
+    say : callable (str) → None
+        Where the step's lines go.
+
+    Returns
+    -------
+    DevelopmentResult or None
+        The development at ``floor_torque(high)``, its design torque the development's own
+        (``torque_lowered``, ``torque_source`` saying why, ``basic`` as given), where its
+        drive LTE p-p at the light and design torque and between them (its
+        ``lte_range``) keeps the limit; None where no window was recorded, the run fails
+        or its LTE does not keep the limit.
+
+    Raises
+    ------
+    Nothing the run raises but an interrupt (a failed run keeps the first development).
+
+    Notes
+    -----
+    Measured (docs/synthesis.md, "The design torque where the written design keeps its
+    LTE"): the 14x36 at Σ 70°'s written bearing keeps 60 µrad from 36.4 to 212.1 N m only
+    (its LTE falls from the unloaded TE's 70 µrad at light load), narrower than the light
+    torque's 0.15 of a design torque; developed at 212.1 N m it wrote 47 / 50 µrad at 31.8 /
+    212.1 N m, 28.4 between. Source: issue 71 ("LTE p-p ≤ 60 µrad at every torque").
+    """
+    window = setup.get("lte_window")
+    if window is None:
+        return None
+    low, high, before = window
+    limit = verdict_lte_limit()
+    torque = floor_torque(high)
+    design = float(setup["torques"][1])
+    say(f"development: the written drive bearing keeps {limit:g} urad from about "
+        f"{plain_number(round(low, 1))} to {plain_number(round(high, 1))} N m only; the drive "
+        f"developed again at {plain_number(torque)} N m")
+    try:
+        again = run(torque)
+    except Exception as exc:  # the first development stands
+        raise_if_interrupted(exc)
+        log.info("development: the development at %.4g N m failed: %s", torque, exc)
+        say(f"development: the development at {plain_number(torque)} N m failed ({exc}); "
+            f"the design torque kept at {plain_number(design)} N m")
+        return None
+    ends = np.asarray(again.best.metrics["lte_peak_to_peak"], float)
+    judged = again.lte_range
+    peak = float(judged["peak"]) if judged is not None else math.nan
+    if not (np.all(np.isfinite(ends)) and np.all(ends <= limit) and peak <= limit):
+        say(f"development: at {plain_number(torque)} N m its drive LTE p-p "
+            f"{' / '.join(f'{x:.1f}' for x in ends)} urad, {peak:.1f} between: above "
+            f"{limit:g} urad or not judged; the design torque kept at {plain_number(design)} N m")
+        return None
+    source = (f"the torque up to which the developed bearing keeps the drive LTE within "
+              f"{limit:g} urad at every torque: at "
+              f"{setup['source'].split(',')[0].split(';')[0]} {plain_number(design)} N m the "
+              f"written bearing's LTE p-p was {before}, within {limit:g} urad from about "
+              f"{plain_number(round(low, 1))} to {plain_number(round(high, 1))} N m only (its "
+              f"light torque a share of the design torque); developed at "
+              f"{plain_number(torque)} N m: {' / '.join(f'{x:.1f}' for x in ends)} urad at "
+              f"{' / '.join(plain_number(float(t)) for t in again.torque)} N m, "
+              f"{peak:.1f} between")
+    say(f"  design torque {plain_number(design)} -> {plain_number(torque)} N m: {source}")
+    return dataclasses.replace(again, basic=basic, torque_source=source, torque_lowered=True)
 
 
 def lte_window(torques: Sequence[float], lte: Sequence[float], limit: float
