@@ -89,14 +89,15 @@ def test_no_cut_where_the_lte_keeps_the_limit_or_no_torque_does(monkeypatch):
     """An LTE within 60 µrad over the whole range: the design and setup unchanged, nothing
     said; an LTE above 60 µrad at the light torque already: unchanged, said."""
     keeping = ((20.0, 40.0), (55.6, 45.0), (371.2, 59.0))
-    targets, setup, best, seen = _start(monkeypatch, keeping)
+    targets, setup, best, _seen = _start(monkeypatch, keeping)
     lines: list[str] = []
     assert written_lte_capacity(best, targets, setup, None, lines.append) is best
     assert "lowered" not in setup and lines == []
     high = ((20.0, 70.0), (55.6, 65.0), (371.2, 90.0))
-    targets, setup, best, seen = _start(monkeypatch, high)
+    targets, setup, best, _seen = _start(monkeypatch, high)
     assert written_lte_capacity(best, targets, setup, None, lines.append) is best
     assert "lowered" not in setup and "no design torque below 371.2" in lines[-1]
+    assert "lte_window" not in setup  # no torque keeps it: no window to develop in
 
 
 #: the 14x36's written bearing as `ltca run --torque` measured it (2026-11-28, branch
@@ -136,3 +137,72 @@ def test_a_lowered_light_torque_above_the_limit_keeps_the_design(monkeypatch):
     assert "only, and a design torque's light torque is 0.15 of it" in lines[-1]
     assert setup["source"].startswith("the ISO 10300 capacity")
     assert "at no lower design torque" in setup["source"]
+    low, high, _text = setup["lte_window"]  # the window the drive is developed again in
+    assert (low, high) == pytest.approx((36.377, 212.147), abs=1e-3)
+
+
+@dataclasses.dataclass(frozen=True)
+class _Result:
+    """The fields of a DevelopmentResult that redeveloped_in_window reads and replaces."""
+    best: object
+    lte_range: dict | None
+    torque: tuple[float, float]
+    basic: object = "given"
+    torque_source: str = "[synthesis] design_torque of the basic file"
+    torque_lowered: bool = False
+
+
+def _window_setup():
+    """The setup written_lte_capacity leaves on the measured 14x36 (window 36.4-212.1)."""
+    return {"torques": [55.6, 371.2], "source": "the ISO 10300 capacity, the pinion ...",
+            "lte_window": (36.377, 212.147, "48.9 / 83.9 urad at 55.6 / 371.2 N m")}
+
+
+def test_the_drive_developed_again_at_the_window_s_upper_end_is_kept_where_it_keeps_60():
+    """The 14x36 given 212.1 N m (measured: 47 / 50 µrad at 31.8 / 212.1 N m, 28.4 between):
+    the run asked at floor_torque(212.147) = 212.1, its result kept with the basic data as
+    given, the torque the development's own and its source in numbers."""
+    from contact.optimize.development import DevelopmentTargets
+    from contact.optimize.development_written_lte import redeveloped_in_window
+
+    asked: list[float] = []
+    best = checked(dict(_VALUES), _metrics(lte_peak_to_peak=[47.0, 50.4]),
+                   DevelopmentTargets(), 0.6)
+
+    def run(torque):
+        asked.append(torque)
+        return _Result(best, {"peak": 28.4, "at": 91.9}, (31.8, torque))
+
+    lines: list[str] = []
+    got = redeveloped_in_window(run, _window_setup(), "as given", lines.append)
+    assert asked == [pytest.approx(212.1, abs=1e-9)]
+    assert got.basic == "as given" and got.torque_lowered is True
+    assert "371.2 N m" in got.torque_source and "47.0 / 50.4 urad at 31.8 / 212.1 N m" in (
+        got.torque_source) and "28.4 between" in got.torque_source
+    assert any("371.2 -> 212.1 N m" in line for line in lines)
+
+
+def test_no_redevelopment_without_a_window_and_none_kept_above_the_limit():
+    """No window recorded: nothing run. A run whose LTE between the torques (61 µrad) or
+    at a torque exceeds 60 µrad, or that fails: None (the first development stands)."""
+    from contact.optimize.development import DevelopmentTargets
+    from contact.optimize.development_written_lte import redeveloped_in_window
+
+    def never(torque):
+        raise AssertionError("run without a window")
+
+    assert redeveloped_in_window(never, {"torques": [55.6, 371.2], "source": "x"}, None,
+                                 lambda s: None) is None
+    best = checked(dict(_VALUES), _metrics(lte_peak_to_peak=[47.0, 50.4]),
+                   DevelopmentTargets(), 0.6)
+    between = lambda t: _Result(best, {"peak": 61.0, "at": 91.9}, (31.8, t))  # noqa: E731
+    assert redeveloped_in_window(between, _window_setup(), None, lambda s: None) is None
+    unjudged = lambda t: _Result(best, None, (31.8, t))  # noqa: E731
+    assert redeveloped_in_window(unjudged, _window_setup(), None, lambda s: None) is None
+
+    def fails(torque):
+        raise ValueError("no case")
+
+    lines: list[str] = []
+    assert redeveloped_in_window(fails, _window_setup(), None, lines.append) is None
+    assert "failed (no case)" in lines[-1]
