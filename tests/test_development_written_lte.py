@@ -180,7 +180,7 @@ def test_the_drive_developed_again_at_the_window_s_upper_end_is_kept_where_it_ke
     assert asked == [pytest.approx(212.1, abs=1e-9)]
     assert got.basic == "as given" and got.torque_lowered is True
     assert "371.2 N m" in got.torque_source and "47.0 / 50.4 urad at 31.8 / 212.1 N m" in (
-        got.torque_source) and "28.4 between" in got.torque_source
+        got.torque_source) and "at most 28.4 urad over ltca run's range" in got.torque_source
     assert any("371.2 -> 212.1 N m" in line for line in lines)
 
 

@@ -282,8 +282,9 @@ def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], ba
     peak = float(judged["peak"]) if judged is not None else math.nan
     if not (np.all(np.isfinite(ends)) and np.all(ends <= limit) and peak <= limit):
         say(f"development: at {plain_number(torque)} N m its drive LTE p-p "
-            f"{' / '.join(f'{x:.1f}' for x in ends)} urad, {peak:.1f} between: above "
-            f"{limit:g} urad or not judged; the design torque kept at {plain_number(design)} N m")
+            f"{' / '.join(f'{x:.1f}' for x in ends)} urad, at most {peak:.1f} over the "
+            f"range: above {limit:g} urad or not judged; the design torque kept at "
+            f"{plain_number(design)} N m")
         return None
     source = (f"the torque up to which the developed bearing keeps the drive LTE within "
               f"{limit:g} urad at every torque: at "
@@ -293,7 +294,7 @@ def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], ba
               f"light torque a share of the design torque); developed at "
               f"{plain_number(torque)} N m: {' / '.join(f'{x:.1f}' for x in ends)} urad at "
               f"{' / '.join(plain_number(float(t)) for t in again.torque)} N m, "
-              f"{peak:.1f} between")
+              f"at most {peak:.1f} urad over ltca run's range (the check's reading)")
     say(f"  design torque {plain_number(design)} -> {plain_number(torque)} N m: {source}")
     return dataclasses.replace(again, basic=basic, torque_source=source, torque_lowered=True)
 
