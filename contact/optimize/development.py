@@ -50,7 +50,10 @@ bearing keeps the verdict's 60 µrad
 (:func:`~contact.optimize.development_lte_capacity.lte_capacity`); where it exceeds the
 local pitting limit, a longer
 pattern and one centred lower are tried first
-(:mod:`contact.optimize.development_pitting`). Then the **coast flank**
+(:mod:`contact.optimize.development_pitting`). After the last drive step, the design
+torque no higher than where the written drive design keeps 60 µrad at every torque ``ltca
+run`` judges, else the drive developed again where its bearing's window ends
+(:mod:`contact.optimize.development_written_lte`). Then the **coast flank**
 (:func:`~contact.optimize.development_coast_flank.coast_development`): the chosen
 design's coast flank, synthesised from its own prescriptions, is checked at
 :data:`CHECK_LTCA` at the same light and design torque against the same targets (it

@@ -20,7 +20,11 @@ LTE p-p over ``ltca run``'s ``lte_range`` torques
 (:func:`~contact.study.lte_within.within_torque`, linear between the torques analysed),
 and kept there only where the same range at the lowered light and design torque keeps the
 limit at every torque. The bearing is not changed (no step runs again: a step could raise
-the LTE once more). A design torque the basic file gives is kept.
+the LTE once more). Where no lowered torque keeps it with that bearing (its LTE falls from
+the unloaded TE at light load, and a lower design torque's light torque is lower too), the
+window it keeps the limit in is recorded and :func:`redeveloped_in_window` develops the
+drive again at its upper end, kept where that development keeps the limit (the 14x36:
+211.7 N m, 46.8 / 50.1 µrad). A design torque the basic file gives is kept.
 
 Public names
 ------------
