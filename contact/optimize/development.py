@@ -50,7 +50,10 @@ bearing keeps the verdict's 60 µrad
 (:func:`~contact.optimize.development_lte_capacity.lte_capacity`); where it exceeds the
 local pitting limit, a longer
 pattern and one centred lower are tried first
-(:mod:`contact.optimize.development_pitting`). Then the **coast flank**
+(:mod:`contact.optimize.development_pitting`). After the last drive step, the design
+torque no higher than where the written drive design keeps 60 µrad at every torque ``ltca
+run`` judges, else the drive developed again where its bearing's window ends
+(:mod:`contact.optimize.development_written_lte`). Then the **coast flank**
 (:func:`~contact.optimize.development_coast_flank.coast_development`): the chosen
 design's coast flank, synthesised from its own prescriptions, is checked at
 :data:`CHECK_LTCA` at the same light and design torque against the same targets (it
@@ -220,6 +223,10 @@ from contact.optimize.development_targets import (
 )
 from contact.optimize.development_written import with_synthesis_fe_level
 from contact.optimize.development_written_drive import written_drive_check
+from contact.optimize.development_written_lte import (
+    redeveloped_in_window,
+    written_lte_capacity,
+)
 from geometry.case import Case
 from geometry.core.blas import blas_threads
 from geometry.core.errors import InputError, raise_if_interrupted
@@ -527,6 +534,17 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
     # relief deeper, on the design as it is written (after the edge-peak step's relief;
     # development_hollow_target)
     best = checked_hollow_target(best, targets, setup, teeth, say, placed)
+    # after the last drive step that can raise its LTE: the design torque no higher than
+    # where the written bearing keeps the verdict's LTE limit at every torque, else the
+    # drive developed again where it could (development_written_lte)
+    best, again = _at_written_lte(best, basic, targets, setup, teeth, say, outclassed_below,
+                                  functools.partial(_at_given_torque, basic, targets=targets,
+                                                    progress=progress,
+                                                    synthesis_progress=synthesis_progress,
+                                                    root_stress=root_stress,
+                                                    outclassed_below=outclassed_below))
+    if again is not None:
+        return again
     developed = with_flank_options(basic, flank, best.values)
     # the coast flank, after the drive flank is chosen (which it does not change): checked
     # at the default sampling as synthesised, developed where it misses a target
@@ -1080,6 +1098,32 @@ def _pitting_outclassed(case: Case, setup: dict[str, Any], below: float,
             f"{plain_number(float(setup['torques'][1]))} N m), below {plain_number(below)} N m: "
             f"stopped")
         raise Outclassed(bound)
+
+
+def _at_written_lte(best: DevelopmentEvaluation, basic: BasicDesign,
+                    targets: DevelopmentTargets, setup: dict[str, Any], teeth: KeptTeeth,
+                    say: Callable[[str], None], outclassed_below: float,
+                    rerun: Callable[[float], DevelopmentResult]
+                    ) -> tuple[DevelopmentEvaluation, DevelopmentResult | None]:
+    """The written drive design at a design torque where it keeps the verdict's LTE limit
+    at every torque (:func:`~contact.optimize.development_written_lte.written_lte_capacity`),
+    else the development ``rerun`` at the upper end of the window its bearing keeps it in
+    (:func:`~contact.optimize.development_written_lte.redeveloped_in_window`); a design
+    torque the basic file gives is kept (``best``, None). The 14x36 at Sigma 70 deg: 84
+    urad at its ISO capacity, below the FAIL level ``lte_capacity`` acts on."""
+    if basic.options.design_torque is not None or basic.rating.get("design_torque") is not None:
+        return best, None
+    best = written_lte_capacity(best, targets, setup, teeth, say)
+    _outclassed(setup, outclassed_below)
+    return best, redeveloped_in_window(rerun, setup, basic, say)
+
+
+def _at_given_torque(basic: BasicDesign, torque: float, **kw: Any) -> DevelopmentResult:
+    """:func:`develop` of ``basic`` at the design torque ``torque`` [N·m] (as a basic file
+    giving it: ``[synthesis] design_torque``), the one gear process."""
+    given = dataclasses.replace(basic, options=dataclasses.replace(basic.options,
+                                                                   design_torque=torque))
+    return develop(given, gear_fallback=False, **kw)
 
 
 def _at_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
