@@ -1,6 +1,7 @@
 """The unloaded TE of a ratio-1 pair on the generated gear: what the synthesis designs and
-what sets the rest (issue 71, docs/synthesis.md "The 16×16 at Σ 60°'s unloaded TE: the
-designed parabola, the profile modifications and the ease-off spline at a relief corner").
+what sets the rest (issue 71, docs/synthesis.md "The FM 16×16 at Σ 60°'s unloaded TE of
+85 µrad: the designed parabola, the profile crowning and the ease-off spline at a relief
+corner").
 
 The face-milled spiral bevel 16×16 at Σ 60° (`benchmarks/data/unseen_designs/
 spiral_bevel_16x16_s60.toml`, δ1 = δ2 = 30°, gear generated) at the prescriptions its
@@ -80,7 +81,8 @@ def test_unrelieved_ratio_one_flank_carries_the_designed_parabola_by_utca():
     (measured 10.08 µrad/pitch²), and the cycle's UTE p-p is that parabola's at the
     transfers, below te_level · 0.6² (measured 2.7 µrad, transfers at 0.48–0.52 pitch from
     the vertex) — the synthesis's TE design holds at ratio 1; the 85 µrad of the written
-    case come from the profile modifications (docs)."""
+    case come from its profile crowning (62) and the ease-off spline at its tip relief's
+    corner (18; docs)."""
     case, _ = _case()
     eo = ease_off(case, flank="drive")
     cycle = unloaded_cycle(eo)
@@ -99,8 +101,8 @@ def test_unrelieved_ratio_one_flank_carries_the_designed_parabola_by_utca():
 @pytest.mark.xfail(strict=True, reason=(
     "the default 41 x 21 ease-off grid's bicubic interpolating spline of the ease-off "
     "rings next to a steep profile relief's corner: 30 urad below the unrelieved flank's "
-    "spline at u 0.5, v 0.525, where the node values are equal (docs/synthesis.md, 'The "
-    "16x16 at Sigma 60 deg's unloaded TE'); not fixed"))
+    "spline at u 0.5, v 0.50, where the node values are equal (docs/synthesis.md, 'The "
+    "FM 16x16 at Sigma 60 deg's unloaded TE of 85 urad'); not fixed"))
 def test_a_short_tip_relief_reads_the_same_unloaded_te_on_the_default_grid():
     """Tip relief 15 µm from 0.9 of the way from M to the tip: the UTE p-p on the default
     grid within 2 µrad of an 81 × 81 grid's (measured 34.4 against 4.1 µrad; 41 × 41: 7.1),
