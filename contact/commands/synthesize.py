@@ -220,7 +220,7 @@ def low_overlap_lte(development, written_ute: tuple[float, float] | None = None,
         E.g. "the developed bearing's LTE p-p: drive 25/52 urad at 27/180 N m, coast 30/48
         urad at 27/121 N m (light/design), the development's target 40 urad missed".
     """
-    from contact.optimize.development_remedy import lte_parts
+    from contact.optimize.development_remedy import above_limit_text, lte_parts
     from contact.study.verdicts import LTE_LIMIT
 
     parts = lte_parts(development)
@@ -239,7 +239,7 @@ def low_overlap_lte(development, written_ute: tuple[float, float] | None = None,
             else "missed on the drive flank, met on the coast")
     return (f"the developed bearing's LTE p-p: {', '.join(parts)} (light/design), the "
             f"development's target {target:g} urad " + said
-            + (f", above the verdict's {LTE_LIMIT:g} urad" if worst > LTE_LIMIT else "")
+            + above_limit_text(development, LTE_LIMIT)
             + reach_text(development, LTE_LIMIT, written_ute, checks, unrelieved))
 
 
@@ -556,6 +556,7 @@ def first_lines(basic, development, record, shown: str) -> list[str]:
         remedy.
     """
     from contact.optimize.development_remedy import (
+        above_limit_text,
         change_text,
         chosen_check,
         contact_ratios_of,
@@ -595,7 +596,7 @@ def first_lines(basic, development, record, shown: str) -> list[str]:
            f"profile contact ratio eps_va {before[0]:.2f} below "
            f"{PROFILE_CONTACT_RATIO_NOTE:g}")
     lines = [f"{low}: the developed LTE p-p {', '.join(lte_parts(development))} "
-             f"(light/design), above the verdict's {LTE_LIMIT:g} urad"]
+             f"(light/design){above_limit_text(development, LTE_LIMIT)}"]
     if _ute_is_the_lte(development, record):
         return [*lines, "  the drive LTE is the written flank's unloaded TE, not the contact "
                         "ratio's (the note below): no contact-ratio remedy is the lever"]
