@@ -23,8 +23,29 @@ from geometry.core.text import plain_number
 ORDER = 30
 
 _HEADER = ("# Written by `ltca synthesize {basic}` (geometry.synthesis.case_synthesis: "
-           "ISO 23509 blank, Formate gear,\n# pinion by Litvin local synthesis); see `source` and "
+           "ISO 23509 blank, {gear} gear,\n# pinion by Litvin local synthesis); see `source` and "
            "docs/synthesis.md. Do not edit by hand.\n")
+
+
+def header_text(shown: str, gear_process: str) -> str:
+    """The comment a written case starts with: the basic file and the methods, the gear's
+    process as the case holds it (issue 71, round 26c: a spiral bevel 17x23 whose generated
+    gear was kept read "Formate gear" there, its ``[gear] process = "Generate"``).
+
+    Parameters
+    ----------
+    shown : str
+        The basic file as the user named it.
+    gear_process : str
+        The case's ``gear.process``: "Formate" or "Generate" (geometry.machine).
+
+    Returns
+    -------
+    str
+        Two comment lines, ending in a newline.
+    """
+    gear = "generated" if gear_process == "Generate" else "Formate"
+    return _HEADER.format(basic=shown, gear=gear)
 
 
 def register(sub) -> None:
@@ -1067,7 +1088,7 @@ def _run_synthesize(args: argparse.Namespace) -> int:
     coast = checked_contact(case, basic.design)
     case, ratios, notes, record = _noted(basic, case, development)
     notes += coast + fe_level_notes(development, case)
-    text = _HEADER.format(basic=shown) + case.to_toml()
+    text = header_text(shown, case.gear.process) + case.to_toml()
     # the written text must load back to the same case
     case_from_dict(tomllib.loads(text))
     path = write_text_atomic(Path(output), text)
