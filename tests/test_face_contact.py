@@ -353,7 +353,7 @@ def test_synthesizes_note_gives_the_developed_lte_in_numbers():
     text = low_overlap_lte(dev)
     assert text == ("the developed bearing's LTE p-p: drive 28/50 urad at 28.8/192 N m, "
                     "coast 67/62 urad at 28.8/119 N m (light/design), the development's "
-                    "target 40 urad missed, above the verdict's 60 urad")
+                    "target 40 urad missed, above the verdict's 60 urad on the coast flank")
     # one flank within the target, the other not: said which (a face-hobbed 8x37 of
     # unseen round 10 read "drive 10/20, coast 42/50 ..., target 40 urad missed")
     dev.best.metrics["lte_peak_to_peak"] = np.array([10.0, 19.7])
@@ -422,3 +422,36 @@ def test_the_teeth_remedy_keeps_the_ratio_as_near_as_whole_teeth_allow():
     with pytest.raises(InputError, match=r"^target: .*\(0, 5\]"):
         teeth_remedy(design, math.nan)
     assert "the module is the lever left" not in overlap_text(design)
+
+
+def test_synthesizes_note_names_the_flank_above_the_verdicts_limit():
+    """Where one flank's written LTE p-p exceeds the verdict's 60 µrad and the other's does
+    not, the note names the one (issue 71, round 26c, branch unseen87: the spiral bevel
+    17x23's note read "drive 31/96 ..., coast 26/58 urad ... (light/design), ..., above
+    the verdict's 60 urad", its coast flank within); where both do, or only one flank was
+    checked, it says so unqualified; where none does, nothing. The limit compared is the
+    verdict's own (contact.study.verdicts.LTE_LIMIT), the LTE values the 17x23's."""
+    import types
+
+    import numpy as np
+
+    from contact.commands.synthesize import low_overlap_lte
+    from contact.optimize.development import DevelopmentTargets
+    from contact.optimize.development_remedy import above_limit_text
+    from contact.study.verdicts import LTE_LIMIT
+
+    dev = types.SimpleNamespace(
+        best=types.SimpleNamespace(metrics={"lte_peak_to_peak": np.array([31.0, 96.0])}),
+        torque=(230.5, 1537.0), coast={"lte_peak_to_peak": np.array([26.0, 58.0])},
+        coast_design_torques=(110.8, 739.3), targets=DevelopmentTargets())
+    assert LTE_LIMIT == 60.0
+    assert low_overlap_lte(dev) == (
+        "the developed bearing's LTE p-p: drive 31/96 urad at 230.5/1537 N m, coast 26/58 "
+        "urad at 110.8/739.3 N m (light/design), the development's target 40 urad missed, "
+        "above the verdict's 60 urad on the drive flank")
+    dev.coast = {"lte_peak_to_peak": np.array([61.0, 58.0])}  # both above
+    assert above_limit_text(dev, LTE_LIMIT) == ", above the verdict's 60 urad"
+    dev.coast = None  # the drive flank alone checked
+    assert above_limit_text(dev, LTE_LIMIT) == ", above the verdict's 60 urad"
+    dev.best.metrics["lte_peak_to_peak"] = np.array([31.0, 60.0])  # at the limit: within
+    assert above_limit_text(dev, LTE_LIMIT) == ""

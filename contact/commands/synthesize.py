@@ -23,8 +23,29 @@ from geometry.core.text import plain_number
 ORDER = 30
 
 _HEADER = ("# Written by `ltca synthesize {basic}` (geometry.synthesis.case_synthesis: "
-           "ISO 23509 blank, Formate gear,\n# pinion by Litvin local synthesis); see `source` and "
+           "ISO 23509 blank, {gear} gear,\n# pinion by Litvin local synthesis); see `source` and "
            "docs/synthesis.md. Do not edit by hand.\n")
+
+
+def header_text(shown: str, gear_process: str) -> str:
+    """The comment a written case starts with: the basic file and the methods, the gear's
+    process as the case holds it (issue 71, round 26c: a spiral bevel 17x23 whose generated
+    gear was kept read "Formate gear" there, its ``[gear] process = "Generate"``).
+
+    Parameters
+    ----------
+    shown : str
+        The basic file as the user named it.
+    gear_process : str
+        The case's ``gear.process``: "Formate" or "Generate" (geometry.machine).
+
+    Returns
+    -------
+    str
+        Two comment lines, ending in a newline.
+    """
+    gear = "generated" if gear_process == "Generate" else "Formate"
+    return _HEADER.format(basic=shown, gear=gear)
 
 
 def register(sub) -> None:
@@ -220,7 +241,7 @@ def low_overlap_lte(development, written_ute: tuple[float, float] | None = None,
         E.g. "the developed bearing's LTE p-p: drive 25/52 urad at 27/180 N m, coast 30/48
         urad at 27/121 N m (light/design), the development's target 40 urad missed".
     """
-    from contact.optimize.development_remedy import lte_parts
+    from contact.optimize.development_remedy import above_limit_text, lte_parts
     from contact.study.verdicts import LTE_LIMIT
 
     parts = lte_parts(development)
@@ -239,7 +260,7 @@ def low_overlap_lte(development, written_ute: tuple[float, float] | None = None,
             else "missed on the drive flank, met on the coast")
     return (f"the developed bearing's LTE p-p: {', '.join(parts)} (light/design), the "
             f"development's target {target:g} urad " + said
-            + (f", above the verdict's {LTE_LIMIT:g} urad" if worst > LTE_LIMIT else "")
+            + above_limit_text(development, LTE_LIMIT)
             + reach_text(development, LTE_LIMIT, written_ute, checks, unrelieved))
 
 
@@ -556,6 +577,7 @@ def first_lines(basic, development, record, shown: str) -> list[str]:
         remedy.
     """
     from contact.optimize.development_remedy import (
+        above_limit_text,
         change_text,
         chosen_check,
         contact_ratios_of,
@@ -595,7 +617,7 @@ def first_lines(basic, development, record, shown: str) -> list[str]:
            f"profile contact ratio eps_va {before[0]:.2f} below "
            f"{PROFILE_CONTACT_RATIO_NOTE:g}")
     lines = [f"{low}: the developed LTE p-p {', '.join(lte_parts(development))} "
-             f"(light/design), above the verdict's {LTE_LIMIT:g} urad"]
+             f"(light/design){above_limit_text(development, LTE_LIMIT)}"]
     if _ute_is_the_lte(development, record):
         return [*lines, "  the drive LTE is the written flank's unloaded TE, not the contact "
                         "ratio's (the note below): no contact-ratio remedy is the lever"]
@@ -1066,7 +1088,7 @@ def _run_synthesize(args: argparse.Namespace) -> int:
     coast = checked_contact(case, basic.design)
     case, ratios, notes, record = _noted(basic, case, development)
     notes += coast + fe_level_notes(development, case)
-    text = _HEADER.format(basic=shown) + case.to_toml()
+    text = header_text(shown, case.gear.process) + case.to_toml()
     # the written text must load back to the same case
     case_from_dict(tomllib.loads(text))
     path = write_text_atomic(Path(output), text)

@@ -34,7 +34,7 @@ Public names
 ------------
 REMEDY_TABLE, AppliedRemedy, ratio_changes, contact_ratios_of, prescribed_basic,
 checked_record, chosen_check, remedied_basic, file_value, change_text, lte_parts, worst_lte,
-lte_within, developed_with_remedy, applied_table
+above_limit_text, lte_within, developed_with_remedy, applied_table
 """
 
 from __future__ import annotations
@@ -47,7 +47,8 @@ from typing import Any, NamedTuple
 
 from geometry.core.text import plain_number
 
-__all__ = ["REMEDY_TABLE", "AppliedRemedy", "applied_table", "change_text", "checked_record",
+__all__ = ["REMEDY_TABLE", "AppliedRemedy", "above_limit_text", "applied_table", "change_text",
+           "checked_record",
            "chosen_check", "contact_ratios_of", "developed_with_remedy", "file_value", "lte_parts",
            "lte_within", "prescribed_basic", "ratio_changes", "remedied_basic", "worst_lte"]
 
@@ -364,6 +365,36 @@ def worst_lte(development) -> float:
     if development.coast is not None:
         worst = max(worst, float(max(development.coast["lte_peak_to_peak"])))
     return worst
+
+
+def above_limit_text(development, limit: float) -> str:
+    """The clause that says which written flank's LTE p-p exceeds the verdict's limit, to
+    follow :func:`lte_parts`: "" where none does, ", above the verdict's 60 urad" where
+    every flank listed does, else naming the one flank that does (issue 71, round 26c: a
+    spiral bevel 17x23 read "drive 31/96 urad at 230.5/1537 N m, coast 26/58 urad at
+    110.8/739.3 N m (light/design), ..., above the verdict's 60 urad", its coast within).
+
+    Parameters
+    ----------
+    development : contact.optimize.development.DevelopmentResult
+        Its ``best.metrics["lte_peak_to_peak"]`` (2,) [µrad] at the light and design
+        torque and, where checked, ``coast["lte_peak_to_peak"]`` (2,) [µrad].
+    limit : float
+        The verdict's LTE p-p limit [µrad] (:data:`contact.study.verdicts.LTE_LIMIT`).
+
+    Returns
+    -------
+    str
+        The clause, with its leading comma, or "".
+    """
+    drive = float(max(development.best.metrics["lte_peak_to_peak"])) > limit
+    coast = (None if development.coast is None
+             else float(max(development.coast["lte_peak_to_peak"])) > limit)
+    if not drive and not coast:
+        return ""
+    which = ("" if coast is None or (drive and coast)
+             else " on the drive flank" if drive else " on the coast flank")
+    return f", above the verdict's {limit:g} urad{which}"
 
 
 def lte_within(development, limit: float) -> bool:
