@@ -141,3 +141,41 @@ def law_evaluation(values: Mapping[str, float], metrics: Mapping[str, np.ndarray
     return DevelopmentEvaluation(0, dict(values), metrics, full[0], full[1], full[2], "", 0.0,
                                  case=types.SimpleNamespace(name="law"), full=full,
                                  checked=True)
+
+
+def lte_law_fake(law, torques: Iterable[float], seen: list | None = None
+                 ) -> Callable[..., Any]:
+    """An ``analysed`` stand-in whose LTE p-p is ``law`` ((torque [N·m], LTE [µrad]) pairs,
+    ascending), linear between, every other metric :func:`metrics`' (the light torque's
+    value at the first torque, the design torque's at the rest); ``torques`` where called
+    with none; each call's torques appended to ``seen``."""
+    t, y = np.array(law, float).T
+    default = list(torques)
+
+    def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
+             flank="drive"):
+        torques = list(torques) or default
+        if seen is not None:
+            seen.append(tuple(torques))
+        lte = np.interp(torques, t, y)
+        return (metrics(**{k: [v[0]] + [v[-1]] * (len(torques) - 1) for k, v in
+                           metrics().items()} | {"lte_peak_to_peak": lte}),
+                (0.0, 1.0, 0.0, 1.0, 2400.0))
+    return fake
+
+
+def lte_law_start(monkeypatch, law, torques: Iterable[float], values: Mapping[str, float]):
+    """(targets, setup, best, seen) of a development stand-in (:func:`stand_in`) whose LTE
+    follows ``law`` (:func:`lte_law_fake`), its checked design ``values`` at ``torques``
+    (light, design [N·m]), the design torque the ISO capacity; ``seen`` emptied."""
+    import dataclasses
+
+    seen: list = []
+    torques = list(torques)
+    fake = lte_law_fake(law, torques, seen)
+    targets, setup, _ = stand_in(monkeypatch, fake, torques)
+    setup["source"] = "the ISO 10300 capacity, the pinion torque at which ..."
+    best = checked(dict(values), fake(None, torques)[0], targets, 0.6)
+    best = dataclasses.replace(best, case=dict(values))
+    seen.clear()
+    return targets, setup, best, seen

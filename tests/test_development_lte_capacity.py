@@ -10,12 +10,9 @@ not numbers of a gear.
 
 from __future__ import annotations
 
-import dataclasses
-
 import numpy as np
 import pytest
-from development_stand_ins import checked, stand_in
-from development_stand_ins import metrics as _metrics
+from development_stand_ins import lte_law_start
 
 from contact.optimize.development_lte_capacity import lte_capacity
 from contact.optimize.development_variant import lte_fails
@@ -25,30 +22,8 @@ _LAW = ((45.0, 57.0), (97.4, 45.0), (281.4, 47.0), (465.4, 111.0), (649.4, 122.0
 _VALUES = {"path_angle": -80.0, "ellipse_length": 0.675}
 
 
-def _fake(law=_LAW, seen=None):
-    t, y = np.array(law).T
-
-    def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
-             flank="drive"):
-        torques = list(torques) or [97.4, 649.4]
-        if seen is not None:
-            seen.append(tuple(torques))
-        lte = np.interp(torques, t, y)
-        return (_metrics(**{k: [v[0]] + [v[-1]] * (len(torques) - 1) for k, v in
-                            _metrics().items()} | {"lte_peak_to_peak": lte}),
-                (0.0, 1.0, 0.0, 1.0, 2400.0))
-    return fake
-
-
 def _start(monkeypatch, law=_LAW, torques=(97.4, 649.4)):
-    seen: list = []
-    fake = _fake(law, seen)
-    targets, setup, _ = stand_in(monkeypatch, fake, list(torques))
-    setup["source"] = "the ISO 10300 capacity, the pinion torque at which ..."
-    best = checked(dict(_VALUES), fake(None, list(torques))[0], targets, 0.6)
-    best = dataclasses.replace(best, case=dict(_VALUES))
-    seen.clear()
-    return targets, setup, best, seen
+    return lte_law_start(monkeypatch, law, torques, _VALUES)
 
 
 def test_a_fail_level_lte_lowers_the_design_torque_to_where_it_keeps_60(monkeypatch):

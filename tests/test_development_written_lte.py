@@ -15,7 +15,7 @@ import math
 
 import numpy as np
 import pytest
-from development_stand_ins import checked, stand_in
+from development_stand_ins import checked, lte_law_start
 from development_stand_ins import metrics as _metrics
 
 from contact.optimize.development_written_lte import lowered_torque, written_lte_capacity
@@ -25,30 +25,8 @@ _LAW = ((20.0, 45.0), (55.6, 49.1), (161.0, 60.3), (266.0, 71.2), (371.2, 83.5))
 _VALUES = {"path_angle": -45.0, "ellipse_length": 0.7}
 
 
-def _fake(law=_LAW, seen=None):
-    t, y = np.array(law).T
-
-    def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
-             flank="drive"):
-        torques = list(torques) or [55.6, 371.2]
-        if seen is not None:
-            seen.append(tuple(torques))
-        lte = np.interp(torques, t, y)
-        return (_metrics(**{k: [v[0]] + [v[-1]] * (len(torques) - 1) for k, v in
-                            _metrics().items()} | {"lte_peak_to_peak": lte}),
-                (0.0, 1.0, 0.0, 1.0, 2400.0))
-    return fake
-
-
 def _start(monkeypatch, law=_LAW, torques=(55.6, 371.2)):
-    seen: list = []
-    fake = _fake(law, seen)
-    targets, setup, _ = stand_in(monkeypatch, fake, list(torques))
-    setup["source"] = "the ISO 10300 capacity, the pinion torque at which ..."
-    best = checked(dict(_VALUES), fake(None, list(torques))[0], targets, 0.6)
-    best = dataclasses.replace(best, case=dict(_VALUES))
-    seen.clear()
-    return targets, setup, best, seen
+    return lte_law_start(monkeypatch, law, torques, _VALUES)
 
 
 def test_lowered_torque_is_the_crossing_rounded_down():
