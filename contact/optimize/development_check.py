@@ -154,12 +154,12 @@ from contact.optimize.development_result import (
     DevelopmentEvaluation,
     case_torques,
     floor_torque,
+    scored,
 )
 from contact.optimize.development_stages import footprint_centre_v
 from contact.optimize.development_targets import (
     HEIGHT_NAME,
     DevelopmentTargets,
-    development_score,
 )
 from contact.optimize.development_te_steps import checked_te
 from contact.optimize.development_tolerance import (  # noqa: F401  (re-exported)
@@ -460,11 +460,8 @@ def rescored(best: DevelopmentEvaluation, tree, case: Case, targets: Development
     -----
     Source: the issue-71 development's targets (docs/synthesis.md, "Development bearing").
     """
-    ms, grid = design_metrics(tree, case), (*grid_bounds(tree), static_strength(tree))
-    full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
-                             pressure_limit=grid[4])
-    return dataclasses.replace(best, metrics=ms, objective=full[0], shortfalls=full[1],
-                               met=full[2], full=full)
+    grid = (*grid_bounds(tree), static_strength(tree))
+    return scored(best, design_metrics(tree, case), grid, targets, setup["centre_v"])
 
 
 def static_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
@@ -512,8 +509,6 @@ def static_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     if accepted is not None:
         torques, ms, grid, p = accepted
     torque = torques[1]
-    full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
-                             pressure_limit=grid[4])
     source = (f"the flank's static capacity of the developed bearing: its LTCA flank peak "
               f"pressure {p:.0f} MPa {'within' if p <= limit else 'still above'} the "
               f"static strength {limit:.0f} MPa, below "
@@ -521,8 +516,7 @@ def static_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
               f"{float(best.metrics['pressure_max_flank'][1]):.0f} MPa")
     setup.update(torques=torques, source=source, lowered=True)
     say(f"  design torque {plain_number(capacity)} -> {plain_number(torque)} N m: {source}")
-    return dataclasses.replace(best, metrics=ms, objective=full[0], shortfalls=full[1],
-                               met=full[2], full=full)
+    return scored(best, ms, grid, targets, setup["centre_v"])
 
 
 def placed_case(basic: BasicDesign, flank: str, memo: dict,
@@ -585,14 +579,10 @@ def checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTargets
             raise_if_interrupted(exc)
             log.info("development check of %s %d failed: %s", what, e.index + 1, exc)
             return False
-        full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
-                                 pressure_limit=grid[4])
-        checked.append(dataclasses.replace(e, metrics=ms, objective=full[0],
-                                           shortfalls=full[1], met=full[2], full=full,
-                                           checked=True))
+        checked.append(scored(e, ms, grid, targets, setup["centre_v"], checked=True))
         say(f"  check of {what} {e.index + 1} at the default sampling: "
             + evaluation_line(checked[-1], n_max).split(": ", 2)[-1])
-        return bool(full[2])
+        return bool(checked[-1].met)
 
     for e in ranked[:VERIFIED_DESIGNS]:
         if check(e):

@@ -27,7 +27,6 @@ lte_capacity
 
 from __future__ import annotations
 
-import dataclasses
 import math
 from collections.abc import Callable
 from typing import Any
@@ -41,8 +40,9 @@ from contact.optimize.development_result import (
     DevelopmentEvaluation,
     case_torques,
     floor_torque,
+    scored,
 )
-from contact.optimize.development_targets import DevelopmentTargets, development_score
+from contact.optimize.development_targets import DevelopmentTargets
 from contact.optimize.development_variant import lte_fails
 from geometry.core.text import plain_number
 
@@ -133,10 +133,7 @@ def lte_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         torques = case_torques(targets.light_load, new)
         ms, grid = analyse(torques)
         here = float(ms["lte_peak_to_peak"][1])
-        full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
-                                 pressure_limit=grid[4])
-        lowered = dataclasses.replace(best, metrics=ms, objective=full[0],
-                                      shortfalls=full[1], met=full[2], full=full)
+        lowered = scored(best, ms, grid, targets, setup["centre_v"])
         if not lte_fails(lowered):  # the verdict passes its LTE there: kept
             accepted = (torques, lowered)
         if not here > LTE_LIMIT:

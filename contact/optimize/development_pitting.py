@@ -16,7 +16,6 @@ is tolerant is kept. Imported by :mod:`contact.optimize.development`.
 
 from __future__ import annotations
 
-import dataclasses
 import logging
 import math
 import time
@@ -27,13 +26,12 @@ import numpy as np
 
 from contact.optimize.development_check import checked_analysis, kept_why
 from contact.optimize.development_evaluate import KeptTeeth, bearing_key, evaluation_line
-from contact.optimize.development_result import DevelopmentEvaluation
+from contact.optimize.development_result import DevelopmentEvaluation, scored
 from contact.optimize.development_root import long_life_contact_allowable
 from contact.optimize.development_stages import HEIGHT_SLOPE, HEIGHT_SLOPE_MIN
 from contact.optimize.development_targets import (
     HEIGHT_NAME,
     DevelopmentTargets,
-    development_score,
 )
 from geometry.case import Case
 from geometry.core.errors import raise_if_interrupted
@@ -111,12 +109,8 @@ def _checked(best: DevelopmentEvaluation, values: Mapping[str, float], label: st
         raise_if_interrupted(exc)
         log.info("development pitting check of %s failed: %s", dict(values), exc)
         return None
-    full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
-                             pressure_limit=grid[4])
-    e = dataclasses.replace(best, values=dict(values), metrics=ms, objective=full[0],
-                            shortfalls=full[1], met=full[2], full=full, case=case,
-                            checked=True, stage="pitting",
-                            seconds=time.process_time() - c0)
+    e = scored(best, ms, grid, targets, setup["centre_v"], values=dict(values), case=case,
+               checked=True, stage="pitting", seconds=time.process_time() - c0)
     say(f"  design {best.index + 1} {label}, at the default sampling: "
         + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1]
         + f"; peak {_peak(e):.0f} MPa")

@@ -27,14 +27,14 @@ from typing import Any
 import numpy as np
 
 from contact.ltca.plausibility import LTE_SPREAD_LIMIT
-from contact.optimize.development_targets import DevelopmentTargets
+from contact.optimize.development_targets import DevelopmentTargets, development_score
 from contact.pipeline import case_torques, floor_torque  # the coast's light torque's rule
 from geometry.case import Case
 from geometry.core.text import plain_number
 from geometry.synthesis.basic_design import FLANK_OPTION_UNITS, BasicDesign
 
 __all__ = ["COAST_STATUS", "STATIC_MARGIN", "TOLERANCE_KEYS", "DevelopmentEvaluation",
-           "DevelopmentResult", "case_torques", "floor_torque", "metrics_text"]
+           "DevelopmentResult", "case_torques", "floor_torque", "metrics_text", "scored"]
 
 
 # --------------------------------------------------------------------------- evaluation
@@ -92,6 +92,49 @@ class DevelopmentEvaluation:
         they read its metrics or full score.
         """
         return self.full is not None and self.checked and self.metrics is not None
+
+
+def scored(e: DevelopmentEvaluation, metrics: Mapping[str, np.ndarray],
+           grid: tuple[float, float, float, float, float], targets: DevelopmentTargets,
+           centre_v: float | None, **changes: Any) -> DevelopmentEvaluation:
+    """``e`` with ``metrics`` and the full score they get (every target):
+    :func:`~contact.optimize.development_targets.development_score` on ``grid``'s gear-grid
+    rows with its static strength as the pressure limit, and ``changes`` (other fields:
+    ``values``, ``case``, ``checked``, ``stage``, ...).
+
+    Parameters
+    ----------
+    e : DevelopmentEvaluation
+    metrics : mapping name → ndarray (2,)
+        :data:`~contact.optimize.development_targets.METRIC_NAMES` at the (light, design)
+        torque [N·m].
+    grid : (u_toe, u_heel, v_root, v_tip, static strength)
+        The gear grid's outermost rows [1] and the static strength [MPa], as
+        :func:`~contact.optimize.development_evaluate.analyse_design` returns them.
+    targets : DevelopmentTargets
+    centre_v : float or None — [1]
+        The depth centre aimed at (the development's ``setup["centre_v"]``).
+    **changes
+        Further fields of the result.
+
+    Returns
+    -------
+    DevelopmentEvaluation
+        Its ``metrics``, ``objective``, ``shortfalls``, ``met`` and ``full``
+        (``development_score``'s triple) those of ``metrics``.
+
+    Raises
+    ------
+    Nothing but what ``development_score`` raises.
+
+    Notes
+    -----
+    Source: the issue-71 development's targets (docs/synthesis.md, "Development bearing").
+    """
+    full = development_score(metrics, targets, grid[:4], centre_v=centre_v,
+                             pressure_limit=grid[4])
+    return dataclasses.replace(e, metrics=metrics, objective=full[0], shortfalls=full[1],
+                               met=full[2], full=full, **changes)
 
 
 @dataclass(frozen=True, eq=False)

@@ -13,7 +13,6 @@ bodies moved unchanged).
 
 from __future__ import annotations
 
-import dataclasses
 import logging
 import math
 from collections.abc import Callable, Mapping
@@ -28,8 +27,8 @@ from contact.optimize.development_evaluate import (
     bearing_key,
     evaluation_line,
 )
-from contact.optimize.development_result import DevelopmentEvaluation
-from contact.optimize.development_targets import DevelopmentTargets, development_score
+from contact.optimize.development_result import DevelopmentEvaluation, scored
+from contact.optimize.development_targets import DevelopmentTargets
 from geometry.case import Case
 from geometry.core.errors import raise_if_interrupted
 
@@ -230,11 +229,8 @@ def checked_variant(base: DevelopmentEvaluation, values: Mapping[str, float], st
         raise_if_interrupted(exc)
         log.info("development %s check of %s failed: %s", stage, dict(values), exc)
         return None
-    full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
-                             pressure_limit=grid[4])
-    return dataclasses.replace(base, values=values, metrics=ms, objective=full[0],
-                               shortfalls=full[1], met=full[2], full=full, case=case,
-                               checked=True, stage=stage)
+    return scored(base, ms, grid, targets, setup["centre_v"], values=values, case=case,
+                  checked=True, stage=stage)
 
 
 def said_variant(base: DevelopmentEvaluation, values: Mapping[str, float], stage: str,

@@ -48,8 +48,9 @@ from contact.optimize.development_result import (
     DevelopmentEvaluation,
     case_torques,
     floor_torque,
+    scored,
 )
-from contact.optimize.development_targets import DevelopmentTargets, development_score
+from contact.optimize.development_targets import DevelopmentTargets
 from contact.study.lte_within import within_torque
 from geometry.core.errors import raise_if_interrupted
 from geometry.core.text import plain_number
@@ -182,10 +183,7 @@ def written_lte_capacity(best: DevelopmentEvaluation, targets: DevelopmentTarget
             log.info("development: the written design at %.4g N m not analysed: %s",
                      torques[1], exc)
             return best
-        full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
-                                 pressure_limit=grid[4])
-        lowered = dataclasses.replace(best, metrics=ms, objective=full[0],
-                                      shortfalls=full[1], met=full[2], full=full)
+        lowered = scored(best, ms, grid, targets, setup["centre_v"])
         trial = {**setup, "torques": list(torques)}
         there = range_lte(lowered, trial, teeth)
         if there is None:
@@ -193,7 +191,7 @@ def written_lte_capacity(best: DevelopmentEvaluation, targets: DevelopmentTarget
         if max(there[1]) <= limit:
             source = (f"the torque up to which the written bearing keeps the drive LTE "
                       f"within {limit:g} urad at every torque: at "
-                      f"{setup['source'].split(',')[0].split(';')[0]} "
+                      f"{_rated_as(setup)} "
                       f"{plain_number(design)} N m its LTE p-p was {before} after the "
                       f"drive steps; {_curve(there)} at the lowered torques")
             setup.update(torques=list(torques), source=source, lowered=True)
@@ -292,12 +290,11 @@ def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], ba
         return None
     source = (f"the torque up to which the developed bearing keeps the drive LTE within "
               f"{limit:g} urad at every torque: at "
-              f"{setup['source'].split(',')[0].split(';')[0]} {plain_number(design)} N m the "
+              f"{_rated_as(setup)} {plain_number(design)} N m the "
               f"written bearing's LTE p-p was {before}, within {limit:g} urad from about "
               f"{plain_number(round(low, 1))} to {plain_number(round(high, 1))} N m only (its "
               f"light torque a share of the design torque); developed at "
-              f"{plain_number(torque)} N m: {' / '.join(f'{x:.1f}' for x in ends)} urad at "
-              f"{' / '.join(plain_number(float(t)) for t in again.torque)} N m, "
+              f"{plain_number(torque)} N m: {_curve((again.torque, ends))}, "
               f"at most {peak:.1f} urad over ltca run's range (the check's reading)")
     say(f"  design torque {plain_number(design)} -> {plain_number(torque)} N m: {source}")
     return dataclasses.replace(again, basic=basic, torque_source=source, torque_lowered=True)
@@ -353,6 +350,12 @@ def lte_window(torques: Sequence[float], lte: Sequence[float], limit: float
     low = float(t[0]) if first == 0 else crossing(first - 1, first)
     high = float(t[-1]) if last == t.size - 1 else crossing(last, last + 1)
     return low, high
+
+
+def _rated_as(setup: dict[str, Any]) -> str:
+    """The first words of the design torque's source before a lowering ("the ISO 10300
+    capacity" of "the ISO 10300 capacity, the pinion torque at which …; …")."""
+    return setup["source"].split(",")[0].split(";")[0]
 
 
 def _curve(found: tuple[Sequence[float], Sequence[float]]) -> str:
