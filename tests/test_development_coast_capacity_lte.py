@@ -319,7 +319,7 @@ def test_the_coast_design_torque_is_lowered_to_where_its_lte_holds(monkeypatch):
                                        True, lines.append) is None
     # a coast design torque the basic file gives is kept (as the drive's lte_capacity)
     monkeypatch.setattr(cap, "coast_flank_capacity", fake)
-    given = SimpleNamespace(options=SimpleNamespace(design_torque=None),
+    given = SimpleNamespace(gives_design_torque=False,
                             rating={"coast_design_torque": 603.3})
     assert cap.coast_torque_that_holds(None, given, kept, before, DevelopmentTargets(), {},
                                        True, lines.append) is None

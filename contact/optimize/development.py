@@ -499,8 +499,7 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
                               say=say, placed=placed, level=start[TE_NAME],
                               slopes=evaluate.slopes)
     outclassable = (math.isfinite(outclassed_below) and root_stress
-                    and basic.options.design_torque is None
-                    and basic.rating.get("design_torque") is None)
+                    and not basic.gives_design_torque)
     if outclassable and best.case is not None:
         # a second gear process: stopped before the check's steps where the checked
         # design's local pitting bound at the rated torque is below the first one's
@@ -509,7 +508,7 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
         # Formate design's 77.9 N m: ~50 s less CPU, the case written the same)
         _pitting_outclassed(best.case, setup, outclassed_below, say)
     best = steps_on_each(best, others, steps)
-    if basic.options.design_torque is None and basic.rating.get("design_torque") is None:
+    if not basic.gives_design_torque:
         best = _at_capacity(best, targets, setup, teeth, say, steps, placed,
                             evaluate.slopes, outclassed_below,
                             foresee_cut and root_stress)
@@ -563,8 +562,7 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
     case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
     root_safety, root_text, given_root_text = math.nan, "", ""
     built: list[Case] = []  # the case whose FE models were built last (_both_flanks_built)
-    given = (basic.options.design_torque is not None
-             or basic.rating.get("design_torque") is not None)
+    given = basic.gives_design_torque
     _both_flanks_built(case, root_stress and coast.best is not None, built, say, setup)
     if root_stress and not given:
         # the FE root stress and the local pitting safety of the written case at the
@@ -1111,7 +1109,7 @@ def _at_written_lte(best: DevelopmentEvaluation, basic: BasicDesign,
     (:func:`~contact.optimize.development_written_lte.redeveloped_in_window`); a design
     torque the basic file gives is kept (``best``, None). The 14x36 at Sigma 70 deg: 84
     urad at its ISO capacity, below the FAIL level ``lte_capacity`` acts on."""
-    if basic.options.design_torque is not None or basic.rating.get("design_torque") is not None:
+    if basic.gives_design_torque:
         return best, None
     best = written_lte_capacity(best, targets, setup, teeth, say)
     _outclassed(setup, outclassed_below)

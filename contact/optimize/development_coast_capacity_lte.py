@@ -960,8 +960,7 @@ def coast_torque_for_lte(case: Case, basic: BasicDesign, coast: Any, found: Coas
     """
     from contact.study.verdicts import LTE_LIMIT
 
-    if basic is not None and (basic.options.design_torque is not None
-                              or basic.rating.get("design_torque") is not None
+    if basic is not None and (basic.gives_design_torque
                               or basic.rating.get("coast_design_torque") is not None):
         return None  # a design torque the basic file gives is kept (as lte_capacity's)
     seen = [float(t) for t in coast.torques]

@@ -489,6 +489,13 @@ class BasicDesign:
         µm-sized defaults were scaled by (InputError where the blank cannot be made)."""
         return size_scale(self.blank().m_mn)
 
+    @property
+    def gives_design_torque(self) -> bool:
+        """The basic file gives the design torque (``[synthesis] design_torque`` or
+        ``[rating] design_torque``): the development keeps it, lowering none of its own."""
+        return (self.options.design_torque is not None
+                or self.rating.get("design_torque") is not None)
+
 
 def fit_design(design: BevelGearDesign, targets: Mapping[str, float],
                adjust: tuple[str, ...]) -> BevelGearDesign:
