@@ -458,14 +458,14 @@ def _confirmed(shared: SharedDesign, evals: Sequence[Evaluation], budget: int, s
     by the verdict first; else (None, None, ...)."""
     from contact.optimize.confirm import confirm_design
 
-    def said(e, conf, what):
+    def said(conf, what):
         if callable(say):
             say(f"optimize: {what} at ltca run's sampling: {conf.summary()} "
                 f"[{conf.seconds:.0f} s]")
 
     start_ev = evals[0]
     start_conf = confirm_design(shared, start_ev)
-    said(start_ev, start_conf, f"the start (design {start_ev.index + 1})")
+    said(start_conf, f"the start (design {start_ev.index + 1})")
     tried, ranked = [start_conf], 0
     fallback = worse = None
     for e in sorted((e for e in evals if e.status < 2), key=_rank):
@@ -478,7 +478,7 @@ def _confirmed(shared: SharedDesign, evals: Sequence[Evaluation], budget: int, s
             conf = dataclasses.replace(confirm_design(shared, e),
                                        start_severity=start_conf.severity)
             tried.append(conf)
-            said(e, conf, f"design {e.index + 1}")
+            said(conf, f"design {e.index + 1}")
         if conf.accepted:
             return e, conf, tuple(tried)
         if not conf.mesh:
