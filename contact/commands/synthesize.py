@@ -241,22 +241,16 @@ def low_overlap_lte(development, written_ute: tuple[float, float] | None = None,
         E.g. "the developed bearing's LTE p-p: drive 25/52 urad at 27/180 N m, coast 30/48
         urad at 27/121 N m (light/design), the development's target 40 urad missed".
     """
-    from contact.optimize.development_remedy import above_limit_text, lte_parts
+    from contact.optimize.development_remedy import above_limit_text, flanks_above, lte_parts
     from contact.study.verdicts import LTE_LIMIT
 
     parts = lte_parts(development)
-    worst = drive = float(max(development.best.metrics["lte_peak_to_peak"]))
-    coast = None
-    if development.coast is not None:
-        coast = float(max(development.coast["lte_peak_to_peak"]))
-        worst = max(worst, coast)
-
     target = development.targets.max_lte
+    drive, coast = flanks_above(development, target)
     # which flank misses, where one does and the other not (a face-hobbed 8x37 read
     # "drive 10/20, coast 42/50 ..., the development's target 40 urad missed")
-    said = ("met" if worst <= target else "missed" if coast is None
-            or (drive > target) == (coast > target)
-            else "met on the drive flank, missed on the coast" if coast > target
+    said = ("met" if not (drive or coast) else "missed" if coast is None or drive == coast
+            else "met on the drive flank, missed on the coast" if coast
             else "missed on the drive flank, met on the coast")
     return (f"the developed bearing's LTE p-p: {', '.join(parts)} (light/design), the "
             f"development's target {target:g} urad " + said

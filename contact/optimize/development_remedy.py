@@ -34,7 +34,7 @@ Public names
 ------------
 REMEDY_TABLE, AppliedRemedy, ratio_changes, contact_ratios_of, prescribed_basic,
 checked_record, chosen_check, remedied_basic, file_value, change_text, lte_parts, worst_lte,
-above_limit_text, lte_within, developed_with_remedy, applied_table
+flanks_above, above_limit_text, lte_within, developed_with_remedy, applied_table
 """
 
 from __future__ import annotations
@@ -48,9 +48,9 @@ from typing import Any, NamedTuple
 from geometry.core.text import plain_number
 
 __all__ = ["REMEDY_TABLE", "AppliedRemedy", "above_limit_text", "applied_table", "change_text",
-           "checked_record",
-           "chosen_check", "contact_ratios_of", "developed_with_remedy", "file_value", "lte_parts",
-           "lte_within", "prescribed_basic", "ratio_changes", "remedied_basic", "worst_lte"]
+           "checked_record", "chosen_check", "contact_ratios_of", "developed_with_remedy",
+           "file_value", "flanks_above", "lte_parts", "lte_within", "prescribed_basic",
+           "ratio_changes", "remedied_basic", "worst_lte"]
 
 log = logging.getLogger(__name__)
 
@@ -367,6 +367,29 @@ def worst_lte(development) -> float:
     return worst
 
 
+def flanks_above(development, level: float) -> tuple[bool, bool | None]:
+    """Whether the written drive flank's LTE p-p, and the coast flank's where checked,
+    exceeds ``level`` [µrad] at the light or the design torque.
+
+    Parameters
+    ----------
+    development : contact.optimize.development.DevelopmentResult
+        Its ``best.metrics["lte_peak_to_peak"]`` (2,) [µrad] and ``coast`` (None where the
+        coast flank was not checked, else its ``"lte_peak_to_peak"`` (2,) [µrad]).
+    level : float — [µrad]
+        The development's target or the verdict's limit.
+
+    Returns
+    -------
+    (drive, coast) : (bool, bool or None)
+        ``coast`` None where the coast flank was not checked.
+    """
+    drive = float(max(development.best.metrics["lte_peak_to_peak"])) > level
+    coast = (None if development.coast is None
+             else float(max(development.coast["lte_peak_to_peak"])) > level)
+    return drive, coast
+
+
 def above_limit_text(development, limit: float) -> str:
     """The clause that says which written flank's LTE p-p exceeds the verdict's limit, to
     follow :func:`lte_parts`: "" where none does, ", above the verdict's 60 urad" where
@@ -387,9 +410,7 @@ def above_limit_text(development, limit: float) -> str:
     str
         The clause, with its leading comma, or "".
     """
-    drive = float(max(development.best.metrics["lte_peak_to_peak"])) > limit
-    coast = (None if development.coast is None
-             else float(max(development.coast["lte_peak_to_peak"])) > limit)
+    drive, coast = flanks_above(development, limit)
     if not drive and not coast:
         return ""
     which = ("" if coast is None or (drive and coast)
