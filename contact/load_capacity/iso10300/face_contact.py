@@ -187,6 +187,15 @@ def _root(f, x0: float, x1: float, steps: int = 12) -> float:
     return math.nan
 
 
+def _check_target(target: float) -> None:
+    """InputError naming ``target`` where it is not a number in (0, 5]."""
+    from geometry.core.errors import InputError
+
+    if not (isinstance(target, (int, float)) and math.isfinite(target) and 0.0 < target <= 5.0):
+        raise InputError(f"target: the face contact ratio aimed at must be a number in "
+                         f"(0, 5], got {target!r}")
+
+
 def overlap_remedy(design, target: float = FACE_CONTACT_RATIO_MIN) -> OverlapRemedy:
     """The face contact ratio ε_vβ of a basic design and the face width and spiral angle
     that reach ``target``.
@@ -221,12 +230,9 @@ def overlap_remedy(design, target: float = FACE_CONTACT_RATIO_MIN) -> OverlapRem
     face lowers the mean normal module, so ε_vβ grows faster than b2 (the 17x29 of
     tests/data/designs: 0.96 at 24 mm, 1.25 at 30.0 mm).
     """
-    from geometry.core.errors import InputError
     from geometry.iso23509.blank import blank_geometry
 
-    if not (isinstance(target, (int, float)) and math.isfinite(target) and 0.0 < target <= 5.0):
-        raise InputError(f"target: the face contact ratio aimed at must be a number in "
-                         f"(0, 5], got {target!r}")
+    _check_target(target)
     blank = blank_geometry(design)
     eps, re2 = _eps_vb(design, blank), float(blank.gear.Re)
     b2, beta = float(design.b2), math.degrees(float(design.beta_m))
@@ -287,11 +293,8 @@ def teeth_remedy(design, target: float = FACE_CONTACT_RATIO_MIN) -> tuple[int, i
     InputError
         ``target`` not a number in (0, 5].
     """
-    from geometry.core.errors import InputError
 
-    if not (isinstance(target, (int, float)) and math.isfinite(target) and 0.0 < target <= 5.0):
-        raise InputError(f"target: the face contact ratio aimed at must be a number in "
-                         f"(0, 5], got {target!r}")
+    _check_target(target)
     z1, z2 = int(design.z1), int(design.z2)
     if not _eps_vb_or_nan(design) < target:
         return None
