@@ -163,7 +163,8 @@ def test_the_generated_gear_kept_at_its_lte_window_without_the_formate_in_full(
     kept = with_generated_gear(run, basic, lines.append)
     assert given == [("auto", ["foresee_cut"]), ("Generate", ["outclassed_below"])]
     assert kept.report.gear.settings.process == "Generate" and kept.torque[1] == WINDOW
-    assert "the generated gear's does not fail at 537.1 N m" in kept.gear_process_text
+    assert ("the generated gear's does not fail at 537.1 N m (its design torque the drive "
+            "LTE window's, set by the contact ratio") in kept.gear_process_text
     assert "then the LTE p-p within ltca run's limit" in kept.gear_process_text
 
 

@@ -22,7 +22,11 @@ bearing's local pitting capacity (no FE) is already below :data:`FORESEEN_CUT_MA
 :data:`TORQUE_CUT_FRACTION` × the rated torque (:class:`CutForeseen`): its outcome would be a
 design torque cut, and the generated gear is developed at once; only where that fails too is
 the Formate development run in full, so the design kept is the one the two full
-developments rank first (issue 71/75: the spiral bevel 14x36 at Σ 70°).
+developments rank first (issue 71/75: the spiral bevel 14x36 at Σ 70°). A design torque
+the drive LTE window lowered (:mod:`contact.optimize.development_written_lte`) is the
+contact ratio's, not the gear process's: a cut is judged against it
+(:func:`cut_reference`), and a design within ``ltca run``'s LTE limit ranks above one
+beyond it (:func:`lte_over`; the FM spiral bevel 17x23, issue 71, branch half88).
 
 Public names
 ------------
@@ -62,7 +66,10 @@ log = logging.getLogger(__name__)
 #: [1] a developed design whose design torque the development cut below this share of the
 #: rated one (the ISO 10300 capacity or the basic file's) is a failed outcome: the bearing
 #: carries less than half of what the blank is rated for. The 20x30's Formate gear: 64.1 of
-#: 251.4 N·m (0.25); its generated gear: 171 of 276.7 N·m (0.62) (docs/synthesis.md)
+#: 251.4 N·m (0.25); its generated gear: 171 of 276.7 N·m (0.62) (docs/synthesis.md).
+#: Where the drive LTE window lowered the design torque, the share is of that torque
+#: (:func:`cut_reference`): the FM 17x23's generated gear at 537.1 of 1449 N·m is no
+#: failed outcome (branch half88)
 TORQUE_CUT_FRACTION = 0.5
 
 #: [1] a Formate development stops at its static-capacity step (:class:`CutForeseen`) where
@@ -559,10 +566,19 @@ def _generated_after_foreseen(run: Callable[..., Any], basic: Any, foreseen: Cut
             f"{plain_number(foreseen.torque)} N m, below {FORESEEN_CUT_MARGIN:g} of "
             f"{TORQUE_CUT_FRACTION:g} of its rated {plain_number(foreseen.rated)} N m (a design "
             f"torque cut, a failed outcome: contact.optimize.development_process.cut_foreseen); "
-            f"the generated gear's does not fail at {plain_number(second.torque[1])} N m; kept "
-            "the generated gear " + _RULE)
+            f"the generated gear's does not fail at {plain_number(second.torque[1])} N m"
+            + _window_said(second) + "; kept the generated gear " + _RULE)
     say("development: " + text)
     return second, dataclasses.replace(second, gear_process_text=text)
+
+
+def _window_said(result: Any) -> str:
+    """``" (its design torque the drive LTE window's: ...)"`` where the LTE window set
+    ``result``'s design torque (:func:`cut_reference`), else empty."""
+    if not math.isfinite(float(getattr(result, "lte_torque", math.nan))):
+        return ""
+    return (" (its design torque the drive LTE window's, set by the contact ratio, not the "
+            "gear process: no failed outcome)")
 
 
 def _generated_after_error(run: Callable[[Any], Any], basic: Any, err: InputError,
