@@ -225,6 +225,7 @@ from contact.optimize.development_written import with_synthesis_fe_level
 from contact.optimize.development_written_drive import written_drive_check
 from contact.optimize.development_written_lte import (
     redeveloped_in_window,
+    window_name,
     written_lte_capacity,
 )
 from geometry.case import Case
@@ -273,7 +274,8 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
             progress: Callable[[str], None] | None = None,
             synthesis_progress: Any = None, root_stress: bool = True,
             gear_fallback: bool = True, outclassed_below: float = math.nan,
-            foresee_cut: bool = False, apply_remedy: bool = False) -> DevelopmentResult:
+            foresee_cut: bool = False, apply_remedy: bool = False,
+            torque_name: str = "") -> DevelopmentResult:
     """Develop the drive flank, then the coast flank, of a basic design to the bearing of
     ``targets``.
 
@@ -324,6 +326,12 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
         (:class:`~contact.optimize.development_process.CutForeseen`) where its bearing's
         local pitting bound foresees a design torque cut below half the rated torque
         (:func:`~contact.optimize.development_process.cut_foreseen`).
+    torque_name : str, optional
+        What the design torque ``basic`` gives is, where it is the development's own and
+        not the basic file's (the drive developed again at the upper end of its LTE window:
+        :func:`~contact.optimize.development_written_lte.window_name`): said in the
+        progress line and the coast design torque's source in place of "[synthesis]
+        design_torque". Default "": the basic file's.
     apply_remedy : bool, optional
         Default False: the basic data as given. True: develop the design as given, check
         its contact-ratio remedies at its written prescriptions as ``ltca synthesize``'s
@@ -460,7 +468,7 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
         return synthesize(b, memo=memo, tip_planes=False)[0]
 
     evaluate = evaluator(basic, targets, setup, teeth, say, evals, "drive",
-                         targets.max_evaluations)
+                         targets.max_evaluations, torque_name=torque_name)
     ok = search_flank(evaluate, evals, lambda values: with_flank_options(basic, flank, values),
                       make, targets, start, basic, targets.max_evaluations)
     if not ok:
@@ -731,12 +739,13 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
                                root_text, coast.torques,
                                coast_cap.torque if coast_cap is not None and coast_cap.lowered
                                else math.nan,
-                               coast_capacity_said(basic, coast_cap),
+                               coast_capacity_said(basic, coast_cap, torque_name),
                                lte_reach=setup.get("lte_reach", {}).get(
                                    tuple(float(t) for t in setup["torques"])),
                                tolerant_torque=upto, lte_range=_judged(setup, best),
                                fe_level_text=setup.get("fe_level_why", ""),
                                given_root_text=given_root_text,
+                               lte_torque=float(setup.get("lte_torque", math.nan)),
                                coast_lte_range=_coast_judged(setup, coast, best, teeth))
     say(result.headline())
     return result
@@ -1072,11 +1081,17 @@ def _coast_judged(setup: dict[str, Any], coast: Any, drive: DevelopmentEvaluatio
 def _outclassed(setup: dict[str, Any], below: float) -> None:
     """Raise :class:`~contact.optimize.development_process.Outclassed` where the
     development's design torque (``setup["torques"][1]`` [N·m]) was lowered below
-    ``below`` [N·m] (NaN: never)."""
-    from contact.optimize.development_process import Outclassed
+    ``below`` [N·m] (NaN: never), but where the drive LTE window lowered it
+    (``setup["lte_torque"]``, :func:`~contact.optimize.development_written_lte.
+    written_lte_capacity`) and it is not below
+    :data:`~contact.optimize.development_process.TORQUE_CUT_FRACTION` of that: such a cut
+    is the contact ratio's, no failed outcome, and may rank above the design compared
+    with (:func:`~contact.optimize.development_process.failed_outcome`)."""
+    from contact.optimize.development_process import TORQUE_CUT_FRACTION, Outclassed
 
     torque = float(setup["torques"][1])
-    if setup["lowered"] and torque < below:
+    window = float(setup.get("lte_torque", math.nan))
+    if setup["lowered"] and torque < below and not torque >= TORQUE_CUT_FRACTION * window:
         raise Outclassed(torque)
 
 
@@ -1113,6 +1128,8 @@ def _at_written_lte(best: DevelopmentEvaluation, basic: BasicDesign,
         return best, None
     best = written_lte_capacity(best, targets, setup, teeth, say)
     _outclassed(setup, outclassed_below)
+    # the re-development's torque named as what it is (not the basic file's)
+    rerun = functools.partial(rerun, torque_name=window_name(setup))
     return best, redeveloped_in_window(rerun, setup, basic, say)
 
 

@@ -158,7 +158,8 @@ def coast_torque_searched(basic: BasicDesign) -> bool:
     return basic.rating.get("coast_design_torque") is None
 
 
-def coast_capacity_said(basic: BasicDesign, cap: CoastCapacity | None) -> str:
+def coast_capacity_said(basic: BasicDesign, cap: CoastCapacity | None,
+                        torque_name: str = "") -> str:
     """Why the coast design torque is what the coast capacity search ``cap``
     (:func:`coast_flank_capacity`) found, in numbers: its reason, preceded — where the
     basic file gives a design torque (the drive's) and the search lowered the coast design
@@ -166,10 +167,13 @@ def coast_capacity_said(basic: BasicDesign, cap: CoastCapacity | None) -> str:
     coast flank's: " (Y as the case runs it, rounded down by
     :func:`~contact.optimize.development_result.floor_torque`; the reason then gives what
     the torque the search started at does to the coast flank: its peak against the static
-    strength, its plastic share); empty where ``cap`` is None."""
+    strength, its plastic share); empty where ``cap`` is None. ``torque_name``, where
+    given, names the design torque in place of "[synthesis] design_torque": the
+    development's own torque the basic data carry (the drive developed again in its LTE
+    window, :func:`contact.optimize.development_written_lte.window_name`)."""
     if cap is None:
         return ""
-    given = ("[synthesis] design_torque", basic.options.design_torque)
+    given = (torque_name or "[synthesis] design_torque", basic.options.design_torque)
     if given[1] is None:
         given = ("[rating] design_torque", basic.rating.get("design_torque"))
     if given[1] is None or not cap.lowered:

@@ -371,14 +371,18 @@ def _ratios_text(case: Case) -> str:
 def evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str, Any],
               teeth: KeptTeeth, say: Callable[[str], None],
               evals: list[DevelopmentEvaluation], side: str, n_max: int,
-              key_prefix: tuple = ()) -> Callable[..., DevelopmentEvaluation]:
+              key_prefix: tuple = (),
+              torque_name: str = "") -> Callable[..., DevelopmentEvaluation]:
     """The objective of one side's search (:func:`develop`): ``evaluate(values, stage,
     make, budget, pinion_key)`` synthesises a design (``make()``), analyses its ``side``
     flank (``"drive"`` or ``"coast"``) by :data:`COARSE_LTCA` at the light and the design
     torque, appends it to ``evals``, prints its line and raises :class:`StageStop` where it
     meets every target of ``stage`` or the stage's ``budget`` is spent. The first design
-    of the drive flank fixes ``setup`` (torques, the depth centre aimed at). The pinion
-    tooth is kept under ``key_prefix + pinion_key`` (:class:`KeptTeeth`). The designs are
+    of the drive flank fixes ``setup`` (torques, the depth centre aimed at; the design
+    torque's source ``torque_name`` where given and ``basic`` gives a design torque: the
+    development's own torque, :func:`contact.optimize.development_written_lte.window_name`,
+    not the basic file's). The pinion tooth is kept under ``key_prefix + pinion_key``
+    (:class:`KeptTeeth`). The designs are
     synthesised and analysed inside one :class:`geometry.machine.meshing.WarmSeeds`: the
     envelope seeds of each design's tools continued from the earlier designs' (issue 75;
     a design's metrics as a cold analysis gives them, to the envelope solver's
@@ -405,6 +409,8 @@ def evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str, 
                 case = make()
             if not setup:
                 torque, source = design_torque_of(basic, case)
+                if torque_name and basic.gives_design_torque:  # the development's own
+                    source = torque_name
                 setup.update(torques=case_torques(targets.light_load, torque),
                              source=source,
                              lowered=False,

@@ -253,6 +253,14 @@ class DevelopmentResult:
         why the torque was decided on the default model and the case written names it
         (:func:`contact.optimize.development_root.refined_for_root`); empty where the
         case keeps the level it was developed with.
+    lte_torque : float — [N·m]
+        The design torque the drive LTE window set: the torque up to which the written
+        drive bearing keeps the verdict's LTE limit at every torque
+        (:func:`~contact.optimize.development_written_lte.written_lte_capacity`), or the
+        upper end of that window the drive was developed again at
+        (:func:`~contact.optimize.development_written_lte.redeveloped_in_window`); NaN
+        where the window lowered nothing. A cut to it is the contact ratio's, not the gear
+        process's (:func:`~contact.optimize.development_process.failed_outcome`).
     given_root_text : str
         Where the design torque the basic file gives is above the developed bearing's
         root-stress capacity (S_F,FE < S_Fmin there, which ``ltca run`` rates FAIL): the
@@ -293,6 +301,7 @@ class DevelopmentResult:
     coast_lte_range: dict | None = None
     fe_level_text: str = ""
     given_root_text: str = ""
+    lte_torque: float = math.nan
 
     @property
     def tolerant(self) -> bool:

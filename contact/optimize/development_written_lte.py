@@ -28,7 +28,7 @@ drive again at its upper end, kept where that development keeps the limit (the 1
 
 Public names
 ------------
-written_lte_capacity, lowered_torque, lte_window, redeveloped_in_window
+written_lte_capacity, lowered_torque, lte_window, redeveloped_in_window, window_name
 """
 
 from __future__ import annotations
@@ -55,7 +55,8 @@ from contact.study.lte_within import within_torque
 from geometry.core.errors import raise_if_interrupted
 from geometry.core.text import plain_number
 
-__all__ = ["lowered_torque", "lte_window", "redeveloped_in_window", "written_lte_capacity"]
+__all__ = ["lowered_torque", "lte_window", "redeveloped_in_window", "window_name",
+           "written_lte_capacity"]
 
 log = logging.getLogger("contact.optimize.development")
 
@@ -128,7 +129,8 @@ def written_lte_capacity(best: DevelopmentEvaluation, targets: DevelopmentTarget
         Its ``light_load`` [1] sets the light torque of a lowered design torque.
     setup : dict
         The development's setup: ``torques`` [N·m] (light, design), ``source``,
-        ``centre_v``; updated (``torques``, ``source``, ``lowered``) where the torque is
+        ``centre_v``; updated (``torques``, ``source``, ``lowered``, ``lte_torque`` [N·m]:
+        the lowered design torque) where the torque is
         lowered, its ``source`` extended by the LTE found where no lower torque keeps the
         limit (:func:`lte_window`).
     teeth : KeptTeeth or None
@@ -194,7 +196,8 @@ def written_lte_capacity(best: DevelopmentEvaluation, targets: DevelopmentTarget
                       f"{_rated_as(setup)} "
                       f"{plain_number(design)} N m its LTE p-p was {before} after the "
                       f"drive steps; {_curve(there)} at the lowered torques")
-            setup.update(torques=list(torques), source=source, lowered=True)
+            setup.update(torques=list(torques), source=source, lowered=True,
+                         lte_torque=float(torques[1]))
             say(f"  design torque {plain_number(design)} -> {plain_number(torques[1])} N m: "
                 f"{source}")
             return lowered
@@ -244,7 +247,8 @@ def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], ba
     -------
     DevelopmentResult or None
         The development at ``floor_torque(high)``, its design torque the development's own
-        (``torque_lowered``, ``torque_source`` saying why, ``basic`` as given), where its
+        (``torque_lowered``, ``lte_torque`` that torque, ``torque_source`` saying why,
+        ``basic`` as given), where its
         drive LTE p-p at the light and design torque and between them (its
         ``lte_range``) keeps the limit; None where no window was recorded, the run fails
         or its LTE does not keep the limit.
@@ -297,7 +301,41 @@ def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], ba
               f"{plain_number(torque)} N m: {_curve((again.torque, ends))}, "
               f"at most {peak:.1f} urad over ltca run's range (the check's reading)")
     say(f"  design torque {plain_number(design)} -> {plain_number(torque)} N m: {source}")
-    return dataclasses.replace(again, basic=basic, torque_source=source, torque_lowered=True)
+    return dataclasses.replace(again, basic=basic, torque_source=source, torque_lowered=True,
+                               lte_torque=float(again.torque[1]))
+
+
+def window_name(setup: dict[str, Any]) -> str:
+    """What the design torque of the drive developed again in the LTE window is, as its
+    progress line and the coast design torque's source name it (in place of the "[synthesis]
+    design_torque" of a basic file giving one, which the basic file does not give).
+
+    Parameters
+    ----------
+    setup : dict
+        The development's setup; its ``"lte_window"`` (low, high [N·m], the LTE text)
+        where :func:`written_lte_capacity` recorded one.
+
+    Returns
+    -------
+    str
+        ``"the LTE window's upper end: the written drive bearing kept 60 urad from about
+        <low> to <high> N m only"``; empty where no window was recorded.
+
+    Notes
+    -----
+    Source: issue 71 (the FM 17x23's re-development named its lowered torque "[synthesis]
+    design_torque of the basic file", docs/own_gear_set.md, "Re-run on the rebased branch
+    (after lte87)").
+    """
+    window = setup.get("lte_window")
+    if window is None:
+        return ""
+    low, high = float(window[0]), float(window[1])
+    return (f"the LTE window's upper end: the written drive bearing kept "
+            f"{verdict_lte_limit():g} urad at every torque from about "
+            f"{plain_number(round(low, 1))} to {plain_number(round(high, 1))} N m only "
+            "(contact.optimize.development_written_lte)")
 
 
 def lte_window(torques: Sequence[float], lte: Sequence[float], limit: float
