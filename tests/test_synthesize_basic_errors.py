@@ -304,6 +304,48 @@ def test_an_iso_method_not_available_names_its_basic_file_field(tmp_path):
         load_basic(path)
 
 
+def test_a_face_milled_method_2_refusal_names_the_method_1_inputs_that_give_it_back(tmp_path):
+    """ISO 23509 Method 2 typed for a face-milled hypoid is refused, and the refusal names
+    the Method 1 inputs d_e2 and beta_m of the typed pitch cone face milled (z0 -> 0)
+    (issue 71, round 28: the 14x45 at Sigma 84 deg, a 25, d_m2 200 mm, beta_m2 35 deg; three
+    rounds of unseen designs worked them out by hand). Independent check: Method 1 solves
+    another closing condition (Gleason's limit radius = r_c0, not Oerlikon's apex line), so
+    retyped with the printed numbers it gives back the typed d_m2 within 0.5 % and beta_m2
+    within 0.05 deg (measured 199.32 mm, 0.34 %, and 34.965 deg: the two methods' pitch
+    cones differ by that much; the printed rounding to 0.1 mm and 0.01 deg adds less)."""
+    from geometry.core.errors import ModelUnavailableError
+    from geometry.synthesis.basic_design import load_basic
+
+    unseen = Path(__file__).resolve().parents[1] / "benchmarks" / "data" / "unseen_designs"
+    text = (unseen / "hypoid_14x45_s84_a25_m1.toml").read_text(encoding="utf-8")
+    typed = text
+    for pattern, value in ((r"(?m)^method = .*$", "method = 2"),
+                           (r"(?m)^de2 = .*$", "dm2 = 200.0"),
+                           (r"(?m)^beta_m = .*$", "beta_m = 35.0")):
+        typed, n = re.subn(pattern, value, typed)
+        assert n == 1, pattern
+    path = tmp_path / "fm_method2.toml"
+    path.write_text(typed, encoding="utf-8")
+    with pytest.raises(ModelUnavailableError) as err:
+        load_basic(path)
+    message = str(err.value)
+    assert message.startswith("design.method = 2 is implemented for face hobbing only")
+    assert "use method 0 or 1" in message
+    found = re.search(r"de2 = ([0-9.]+) \[mm\] and beta_m = ([0-9.]+) \[deg\]", message)
+    assert found, message
+    retyped = text
+    for pattern, value in ((r"(?m)^de2 = .*$", f"de2 = {found[1]}"),
+                           (r"(?m)^beta_m = .*$", f"beta_m = {found[2]}")):
+        retyped, n = re.subn(pattern, value, retyped)
+        assert n == 1, pattern
+    path = tmp_path / "fm_method1.toml"
+    path.write_text(retyped, encoding="utf-8")
+    pitch = load_basic(path).blank().pitch
+    assert pitch.method == 1
+    assert pitch.dm2 == pytest.approx(200.0, rel=5e-3)
+    assert math.degrees(pitch.beta_m2) == pytest.approx(35.0, abs=0.05)
+
+
 def test_the_12x12_miter_synthesises_since_its_gear_rolls_on_its_pitch_cone(tmp_path, capsys):
     """The 12x12 miter at beta_m 35 deg with a 3.5-in cutter (round 17 of the unseen
     designs; tests/data/limits): ``ltca synthesize --no-development`` stopped with rc 2,

@@ -319,6 +319,13 @@ class Verdict:
             whys.setdefault(why, []).append(check)
         return [(tuple(checks), why) for why, checks in whys.items()]
 
+    def __str__(self) -> str:
+        """The verdict as ``ltca run`` and ``ltca duty-cycle`` print it, every finding and
+        every reason not checked (:meth:`lines`, one per line): ``print(contact.verdict(
+        tree))`` of a script reads as the command's verdict, not as the dataclass' repr
+        of some thousand characters (issue 71, round 28: a user's first ``print``)."""
+        return "\n".join(self.lines())
+
     def lines(self, limit: int | None = None, rest: str | None = None) -> list[str]:
         """The verdict as text lines: ``VERDICT: <severity>`` with the count, then one
         line per finding (``  fail: <reason>``), one per note (``  note: <note>``,

@@ -205,10 +205,7 @@ class BevelGearDesign:
         z0 = integer("z0", self.z0, 0, None, allow_float=True)
         set_(self, "z0", z0)
         if z0 == 0 and method in (2, 3):
-            raise ModelUnavailableError(
-                f"method = {method} is implemented for face hobbing only (z0 ≥ 1 blade groups); "
-                f"for face milling (z0 = 0) use method 0 or 1"
-            )
+            raise ModelUnavailableError(self._face_milled_refusal(method))
         z1 = integer("z1", self.z1, 5, 500, allow_float=True)
         z2 = integer("z2", self.z2, z1, 500, allow_float=True)
         set_(self, "z1", z1)
@@ -275,6 +272,32 @@ class BevelGearDesign:
             set_(self, "delta2", real("delta2", self.delta2, unit="deg", low=0.0,
                                       high=0.5 * math.pi, low_open=True, high_open=True,
                                       scale=_DEG))
+
+    def _face_milled_refusal(self, method: int) -> str:
+        """Why Method 2 or 3 is refused for face milling, with the Method 1 inputs of the
+        typed pitch cone in its face-milling limit where the other fields are valid and
+        it has one (:func:`~geometry.iso23509.face_milled_inputs.method_1_inputs`; issue
+        71, round 28)."""
+        from dataclasses import replace
+
+        from geometry.iso23509.face_milled_inputs import method_1_inputs
+
+        text = (f"method = {method} is implemented for face hobbing only (z0 ≥ 1 blade "
+                f"groups); for face milling (z0 = 0) use method 0 or 1")
+        try:
+            # the other fields validated as a face-hobbed twin's, then its cutter
+            # taken to the face-milling limit z0 = 0 (validation does not read z0 further)
+            twin = replace(self, z0=1)
+        except InputError:
+            return text
+        object.__setattr__(twin, "z0", 0)
+        inputs = method_1_inputs(twin)
+        if inputs is not None:
+            text += (f": this pair by method 1 is de2 = {inputs[0]:.1f} [mm] and beta_m = "
+                     f"{inputs[1]:.2f} [deg] (the pinion's mean spiral angle), the outer "
+                     f"pitch diameter and β_m1 of method {method}'s pitch cone face milled "
+                     f"(z0 → 0)")
+        return text
 
     def _check_depth_data(self) -> None:
         """Validate the tooth depth/thickness fields of the input data type chosen."""
