@@ -300,8 +300,17 @@ def test_an_iso_method_not_available_names_its_basic_file_field(tmp_path):
     path.write_text(text, encoding="utf-8")
     with pytest.raises(ModelUnavailableError,
                        match=r"^design\.method = 3 is implemented for face hobbing only.*"
-                             r"use method 0 or 1"):
+                             r"use method 0 or 1") as err:
         load_basic(path)
+    # a spiral bevel (a = 0): the inputs named are those of its own method 0 (round 28)
+    found = re.search(r"this pair by method 0 \(or 1\) is de2 = ([0-9.]+) \[mm\] and "
+                      r"beta_m = ([0-9.]+)", str(err.value))
+    assert found, str(err.value)
+    # the file's own d_e2 180 mm and beta_m 35 deg: Method 3 at z0 -> 0 of a spiral bevel
+    # is the same pitch cone (no offset: no hypoid closing condition to differ), printed
+    # to 0.1 mm / 0.01 deg
+    assert float(found[1]) == pytest.approx(180.0, abs=0.05)
+    assert float(found[2]) == pytest.approx(35.0, abs=0.005)
 
 
 def test_a_face_milled_method_2_refusal_names_the_method_1_inputs_that_give_it_back(tmp_path):

@@ -293,7 +293,9 @@ class BevelGearDesign:
         object.__setattr__(twin, "z0", 0)
         inputs = method_1_inputs(twin)
         if inputs is not None:
-            text += (f": this pair by method 1 is de2 = {inputs[0]:.1f} [mm] and beta_m = "
+            # a spiral bevel (a = 0) reads the same two inputs by method 0, its own method
+            which = "method 0 (or 1)" if self.a == 0 else "method 1"
+            text += (f": this pair by {which} is de2 = {inputs[0]:.1f} [mm] and beta_m = "
                      f"{inputs[1]:.2f} [deg] (the pinion's mean spiral angle), the outer "
                      f"pitch diameter and β_m1 of method {method}'s pitch cone face milled "
                      f"(z0 → 0)")
