@@ -33,10 +33,10 @@ from types import ModuleType
 from typing import NamedTuple
 
 import numpy as np
-from scipy.interpolate import BSpline, RectBivariateSpline
 
+from contact.utca.corner_spline import corner_spline
 from contact.utca.easeoff import EaseOff, fill_missing
-from contact.utca.piecewise import PiecewiseSpline, from_splines, piece_basis
+from contact.utca.piecewise import PiecewiseSpline, from_splines
 from contact.utca.spline_group import SplineGroup
 from geometry.core.caches import Same, memoised
 from geometry.core.errors import InputError, ModelUnavailableError
@@ -147,7 +147,7 @@ class EaseOffFields:
         def spl(fields, ok):
             # the fields sharing a mask are filled together (same arithmetic per field)
             filled = fill_missing(np.stack(fields, -1), ok)
-            return [RectBivariateSpline(self.u, self.v, filled[..., k])
+            return [corner_spline(self.u, self.v, filled[..., k])
                     for k in range(len(fields))]
 
         # ε and Q from the valid nodes and, beyond them, from the computed nodes on the same
@@ -316,22 +316,19 @@ class EaseOffFields:
             The spline's knot intervals in v.
         coefficients : ndarray (nc, n_int, 4) — [rad]
             On [breaks[i], breaks[i + 1]], Q(uc[j], v) = Σ_p c[j, i, p] (v − breaks[i])^p:
-            the bicubic spline of Q restricted to each column (a cubic B-spline in v whose
-            coefficients are the u-basis at uc[j] applied to the spline's; de Boor, *A
-            Practical Guide to Splines*, 1978), matching FITPACK's evaluation to round-off.
+            the bicubic interpolant of Q restricted to each column (its piecewise-polynomial
+            form's cell polynomial in u evaluated at uc[j]; de Boor, *A Practical Guide to
+            Splines*, 1978), matching FITPACK's evaluation to round-off.
         """
         key = (len(uc), float(uc[0]), float(uc[-1]))
         cols = self._columns.get(key)
         if cols is None:
-            tx, ty, c = self.q.tck
-            kx, ky = self.q.degrees
-            d = BSpline.design_matrix(np.asarray(uc, dtype=float), tx, kx).toarray()
-            coef = d @ c.reshape(len(tx) - kx - 1, len(ty) - ky - 1)  # v-spline per column
-            basis = piece_basis(ty, ky)  # (n_int, 4, 4)
-            n_int = basis.shape[0]
-            idx = np.arange(n_int)[:, None] + np.arange(ky + 1)[None, :]
-            cols = self._columns[key] = (ty[ky:ky + n_int + 1],
-                                         np.einsum("jia,iap->jip", coef[:, idx], basis))
+            pp = self._field_pieces("q")
+            x = np.minimum(np.maximum(np.asarray(uc, dtype=float), pp.bx[0]), pp.bx[-1])
+            i = np.minimum(np.searchsorted(pp.bx, x, side="right") - 1, len(pp.bx) - 2)
+            powers = (x - pp.bx[i])[:, None] ** np.arange(pp.coefficients.shape[3])
+            cols = self._columns[key] = (pp.by, np.einsum(
+                "jp,jipq->jiq", powers, pp.coefficients[i, :, 0]))
         return cols
 
     def solve_columns(self, uc, target):
