@@ -44,12 +44,13 @@ from geometry.core.errors import InputError
 __all__ = ["CORNER_RATIO", "CORNER_WINDOW", "corner_nodes", "corner_spline", "node_slopes"]
 
 #: a node is a corner where the change of the secant slope there exceeds this many times
-#: the median change at the other interior nodes within :data:`CORNER_WINDOW` of it (a
-#: smooth f: about h f'' at each, the ratio near 1 — a linear f'' gives D_j the mean of its
-#: neighbours; a kink: the kink's slope change over h f'', hundreds on the 16×16's relief)
+#: the median change at the interior nodes within :data:`CORNER_WINDOW` on either side of
+#: it (a smooth f: about h f'' at each, the ratio near 1; a kink: the kink's slope change
+#: over h f'', hundreds on the 16×16's relief)
 CORNER_RATIO = 4.0
-#: nodes to either side whose slope changes form a node's background (a median of up to 8:
-#: two corners in it, as a relief's start and a filled node's, still leave it smooth)
+#: nodes to either side whose slope changes form a node's background (a median of up to 4
+#: each side: a second corner in it, as a relief's start two nodes from a filled node's,
+#: still leaves it smooth)
 CORNER_WINDOW = 4
 
 
@@ -77,10 +78,13 @@ def corner_nodes(x, y, ratio: float = CORNER_RATIO) -> np.ndarray:
     -------
     ndarray of bool (n, m)
         Interior node j of line l where the change of the secant slope |D_j| = |δ_j −
-        δ_{j−1}| exceeds ``ratio`` times the median |D| of the other interior nodes within
-        :data:`CORNER_WINDOW` of j: the two nodes of the cell a kink lies in, or the node
-        it lies on, and above 1e-9 of the line's largest |δ| (round-off). A smooth line
-        (D_j about h f'') has none.
+        δ_{j−1}| exceeds ``ratio`` times the median |D| of the interior nodes within
+        :data:`CORNER_WINDOW` before j and ``ratio`` times that of those after it (each
+        side at least one node: the first and last two nodes are none), and 1e-9 of the
+        line's largest |δ| (round-off): the two nodes of the cell a kink lies in, or the
+        node it lies on. A smooth line (D_j about h f'') has none, nor one whose bending
+        grows steadily towards an end (a gap curvature rising towards a fold: D_j below
+        the median of the side it grows to).
 
     Notes
     -----
@@ -96,10 +100,10 @@ def corner_nodes(x, y, ratio: float = CORNER_RATIO) -> np.ndarray:
     # a slope change at round-off of the line's slopes is no corner (straight data)
     floor = 1e-9 * np.max(np.abs(delta), axis=0)
     out = np.zeros(y.shape, dtype=bool)
-    for j in range(1, n - 1):
-        lo, hi = max(1, j - CORNER_WINDOW), min(n - 1, j + CORNER_WINDOW + 1)
-        others = np.concatenate([d[lo:j], d[j + 1:hi]])
-        out[j] = (d[j] > ratio * np.median(others, axis=0)) & (d[j] > floor)
+    for j in range(2, n - 2):  # a side of at least one interior node each
+        left = np.median(d[max(1, j - CORNER_WINDOW):j], axis=0)
+        right = np.median(d[j + 1:min(n - 1, j + CORNER_WINDOW + 1)], axis=0)
+        out[j] = (d[j] > ratio * left) & (d[j] > ratio * right) & (d[j] > floor)
     return out
 
 
@@ -123,7 +127,7 @@ def _piece_slopes(x: np.ndarray, y: np.ndarray) -> np.ndarray:
     return _spline_slopes(np.ascontiguousarray(x).tobytes()) @ y
 
 
-def node_slopes(x, y, ratio: float = CORNER_RATIO) -> np.ndarray:
+def node_slopes(x, y, ratio: float = CORNER_RATIO, corners: bool = True) -> np.ndarray:
     """Node slopes along the first axis: each piece's spline, harmonic at the cuts.
 
     Parameters
@@ -134,6 +138,8 @@ def node_slopes(x, y, ratio: float = CORNER_RATIO) -> np.ndarray:
         Data, one line per column (finite).
     ratio : float
         :func:`corner_nodes`'s ratio.
+    corners : bool
+        False: every line's not-a-knot spline slopes (no line cut).
 
     Returns
     -------
@@ -156,9 +162,11 @@ def node_slopes(x, y, ratio: float = CORNER_RATIO) -> np.ndarray:
     if not np.all(np.isfinite(y)):
         raise InputError("y: must be finite (fill masked nodes first)")
     out = _spline_slopes(x.tobytes()) @ y
-    corners = corner_nodes(x, y, ratio)
-    for line in np.flatnonzero(corners.any(axis=0)):
-        cuts = [0, *np.flatnonzero(corners[:, line]), x.size - 1]
+    if not corners:
+        return out
+    cut = corner_nodes(x, y, ratio)
+    for line in np.flatnonzero(cut.any(axis=0)):
+        cuts = [0, *np.flatnonzero(cut[:, line]), x.size - 1]
         left = np.full(x.size, np.nan)  # one-sided slopes from the piece to the left
         right = np.full(x.size, np.nan)
         for a, b in itertools.pairwise(cuts):
@@ -191,7 +199,8 @@ def _hermite_coefficients(x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.nda
     return knots, a, b
 
 
-def corner_spline(x, y, z, ratio: float = CORNER_RATIO) -> RectBivariateSpline:
+def corner_spline(x, y, z, ratio: float = CORNER_RATIO,
+                  corners: bool = True) -> RectBivariateSpline:
     """The bicubic Hermite interpolant of gridded data whose node slopes do not ring
     across a corner.
 
@@ -206,6 +215,9 @@ def corner_spline(x, y, z, ratio: float = CORNER_RATIO) -> RectBivariateSpline:
         Values (finite; fill masked nodes first).
     ratio : float
         :func:`corner_nodes`'s ratio.
+    corners : bool
+        False: no line cut, the interpolating spline itself in this form (on the same
+        knots as the others of a grid, so that they convert to one piecewise form).
 
     Returns
     -------
@@ -231,9 +243,9 @@ def corner_spline(x, y, z, ratio: float = CORNER_RATIO) -> RectBivariateSpline:
     z = np.asarray(z, dtype=float)
     if z.shape != (x.size, y.size):
         raise InputError(f"z: must be ({x.size}, {y.size}), got {z.shape}")
-    zx = node_slopes(x, z, ratio)
-    zy = node_slopes(y, z.T, ratio).T
-    zxy = node_slopes(x, zy, ratio)
+    zx = node_slopes(x, z, ratio, corners)
+    zy = node_slopes(y, z.T, ratio, corners).T
+    zxy = node_slopes(x, zy, ratio, corners)
     tx, ax, bx = _hermite_coefficients(x)
     ty, ay, by = _hermite_coefficients(y)
     c = ax @ z @ ay.T + bx @ zx @ ay.T + ax @ zy @ by.T + bx @ zxy @ by.T

@@ -144,19 +144,24 @@ class EaseOffFields:
         self.computed = computed
         gear_ok = np.all(np.isfinite(eo.gear_position), axis=-1)
 
-        def spl(fields, ok):
+        def spl(fields, ok, corners=False):
             # the fields sharing a mask are filled together (same arithmetic per field)
             filled = fill_missing(np.stack(fields, -1), ok)
-            return [corner_spline(self.u, self.v, filled[..., k])
+            return [corner_spline(self.u, self.v, filled[..., k], corners=corners)
                     for k in range(len(fields))]
 
         # ε and Q from the valid nodes and, beyond them, from the computed nodes on the same
         # smooth sheet (both points on their blades' main sections), continued linearly
         # past those: a section junction (e.g. the gear's fillet) kinks the fields, and a
-        # cubic spline would carry the kink back into the contact region
+        # cubic spline would carry the kink back into the contact region. Their grid lines
+        # are cut at a corner (a relief's start, a filled node; corner_spline): the global
+        # spline rang there, 30 µrad below flat node data next to a tip relief's corner
+        # (issue 71). The gear flank's fields are smooth, and the pinion mate's margin is a
+        # least of distances whose ridges are no corner of the contact region: their
+        # splines as before (on the same knots, for the groups of values()).
         sheet = valid | eo.smooth
         self.q, self.eps, self.gap = spl(
-            [eo.raw_roll_angle, eo.raw_ease_off_angle, eo.gap_curvature], sheet)
+            [eo.raw_roll_angle, eo.raw_ease_off_angle, eo.gap_curvature], sheet, True)
         k_nodes = eo.gap_curvature[sheet & np.isfinite(eo.gap_curvature)]
         self.gap_range = ((float(k_nodes.min()), float(k_nodes.max())) if k_nodes.size
                           else (-np.inf, np.inf))
