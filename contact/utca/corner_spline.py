@@ -82,9 +82,12 @@ def corner_nodes(x, y, ratio: float = CORNER_RATIO) -> np.ndarray:
         :data:`CORNER_WINDOW` before j and ``ratio`` times that of those after it (each
         side at least one node: the first and last two nodes are none), and 1e-9 of the
         line's largest |δ| (round-off): the two nodes of the cell a kink lies in, or the
-        node it lies on. A smooth line (D_j about h f'') has none, nor one whose bending
-        grows steadily towards an end (a gap curvature rising towards a fold: D_j below
-        the median of the side it grows to).
+        node it lies on. Corners found leave the medians and the search is repeated until
+        it finds no more (two kinks a node or two apart, as a relief's start next to the
+        fill's constant continuation, each hide the other from a median otherwise). A
+        smooth line (D_j about h f'') has none, nor one whose bending grows steadily
+        towards an end (a gap curvature rising towards a fold: D_j below the median of
+        the side it grows to).
 
     Notes
     -----
@@ -100,11 +103,29 @@ def corner_nodes(x, y, ratio: float = CORNER_RATIO) -> np.ndarray:
     # a slope change at round-off of the line's slopes is no corner (straight data)
     floor = 1e-9 * np.max(np.abs(delta), axis=0)
     out = np.zeros(y.shape, dtype=bool)
-    for j in range(2, n - 2):  # a side of at least one interior node each
-        left = np.median(d[max(1, j - CORNER_WINDOW):j], axis=0)
-        right = np.median(d[j + 1:min(n - 1, j + CORNER_WINDOW + 1)], axis=0)
-        out[j] = (d[j] > ratio * left) & (d[j] > ratio * right) & (d[j] > floor)
+    for _ in range(n):  # corners found leave the background until no more are found
+        background = np.where(out, np.nan, d)
+        found = np.zeros_like(out)
+        for j in range(2, n - 2):  # a side of at least one interior node each
+            sides = (background[max(1, j - CORNER_WINDOW):j],
+                     background[j + 1:min(n - 1, j + CORNER_WINDOW + 1)])
+            with np.errstate(invalid="ignore"):  # a side all corners: NaN, no corner
+                left, right = (_nanmedian(b) for b in sides)
+            found[j] = (d[j] > ratio * left) & (d[j] > ratio * right) & (d[j] > floor)
+        if not (found & ~out).any():
+            break
+        out |= found
     return out
+
+
+def _nanmedian(b: np.ndarray) -> np.ndarray:
+    """The median of each column of b over its finite entries (NaN where none)."""
+    ok = np.isfinite(b)
+    srt = np.sort(np.where(ok, b, np.inf), axis=0)
+    k = ok.sum(axis=0)
+    lo = np.take_along_axis(srt, np.maximum((k - 1) // 2, 0)[None], axis=0)[0]
+    hi = np.take_along_axis(srt, np.maximum(k // 2, 0)[None], axis=0)[0]
+    return np.where(k > 0, 0.5 * (lo + hi), np.nan)
 
 
 @memoised(maxsize=16)
