@@ -36,6 +36,7 @@ from __future__ import annotations
 import itertools
 
 import numpy as np
+from numpy.lib.stride_tricks import sliding_window_view
 from scipy.interpolate import RectBivariateSpline, make_interp_spline
 
 from geometry.core.caches import memoised
@@ -102,16 +103,19 @@ def corner_nodes(x, y, ratio: float = CORNER_RATIO) -> np.ndarray:
     d[1:-1] = np.abs(np.diff(delta, axis=0))
     # a slope change at round-off of the line's slopes is no corner (straight data)
     floor = 1e-9 * np.max(np.abs(delta), axis=0)
+    w = CORNER_WINDOW
+    inner = np.zeros(n, dtype=bool)
+    inner[2:n - 2] = True  # a side of at least one interior node each
     out = np.zeros(y.shape, dtype=bool)
     for _ in range(n):  # corners found leave the background until no more are found
-        background = np.where(out, np.nan, d)
-        found = np.zeros_like(out)
-        for j in range(2, n - 2):  # a side of at least one interior node each
-            sides = (background[max(1, j - CORNER_WINDOW):j],
-                     background[j + 1:min(n - 1, j + CORNER_WINDOW + 1)])
-            with np.errstate(invalid="ignore"):  # a side all corners: NaN, no corner
-                left, right = (_nanmedian(b) for b in sides)
-            found[j] = (d[j] > ratio * left) & (d[j] > ratio * right) & (d[j] > floor)
+        padded = np.full((n + 2 * w, y.shape[1]), np.nan)
+        padded[w:w + n] = np.where(out, np.nan, d)  # d is NaN on the end nodes
+        windows = sliding_window_view(padded, w, axis=0)  # (n + w + 1, m, w)
+        left = _nanmedian(windows[:n])  # nodes j − w … j − 1
+        right = _nanmedian(windows[w + 1:w + 1 + n])  # nodes j + 1 … j + w
+        with np.errstate(invalid="ignore"):  # a side all corners: NaN, no corner
+            found = ((d > ratio * left) & (d > ratio * right) & (d > floor)
+                     & inner[:, None])
         if not (found & ~out).any():
             break
         out |= found
@@ -119,12 +123,12 @@ def corner_nodes(x, y, ratio: float = CORNER_RATIO) -> np.ndarray:
 
 
 def _nanmedian(b: np.ndarray) -> np.ndarray:
-    """The median of each column of b over its finite entries (NaN where none)."""
+    """The median over the last axis of b's finite entries (NaN where none)."""
     ok = np.isfinite(b)
-    srt = np.sort(np.where(ok, b, np.inf), axis=0)
-    k = ok.sum(axis=0)
-    lo = np.take_along_axis(srt, np.maximum((k - 1) // 2, 0)[None], axis=0)[0]
-    hi = np.take_along_axis(srt, np.maximum(k // 2, 0)[None], axis=0)[0]
+    srt = np.sort(np.where(ok, b, np.inf), axis=-1)
+    k = ok.sum(axis=-1)
+    lo = np.take_along_axis(srt, np.maximum((k - 1) // 2, 0)[..., None], axis=-1)[..., 0]
+    hi = np.take_along_axis(srt, np.maximum(k // 2, 0)[..., None], axis=-1)[..., 0]
     return np.where(k > 0, 0.5 * (lo + hi), np.nan)
 
 
