@@ -1,7 +1,6 @@
 """The ease-off fields as smooth functions over the gear grid (seed §2.3.2.2, §4.4).
 
-:class:`EaseOffFields` holds bicubic interpolating splines
-(``scipy.interpolate.RectBivariateSpline``, s = 0, which reproduce the exact node values) of
+:class:`EaseOffFields` holds bicubic interpolants (which reproduce the exact node values) of
 the fields of an :class:`contact.utca.easeoff.EaseOff` over the gear projection-plane grid
 (u, v): the surface of roll angle Q, the angular ease-off ε, the gap curvature K, the
 normal arm, the real gear flank (points and normals) and the mating pinion point's margin
@@ -14,11 +13,18 @@ ask of the ease-off: which places can be touched (:meth:`EaseOffFields.inside`,
 ε, Q and K are built from the valid nodes and the computed nodes on the same smooth sheet
 beyond them (both points on their blades' main sections), continued linearly past those
 (:func:`contact.utca.easeoff.fill_missing`): a blade-section junction kinks the fields and
-a cubic spline would carry the kink back. Q must be strictly monotone along the profile
-direction (checked; otherwise ``ModelUnavailableError``), so a contact curve is
-parameterised by the lengthwise fraction u and its profile place v*(u) solved by Newton's
-method on the spline (on a set of places shared by many curves, on the spline's cubic
-piece of each place's column: :meth:`EaseOffFields.solve_columns`).
+a cubic spline would carry the kink back. Their interpolant is
+:func:`contact.utca.corner_spline.corner_spline`: the interpolating bicubic spline
+(``RectBivariateSpline``, s = 0) where the nodes are smooth, cut into pieces with
+shape-preserving slopes at a corner (a relief's start, a filled node), where the global
+spline rang (30 µrad below flat node data next to a tip relief's corner, issue 71); the
+other fields are the interpolating splines in the same form (same knots).
+
+Q must be strictly monotone along the profile direction (checked; otherwise
+``ModelUnavailableError``), so a contact curve is parameterised by the lengthwise fraction
+u and its profile place v*(u) solved by Newton's method on the interpolant (on a set of
+places shared by many curves, on the interpolant's cubic piece of each place's column:
+:meth:`EaseOffFields.solve_columns`).
 
 Public functions
 ----------------
@@ -87,7 +93,7 @@ def kernels_module(kernels: str | None = None) -> ModuleType | None:
 
 
 class EaseOffFields:
-    """Bicubic splines of the ease-off fields over the gear grid (u, v).
+    """Bicubic interpolants of the ease-off fields over the gear grid (u, v).
 
     Parameters
     ----------
@@ -104,7 +110,10 @@ class EaseOffFields:
     u, v : ndarray — [1]
         The gear grid's lengthwise and profile fractions.
     q, eps, gap : RectBivariateSpline
-        Q [rad], ε [rad] and the gap curvature K [1/rad] over (u, v).
+        Q [rad], ε [rad] and the gap curvature K [1/rad] over (u, v): corner-aware
+        bicubic Hermite interpolants with double knots
+        (:func:`contact.utca.corner_spline.corner_spline`; the others are the
+        interpolating splines in that form).
     arm : RectBivariateSpline
         Normal arm ρ |n·e_θ| [mm].
     pos, nrm : list of 3 RectBivariateSpline
