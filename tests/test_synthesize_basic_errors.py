@@ -428,7 +428,7 @@ def test_a_case_no_analysis_accepts_is_not_written(tmp_path, capsys, monkeypatch
     path with the analysis' message of then (the check returning it): rc 2 with that
     reason, the face contact ratio (0.56, below 1.25) and the cutter radius named as the
     changes to try, and no file written."""
-    import contact.commands.synthesize_contact as sc
+    import contact.optimize.written_contact as sc
     from contact.utca.datasets import unloaded_tca
 
     miter = Path(__file__).parent / "data" / "limits" / "spiral_bevel_12x12_miter_b35.toml"
