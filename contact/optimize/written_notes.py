@@ -66,7 +66,16 @@ PROFILE_CONTACT_RATIO_NOTE = 1.0
 def contact_ratios(case) -> tuple[float, float] | None:
     """(ε_vα, ε_vβ) [1] of ISO 10300-1's virtual cylindrical gears of the case written
     (Annex A: transverse and face contact ratio), None where the rating's inputs are not
-    there (a case the rating cannot read: said by ``ltca run`` itself)."""
+    there (a case the rating cannot read: said by ``ltca run`` itself).
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+
+    Returns
+    -------
+    (float, float) or None
+    """
     from contact.load_capacity.iso10300.rating import iso10300_rating
     from geometry.core.errors import InputError
 
@@ -390,9 +399,33 @@ def _prescribed(basic, case, development):
 
 
 def noted_case(basic, case, development):
-    """(case, contact ratios, LTE notes, remedies' record) of the case to write:
-    :func:`_lte_notes` made before it is written, the remedies' checks recorded in it
-    (:func:`with_record`) for ``ltca run``'s next step."""
+    """The case to write with its LTE notes made before it is written
+    (:func:`_lte_notes`) and the contact-ratio remedies' checks recorded in it
+    (:func:`with_record`) for ``ltca run``'s next step.
+
+    Parameters
+    ----------
+    basic : geometry.synthesis.basic_design.BasicDesign
+        The basic data written (its ``design``: the remedies' changes; with a development
+        the remedies are checked at its ``basic``, the written prescriptions).
+    case : geometry.case.Case
+        The case to write (:func:`contact.optimize.development_written.written_case`).
+    development : contact.optimize.development_result.DevelopmentResult or None
+        None: the local synthesis as prescribed (``--no-development``).
+
+    Returns
+    -------
+    (case, ratios, notes, record)
+        The case (with :data:`~contact.optimize.remedy_check.RECORD_TABLE` where a remedy
+        was checked), the contact ratios (ε_vα, ε_vβ) [1] or None, the notes (each
+        without its "note: ") and the :class:`~contact.optimize.remedy_check.RemedyRecord`
+        or None.
+
+    Notes
+    -----
+    Source: ``ltca synthesize`` (issue 71); the limits :data:`FACE_CONTACT_RATIO_NOTE`
+    (AGMA 2005-D03) and :data:`PROFILE_CONTACT_RATIO_NOTE`.
+    """
     ratios = contact_ratios(case)
     notes, record = _lte_notes(basic, case, development, ratios)
     return ((case if record is None else with_record(case, record)), ratios, notes,
@@ -508,7 +541,18 @@ def _developed_lines(applied) -> list[str]:
 
 def with_record(case, record):
     """``case`` with the remedies' checks as its informational
-    :data:`~contact.optimize.remedy_check.RECORD_TABLE` table."""
+    :data:`~contact.optimize.remedy_check.RECORD_TABLE` table.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    record : contact.optimize.remedy_check.RemedyRecord
+
+    Returns
+    -------
+    geometry.case.Case
+        A copy, its ``extra`` JSON-safe (:func:`contact.optimize.remedy_check.remedy_record`).
+    """
     import dataclasses
     import json
     from types import MappingProxyType
