@@ -83,10 +83,10 @@ def _developed(basic, apply_remedy: bool, progress, synthesis_progress):
     own targets, its µm amounts following its size)."""
     from contact.optimize import development as dev
     from contact.optimize.development import targets_from_table
-    from contact.optimize.written_notes import _size_scale
+    from contact.optimize.written_notes import size_scale
 
     # the µm amounts follow the design's size
-    targets = targets_from_table(basic.development, size_scale=_size_scale(basic))
+    targets = targets_from_table(basic.development, size_scale=size_scale(basic))
     found = dev.develop(basic, targets=None if apply_remedy else targets,
                         progress=progress, synthesis_progress=synthesis_progress,
                         apply_remedy=apply_remedy)
@@ -242,12 +242,12 @@ def _summary_lines(case, report, basic, found, targets, raised, torques,
     flank's settings, the torques, the contact ratios, the size, the raised reliefs, the
     development's headline and LTE lines and the gear process note."""
     from contact.optimize.written_notes import (
-        _design_torque_line,
-        _given_coast_torque,
-        _given_torque_note,
-        _lte_lines,
-        _size_line,
+        design_torque_line,
         gear_process_note,
+        given_coast_torque,
+        given_torque_note,
+        size_line,
+        written_lte_lines,
     )
 
     torque, torque_why, coast_torque, coast_why = torques
@@ -262,23 +262,23 @@ def _summary_lines(case, report, basic, found, targets, raised, torques,
                    f"{s.ratio_of_roll:.5f}, S_r {s.radial_setting:.3f} mm, E_m "
                    f"{s.blank_offset:.3f} mm, curvature residual "
                    f"{fs.tools.shape_error:.1e} 1/mm")
-    out.append(_design_torque_line(torque, torque_why, found))
+    out.append(design_torque_line(torque, torque_why, found))
     if math.isfinite(coast_torque):
         out.append(f"  coast design torque: {plain_number(coast_torque)} N m, {coast_why}")
-    elif (given_coast := _given_coast_torque(case)) is not None:
+    elif (given_coast := given_coast_torque(case)) is not None:
         # a coast torque the basic file gives was written without a line (round 24's
         # 14x39 FH: 200 N m in the case, said only by the development's lines)
         out.append(f"  coast design torque: {plain_number(given_coast)} N m, given "
                    "([rating] coast_design_torque of the basic file)")
     given = torque_why.startswith(("[synthesis] design_torque", "[rating] design_torque"))
-    above = _given_torque_note(case, torque, found) if given else None
+    above = given_torque_note(case, torque, found) if given else None
     if above is not None:
         out.append("note: " + above)
     if ratios is not None:
         out.append(f"  contact ratios (ISO 10300-1 virtual cylindrical gears): profile "
                    f"eps_va {ratios[0]:.2f}, face eps_vb {ratios[1]:.2f}, total "
                    f"{sum(ratios):.2f}")
-    size = _size_line(basic, targets)
+    size = size_line(basic, targets)
     if size is not None:
         out.append(size)
     out.extend("  " + line for line in raised)
@@ -286,7 +286,7 @@ def _summary_lines(case, report, basic, found, targets, raised, torques,
         out.append("  " + found.headline())
         # each flank's LTE at its torques and the largest between them where it misses
         # the target or the verdict's limit (issue 71: "at every torque")
-        out.extend("  " + line for line in _lte_lines(case, found))
+        out.extend("  " + line for line in written_lte_lines(case, found))
     process = gear_process_note(found, case)
     if process is not None:
         out.append("note: " + process)

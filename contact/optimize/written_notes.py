@@ -314,7 +314,7 @@ def _lte_notes(basic, case, development, ratios) -> tuple[list[str], object]:
         # the sentence said from those checks
         # a change its check measures no better is no remedy where the written LTE
         # is already within the limit (contact.optimize.remedy_check.no_better)
-        record = checked_record(_prescribed(basic, case, development), basic.design,
+        record = checked_record(prescribed_basic_of(basic, case, development), basic.design,
                                 written, LTE_LIMIT, lte_within(development, LTE_LIMIT))
         checks = () if record is None else record.checks
         unrel = math.nan if record is None else record.unrelieved_ute
@@ -329,17 +329,17 @@ def _lte_notes(basic, case, development, ratios) -> tuple[list[str], object]:
                       "a deeper tooth (k_d) or a smaller pressure angle (alpha_dD) eps_va")
                      + (f"; {low_overlap_lte(development, written, checks, unrel)}"
                         if development is not None else "")
-                     + _length_trade(development, ratios, record))
+                     + length_trade(development, ratios, record))
     if misjudged is not None:
         lines.append(misjudged)
     if far is None and development is not None:
-        said = _deflection_note(case, development)
+        said = deflection_note(case, development)
         if said is not None:
             lines.append(said)
     return lines, record
 
 
-def _length_trade(development, ratios, record=None) -> str:
+def length_trade(development, ratios, record=None) -> str:
     """"; " and :func:`contact.optimize.development_length_trade.length_trade_text` (the
     drive pattern's length given up for the LTE on a face contact ratio below
     :data:`FACE_CONTACT_RATIO_NOTE`; ``--apply-remedy`` named where a change of the
@@ -388,7 +388,7 @@ def _written_ute(case, development, ratios) -> tuple[float, float] | None:
     return ute, span
 
 
-def _prescribed(basic, case, development):
+def prescribed_basic_of(basic, case, development):
     """The basic data at the written case's prescriptions: the development's ``basic``
     (both flanks as written), the file's own without a development; its gear process the
     written case's where the file leaves it to ``"auto"`` (the remedies' syntheses then
@@ -507,7 +507,7 @@ def first_lines(basic, development, record, shown: str) -> list[str]:
            f"{PROFILE_CONTACT_RATIO_NOTE:g}")
     lines = [f"{low}: the developed LTE p-p {', '.join(lte_parts(development))} "
              f"(light/design){above_limit_text(development, LTE_LIMIT)}"]
-    if _ute_is_the_lte(development, record):
+    if ute_is_the_lte(development, record):
         return [*lines, "  the drive LTE is the written flank's unloaded TE, not the contact "
                         "ratio's (the note below): no contact-ratio remedy is the lever"]
     chosen = chosen_check(record)
@@ -563,7 +563,7 @@ def with_record(case, record):
     return dataclasses.replace(case, extra=MappingProxyType(extra))
 
 
-def _given_coast_torque(case) -> float | None:
+def given_coast_torque(case) -> float | None:
     """The ``[rating] coast_design_torque`` [N·m] of ``case`` where it is a finite number,
     else None (``ltca synthesize`` prints it as the coast design torque; issue 71)."""
     value = (case.extra.get("rating") or {}).get("coast_design_torque")
@@ -574,7 +574,7 @@ def _given_coast_torque(case) -> float | None:
     return value if math.isfinite(value) else None
 
 
-def _lte_lines(case, development) -> list[str]:
+def written_lte_lines(case, development) -> list[str]:
     """Each flank's written LTE at its light and design torque and its largest between
     them, where it misses the development's target or the verdict's limit
     (:func:`contact.optimize.development_lte_lines.lte_lines`); the drive flank's range
@@ -603,7 +603,7 @@ def _lte_lines(case, development) -> list[str]:
     return lte_lines(development, drive_between=drive)
 
 
-def _deflection_note(case, development) -> str | None:
+def deflection_note(case, development) -> str | None:
     """What sets the written drive flank's LTE at the design torque, where it exceeds the
     verdict's limit: the teeth's mean deflection, the LTE's share of it and the torque up
     to which the written bearing keeps the limit; where it keeps the limit at the light
@@ -669,7 +669,7 @@ def _conjugacy_notes(case, development, ratios) -> tuple[str | None, str | None]
     return far, misjudged_trial_text(development)
 
 
-def _above_capacity_note(case, torque: float) -> str | None:
+def above_capacity_note(case, torque: float) -> str | None:
     """A note where the design torque the basic file gives (``[synthesis] design_torque``
     or ``[rating] design_torque``) is above the written pair's ISO 10300 long-life capacity
     (:func:`contact.load_capacity.iso10300.capacity.capacity_torque`, S_H = S_H,min or
@@ -701,7 +701,7 @@ def _above_capacity_note(case, torque: float) -> str | None:
             "load cycles as [rating] load_cycles, rates it for what it is")
 
 
-def _design_torque_line(torque: float, why: str, development) -> str:
+def design_torque_line(torque: float, why: str, development) -> str:
     """The printed "design torque:" line: the torque the case written runs and ``ltca run``
     analyses, as written, and where it comes from (``why``). Where the development ran,
     its design torque (``development.torque[1]``, :func:`contact.optimize.
@@ -719,19 +719,19 @@ def _design_torque_line(torque: float, why: str, development) -> str:
     return f"  design torque: {plain_number(torque, 8)} N m, {why}"
 
 
-def _given_torque_note(case, torque: float, development) -> str | None:
+def given_torque_note(case, torque: float, development) -> str | None:
     """The note on a design torque the basic file gives: above the pair's ISO 10300
-    capacity (:func:`_above_capacity_note`), else above the developed bearing's
+    capacity (:func:`above_capacity_note`), else above the developed bearing's
     root-stress capacity (S_F,FE < S_Fmin there, which ``ltca run`` rates FAIL:
     :attr:`contact.optimize.development_result.DevelopmentResult.given_root_text`); None
     where neither."""
-    above = _above_capacity_note(case, torque)
+    above = above_capacity_note(case, torque)
     if above is None and development is not None and development.given_root_text:
         return development.given_root_text
     return above
 
 
-def _size_scale(basic) -> float:
+def size_scale(basic) -> float:
     """The basic design's :func:`geometry.synthesis.basic_design.size_scale`; 1 where its
     blank cannot be made (the synthesis then names why)."""
     from geometry.core.errors import InputError
@@ -742,12 +742,12 @@ def _size_scale(basic) -> float:
         return 1.0
 
 
-def _size_line(basic, targets) -> str | None:
+def size_line(basic, targets) -> str | None:
     """The line saying the µm-sized defaults were scaled to a small module; None at a
     scale of 1."""
     from geometry.synthesis.basic_design import REFERENCE_MODULE
 
-    scale = _size_scale(basic)
+    scale = size_scale(basic)
     if scale >= 1.0:
         return None
     o = basic.options.flank(basic.options.drive_flank)
@@ -802,7 +802,7 @@ def synthesis_fe_level(basic, given: str | None = None) -> str:
     return own if "fe_level" in basic.root_stress else SYNTHESIS_LEVEL
 
 
-def _ute_is_the_lte(development, record) -> bool:
+def ute_is_the_lte(development, record) -> bool:
     """Whether the written drive flank's unloaded TE is what its LTE is
     (:func:`contact.optimize.remedy_check.lte_diagnosis`, the note's and ``ltca run``'s one
     statement), from the remedies' record's unloaded TE: then no contact-ratio remedy is
