@@ -97,6 +97,7 @@ __all__ = [
     "shell_assembler",
     "solve_contact",
     "sweep",
+    "synthesize_case",
     "transmission_error_figure",
     "unloaded_tca",
     "unregister_backend",
@@ -136,6 +137,8 @@ _LAZY = {
     # (the optimiser itself is contact.optimize.optimize: a name ``optimize`` here would
     # hide the subpackage)
     **dict.fromkeys(("OptimizeProblem", "develop", "DevelopmentTargets"), "contact.optimize"),
+    # the case `ltca synthesize` writes and its lines (issue 71, branch api88)
+    "synthesize_case": "contact.optimize.synthesized_case",
     "iso10300_rating": "contact.load_capacity.iso10300",
     "iso10300_capacity": "contact.load_capacity.iso10300.capacity",
     **dict.fromkeys(("available_rating_methods", "rate_load_capacity", "register_rating_method",

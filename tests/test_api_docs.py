@@ -68,7 +68,7 @@ TOOLS = {
     "contact.available_steps", "contact.sweep", "contact.sample", "contact.StudyRun",
     "contact.verdict", "contact.DutyCycle", "contact.read_duty_cycle",
     "contact.example_duty_cycle",
-    "contact.DevelopmentTargets", "contact.OptimizeProblem",
+    "contact.DevelopmentTargets", "contact.OptimizeProblem", "contact.synthesize_case",
     "geometry.corrected_case",
     # options, results, constants and errors
     "contact.LTCAOptions", "contact.FEOptions", "contact.ContactSolution",

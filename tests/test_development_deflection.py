@@ -123,7 +123,7 @@ def test_synthesize_note_only_where_the_check_did_not_judge_the_range_within(mon
     from types import SimpleNamespace
 
     import contact.optimize.development_deflection as dd
-    from contact.commands.synthesize import _deflection_note
+    from contact.optimize.written_notes import deflection_note
 
     def fail(*args, **kwargs):
         raise AssertionError("analysed where the LTE keeps the limit")
@@ -132,7 +132,7 @@ def test_synthesize_note_only_where_the_check_did_not_judge_the_range_within(mon
     metrics = {"lte_peak_to_peak": [70.0, 38.0]}
     within = SimpleNamespace(best=SimpleNamespace(metrics=metrics), torque=(36.9, 246.5),
                              lte_range={"peak": 59.9, "at": 140.1})
-    assert _deflection_note(object(), within) is None  # judged within: never analysed
+    assert deflection_note(object(), within) is None  # judged within: never analysed
     # the truck 8x41's numbers: judged above the limit between the torques by the check
     truck = DeflectionLTE((254.3, 734.9, 1215.5, 1696.0), (38.5, 65.8, 41.0, 38.6),
                           (300.0, 700.0, 1000.0, 1300.0), 60.0)
@@ -145,14 +145,14 @@ def test_synthesize_note_only_where_the_check_did_not_judge_the_range_within(mon
     monkeypatch.setattr(dd, "analysed", between)
     judged = SimpleNamespace(best=SimpleNamespace(metrics={"lte_peak_to_peak": [38.5, 38.6]}),
                              torque=(254.3, 1696.0), lte_range={"peak": 65.8, "at": 734.9})
-    text = _deflection_note(object(), judged)
+    text = deflection_note(object(), judged)
     assert asked == [(254.3, 1696.0)]
     assert text == dd.between_text(truck)
     assert "65.8 urad at 734.9 N m, between the light 254.3 and the design torque 1696" in text
     assert "above the limit 60 urad" in text
     # not judged at the written torques (changed after the check's steps): analysed
     unjudged = SimpleNamespace(best=judged.best, torque=(254.3, 1696.0), lte_range=None)
-    assert _deflection_note(object(), unjudged) == text
+    assert deflection_note(object(), unjudged) == text
     assert len(asked) == 2
     found = DeflectionLTE(TORQUES_16, LTE_16, DEFLECTION_16, 60.0)
     seen = []
@@ -166,7 +166,7 @@ def test_synthesize_note_only_where_the_check_did_not_judge_the_range_within(mon
     case = SimpleNamespace(pinion=SimpleNamespace(blank=blank), gear=SimpleNamespace(blank=blank))
     above = SimpleNamespace(best=SimpleNamespace(metrics={"lte_peak_to_peak": [45.0, 121.6]}),
                             torque=(97.4, 649.4))
-    text = _deflection_note(case, above)
+    text = deflection_note(case, above)
     assert seen == [(97.4, 649.4)]
     assert text == deflection_text(found, curvature_ratio(16, 16, math.radians(30),
                                                           math.radians(30)))

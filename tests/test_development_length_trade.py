@@ -10,7 +10,6 @@ from types import SimpleNamespace
 import pytest
 from development_stand_ins import checked, metrics
 
-from contact.commands.synthesize import FACE_CONTACT_RATIO_NOTE, _length_trade
 from contact.load_capacity.iso10300.face_contact import FACE_CONTACT_RATIO_MIN
 from contact.optimize.development import DevelopmentTargets
 from contact.optimize.development_length_trade import (
@@ -21,6 +20,7 @@ from contact.optimize.development_length_trade import (
     overlap_length,
     traded_length,
 )
+from contact.optimize.written_notes import FACE_CONTACT_RATIO_NOTE, length_trade
 from geometry.core.errors import InputError
 
 #: the measured least light-load pattern length [1] at which the LTE p-p kept 40 µrad at
@@ -93,7 +93,7 @@ def test_the_note_on_the_27x34():
                            "target 0.5 +/- 0.1, its one target missed")
     assert "at eps_vb 1.17 needs a light-load pattern of about 0.60" in said
     assert "at eps_vb 1.25 the LTE needs 0.56, within it" in said
-    assert _length_trade(d, (1.36, 1.173)) == "; " + said
+    assert length_trade(d, (1.36, 1.173)) == "; " + said
 
 
 def test_no_note_where_nothing_was_traded():
@@ -105,7 +105,7 @@ def test_no_note_where_nothing_was_traded():
     # the LTE missed too
     lte = _development(WRITTEN_27X34 | {"lte_peak_to_peak": [21.0, 56.0]})
     assert length_trade_text(lte, 0.83, FACE_CONTACT_RATIO_NOTE) == ""
-    assert _length_trade(None, (1.36, 1.173)) == ""
+    assert length_trade(None, (1.36, 1.173)) == ""
 
 
 def test_the_note_names_apply_remedy_where_a_change_passed(monkeypatch):
@@ -116,12 +116,12 @@ def test_the_note_names_apply_remedy_where_a_change_passed(monkeypatch):
     d = _development(WRITTEN_27X34)
     record = object()
     monkeypatch.setattr(remedy, "chosen_check", lambda r: "passed" if r is record else None)
-    said = _length_trade(d, (1.36, 1.173), record)
+    said = length_trade(d, (1.36, 1.173), record)
     assert said.endswith("within it; ltca synthesize --apply-remedy develops the checked "
                          "change")
     # none passed its check (or none checked): the flag is not named
-    assert not _length_trade(d, (1.36, 1.173), object()).endswith("change")
-    assert _length_trade(d, (1.36, 1.173), None).endswith("within it")
+    assert not length_trade(d, (1.36, 1.173), object()).endswith("change")
+    assert length_trade(d, (1.36, 1.173), None).endswith("within it")
 
 
 #: the written 21x21 at eps_vb 0.64 (`ltca synthesize` with every default, 2026-11-27,
@@ -170,7 +170,7 @@ def test_the_note_on_the_21x21_says_no_length_is_long_enough():
     assert "more than the 0.92 the toe and heel clearance leave" in said
     assert said.endswith("the length target stays")
     # the command's hook: the LTE missed, so no length trade before it
-    assert _length_trade(d, (1.23, 0.64)) == "; " + said
+    assert length_trade(d, (1.23, 0.64)) == "; " + said
 
 
 def test_no_length_note_where_a_pattern_fits_or_the_lte_holds():
@@ -181,7 +181,7 @@ def test_no_length_note_where_a_pattern_fits_or_the_lte_holds():
     assert no_length_text(held, 0.64, 60.0) == ""
     # the 27x34's trade is said alone (eps_vb 1.17: the pattern fits)
     d27 = _development(WRITTEN_27X34)
-    assert _length_trade(d27, (1.36, 1.173)) == "; " + length_trade_text(
+    assert length_trade(d27, (1.36, 1.173)) == "; " + length_trade_text(
         d27, 1.173, FACE_CONTACT_RATIO_NOTE)
     # the 16x20 at Sigma 75 deg (eps_vb 0.71, LTE 55 / 84 urad written): 0.99 of the face
     fh = _development(WRITTEN_21X21 | {"lte_peak_to_peak": [55.2, 84.0]})

@@ -128,12 +128,12 @@ def test_the_printed_design_torque_is_the_one_the_case_runs(given, runs):
     the 19x57 given 2865.6 N m printed "2866 N m" and ran at 2865. The given torque is
     named where the rounding lowered it; without the development (no operating torque
     written from it) the line prints the ``[rating] design_torque`` written, unrounded."""
-    from contact.commands.synthesize import _design_torque_line
     from contact.optimize.development_result import case_torques
+    from contact.optimize.written_notes import design_torque_line
 
     why = "[synthesis] design_torque of the basic file"
     written = case_torques(0.15, given)  # DevelopmentResult.torque, as recorded() writes it
-    line = _design_torque_line(given, why, SimpleNamespace(torque=tuple(written)))
+    line = design_torque_line(given, why, SimpleNamespace(torque=tuple(written)))
     number = line.removeprefix("  design torque: ").split(" N m")[0]
     assert number == runs
     assert float(number) == written[1]
@@ -141,8 +141,8 @@ def test_the_printed_design_torque_is_the_one_the_case_runs(given, runs):
     assert line == (f"  design torque: {runs} N m, {why}"
                     + (aside if written[1] < given else ""))
     # --no-development: the given torque is the [rating] design_torque written, as given
-    plain = _design_torque_line(given, why, None)
+    plain = design_torque_line(given, why, None)
     assert plain == f"  design torque: {given:g} N m, {why}"
     assert float(plain.split()[2]) == given
-    assert _design_torque_line(math.nan, "none: no rating", None) == (
+    assert design_torque_line(math.nan, "none: no rating", None) == (
         "  design torque: none: no rating")

@@ -264,32 +264,33 @@ def test_a_checked_remedy_that_lowers_the_unloaded_te_is_not_contradicted():
         "; the written drive flank's unloaded TE p-p is 97 urad")
     # and its first line offers the checked remedy instead of "no contact-ratio remedy is
     # the lever" (synthesize._ute_is_the_lte reads the record's checks)
-    from contact.commands.synthesize import _ute_is_the_lte
     from contact.optimize.remedy_check import RemedyRecord
+    from contact.optimize.written_notes import ute_is_the_lte
 
-    assert not _ute_is_the_lte(dev, RemedyRecord((within,), 97.4, 85.0, 60.0))
-    assert _ute_is_the_lte(dev, RemedyRecord((refused,), 97.4, 85.0, 60.0))
+    assert not ute_is_the_lte(dev, RemedyRecord((within,), 97.4, 85.0, 60.0))
+    assert ute_is_the_lte(dev, RemedyRecord((refused,), 97.4, 85.0, 60.0))
 
 
 def test_the_remedies_are_synthesised_with_the_written_cases_gear_process():
-    """_prescribed: the development's basic data (its prescriptions) where there is one, the
+    """prescribed_basic_of: the development's basic data (its prescriptions) where there is one, the
     file's own without; a gear process left to "auto" set to the written case's, so a
     remedy's synthesis makes the gear the written case has (a low-ratio face-milled pair's
     "auto" tries the Formate gear first); a process the file names kept."""
     import dataclasses
 
-    from contact.commands.synthesize import _prescribed
+    from contact.optimize.written_notes import prescribed_basic_of
 
     basic = load_basic(EIGHT)
     case = types.SimpleNamespace(gear=types.SimpleNamespace(process="Generate"))
     assert basic.options.gear_process == "auto"
-    got = _prescribed(basic, case, None)
+    got = prescribed_basic_of(basic, case, None)
     assert got.options.gear_process == "Generate" and got.design == basic.design
     developed = dataclasses.replace(basic, name="developed")
-    assert _prescribed(basic, case, types.SimpleNamespace(basic=developed)).name == "developed"
+    assert prescribed_basic_of(basic, case,
+                               types.SimpleNamespace(basic=developed)).name == "developed"
     named = dataclasses.replace(basic, options=dataclasses.replace(basic.options,
                                                                    gear_process="Formate"))
-    assert _prescribed(named, case, None).options.gear_process == "Formate"
+    assert prescribed_basic_of(named, case, None).options.gear_process == "Formate"
 
 
 #: the drive (concave) and coast prescriptions the development of the 8x35 at Σ 85° wrote
@@ -500,13 +501,13 @@ def test_the_relief_is_named_where_the_flank_without_it_is_within_the_limit():
     prescriptions' statement. The numbers are the measure's (stand-ins); the rule is the
     comparison with the verdict's limit, exact."""
     from contact.commands.next_steps import overlap_lines
-    from contact.commands.synthesize import _ute_is_the_lte, reach_text
     from contact.optimize.remedy_check import (
         RELIEF_LEVER_TEXT,
         RemedyRecord,
         lte_diagnosis,
         read_record,
     )
+    from contact.optimize.written_notes import reach_text, ute_is_the_lte
 
     lte, written = [127.2, 223.7], (156.0, 258.0)
     values = {"path_angle": -72.5, "ellipse_length": 0.25, "te_level": 45.0,
@@ -547,7 +548,7 @@ def test_the_relief_is_named_where_the_flank_without_it_is_within_the_limit():
     assert said.startswith("; the development's least drive LTE p-p 94/195 urad (design 6): "
                            "none it checked within 60 urad; ")
     assert "a lighter drive relief or more teeth" in line and "b2 of 32.6" not in line
-    assert _ute_is_the_lte(dev, record)
+    assert ute_is_the_lte(dev, record)
 
 
 def test_the_unrelieved_te_is_the_same_synthesis_without_the_drive_relief(monkeypatch):

@@ -106,8 +106,8 @@ def test_given_design_torque_above_capacity_is_noted(tmp_path, capsys):
     meant by its user as "well below capacity": every development target met, then
     ``ltca run`` FAIL on S_H 0.87). The capacity printed is the rating's own: rated at it,
     the smaller safety over its minimum is 1 (to the printed 4 digits)."""
-    from contact.commands.synthesize import _above_capacity_note
     from contact.load_capacity.iso10300.rating import iso10300_rating
+    from contact.optimize.written_notes import above_capacity_note
     from geometry.case import load_case
 
     text = (DESIGNS / "hypoid_7x37_rc2p5.toml").read_text(encoding="utf-8")
@@ -132,8 +132,8 @@ def test_given_design_torque_above_capacity_is_noted(tmp_path, capsys):
     assert ratio == pytest.approx(1.0, abs=2e-3)
     # at or below the capacity, and for a torque that is not finite, no note
     case = load_case(out)
-    assert _above_capacity_note(case, 0.5 * capacity) is None
-    assert _above_capacity_note(case, float("nan")) is None
+    assert above_capacity_note(case, 0.5 * capacity) is None
+    assert above_capacity_note(case, float("nan")) is None
 
 
 def test_face_width_too_wide_for_the_toe_names_b2(tmp_path):
@@ -173,19 +173,19 @@ def test_capacity_note_shows_the_torque_above_the_capacity(monkeypatch):
     shown rounded down to 4 digits, as the default design torque is written, and the
     torque as given."""
     import contact.load_capacity.iso10300.capacity as capacity_module
-    from contact.commands.synthesize import _above_capacity_note
+    from contact.optimize.written_notes import above_capacity_note
 
     monkeypatch.setattr(capacity_module, "capacity_torque", lambda case: 264.9559005774426)
-    note = _above_capacity_note(object(), 265.0)
+    note = above_capacity_note(object(), 265.0)
     assert note.startswith("the design torque 265 N m is above the pair's ISO 10300 "
                            "long-life capacity 264.9 N m ")
     # a torque above by less than the 4th digit: the torque as typed
-    note = _above_capacity_note(object(), 264.96)
+    note = above_capacity_note(object(), 264.96)
     assert "the design torque 264.96 N m is above the pair's ISO 10300 long-life capacity " \
            "264.9 N m " in note
     # at or below the capacity (its own round-off 1e-6 over it included): no note
-    assert _above_capacity_note(object(), 264.9559) is None
-    assert _above_capacity_note(object(), 264.9559005774426 * (1 + 5e-7)) is None
+    assert above_capacity_note(object(), 264.9559) is None
+    assert above_capacity_note(object(), 264.9559005774426 * (1 + 5e-7)) is None
 
 
 _NEAR_MITER = """name = "near_miter_uncut"
@@ -428,7 +428,7 @@ def test_a_case_no_analysis_accepts_is_not_written(tmp_path, capsys, monkeypatch
     path with the analysis' message of then (the check returning it): rc 2 with that
     reason, the face contact ratio (0.56, below 1.25) and the cutter radius named as the
     changes to try, and no file written."""
-    import contact.commands.synthesize_contact as sc
+    import contact.optimize.written_contact as sc
     from contact.utca.datasets import unloaded_tca
 
     miter = Path(__file__).parent / "data" / "limits" / "spiral_bevel_12x12_miter_b35.toml"
@@ -475,17 +475,17 @@ def test_a_given_torque_above_its_root_capacity_is_noted():
     from types import SimpleNamespace
 
     from contact import resolve_case
-    from contact.commands.synthesize import _given_torque_note
     from contact.load_capacity.iso10300.capacity import capacity_torque
+    from contact.optimize.written_notes import given_torque_note
 
     case = resolve_case(None)
     capacity = capacity_torque(case)
     said = SimpleNamespace(given_root_text="the design torque 90 N m ... rates FAIL")
     quiet = SimpleNamespace(given_root_text="")
-    assert _given_torque_note(case, 0.9 * capacity, said) == said.given_root_text
-    assert _given_torque_note(case, 0.9 * capacity, quiet) is None
-    assert _given_torque_note(case, 0.9 * capacity, None) is None
-    above = _given_torque_note(case, 2.0 * capacity, said)
+    assert given_torque_note(case, 0.9 * capacity, said) == said.given_root_text
+    assert given_torque_note(case, 0.9 * capacity, quiet) is None
+    assert given_torque_note(case, 0.9 * capacity, None) is None
+    above = given_torque_note(case, 2.0 * capacity, said)
     assert above.startswith("the design torque") and "ISO 10300 long-life capacity" in above
 
 

@@ -27,10 +27,10 @@ def test_a_given_coast_design_torque_is_printed(tmp_path, capsys):
 def test_the_given_coast_torque_reader_takes_finite_numbers_only():
     from types import SimpleNamespace
 
-    from contact.commands.synthesize import _given_coast_torque
+    from contact.optimize.written_notes import given_coast_torque
 
-    assert _given_coast_torque(SimpleNamespace(extra={"rating": {
+    assert given_coast_torque(SimpleNamespace(extra={"rating": {
         "coast_design_torque": 200}})) == 200.0
     for extra in ({}, {"rating": None}, {"rating": {"coast_design_torque": "x"}},
                   {"rating": {"coast_design_torque": float("nan")}}):
-        assert _given_coast_torque(SimpleNamespace(extra=extra)) is None
+        assert given_coast_torque(SimpleNamespace(extra=extra)) is None

@@ -429,15 +429,26 @@ class DevelopmentResult:
         t = self.coast_torques or self.torque
         return float(min(t)), float(max(t))
 
-    def written_case(self, design_torque: float | None = None) -> Case:
+    def written_case(self, design_torque: float | None = None, *,
+                     noted: bool = False) -> Case:
         """The case ``ltca synthesize`` writes of this development: :attr:`case` with its
         rating's design torques, the ``[development]`` table and the operating torques
-        (:func:`contact.optimize.development_written.written_case`, which says how).
+        (:func:`contact.optimize.development_written.written_case`, which says how) and,
+        with ``noted``, the contact-ratio remedies' record
+        (:func:`contact.optimize.written_notes.noted_case`).
 
         Parameters
         ----------
         design_torque : float — [N·m], optional
             The basic file's ``[synthesis] design_torque``; default that of :attr:`basic`.
+        noted : bool
+            Also check the contact-ratio remedies where a contact ratio is below its
+            limit and record them in the case's
+            :data:`~contact.optimize.remedy_check.RECORD_TABLE` table, which ``ltca run``'s
+            next step reads: the case ``ltca synthesize`` writes (one synthesis for each
+            remedy checked). Default False: the case without it, as before
+            (issue 71, branch api88). The command's lines and notes:
+            :func:`contact.optimize.synthesized_case.synthesize_case`.
 
         Returns
         -------
@@ -446,7 +457,12 @@ class DevelopmentResult:
         """
         from contact.optimize.development_written import written_case
 
-        return written_case(self, design_torque).case
+        case = written_case(self, design_torque).case
+        if not noted:
+            return case
+        from contact.optimize.written_notes import noted_case
+
+        return noted_case(self.basic, case, self)[0]
 
     def with_coast_capacity(self, case: Case) -> tuple[Case, float]:
         """``case`` with ``[rating] coast_design_torque`` lowered to
