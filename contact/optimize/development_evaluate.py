@@ -250,13 +250,46 @@ class KeptTeeth:
     heel and root to tip, :func:`contact.compliance.tooth.shell_tooth_from_case`), which
     such a relief moves by far less than the fit's own residual; the developed design is
     analysed with its own teeth by ``ltca run``.
+
+    It also keeps each analysis' result (:meth:`analysed`, :func:`analyse_design`): a
+    design analysed again with the same inputs — the same case to the last bit, torques,
+    LTCA options, pinion-tooth key and flank — is read back instead of analysed again
+    (issue 71: the Formate development run in full after the stop on a foreseen torque
+    cut repeats the stopped one's search and check design for design,
+    :mod:`contact.optimize.development_shared`).
     """
 
     def __init__(self) -> None:
         self._teeth: dict[tuple, Any] = {}
         self._ease_offs: dict[tuple, Any] = {}
+        self._analyses: dict[tuple, Any] = {}
         self.built = 0
         self.ease_offs_reused = 0
+        self.analyses_reused = 0
+
+    def analysed(self, key: tuple, analyse: Callable[[], Any]) -> Any:
+        """The result of ``analyse()`` kept under ``key`` (:func:`analysis_key`): computed
+        the first time, a deep copy of the kept one after (a caller may change what it is
+        handed; the kept result stays as computed). An analysis that raises keeps nothing.
+
+        Parameters
+        ----------
+        key : tuple — what the result is a function of (hashable)
+        analyse : callable () → result
+
+        Returns
+        -------
+        The result (metrics dict, grid tuple for :func:`analyse_design`).
+        """
+        import copy
+
+        kept = self._analyses.get(key)
+        if kept is None:
+            kept = analyse()
+            self._analyses[key] = kept
+            return copy.deepcopy(kept)
+        self.analyses_reused += 1
+        return copy.deepcopy(kept)
 
     def ease_off(self, case: Case, flank: str):
         """The ease-off (:func:`contact.utca.easeoff.ease_off`) of ``case``'s ``flank``
@@ -339,11 +372,45 @@ def analyse_design(case: Case, torques: list[float], misalignment: Misalignment 
     from contact.utca.easeoff import ease_off
 
     c = case if misalignment is None else dataclasses.replace(case, misalignment=misalignment)
-    if teeth is not None:
-        options = dataclasses.replace(options, compliance=teeth.compliance(pinion_key))
-    eo = ease_off(c, flank=flank) if teeth is None else teeth.ease_off(c, flank)
-    ltca = loaded_tca(c, torques, flank=flank, options=options, easeoff=eo)
-    return ltca_metrics(ltca, c), (*grid_bounds(ltca), static_strength(ltca))
+    if teeth is None:
+        eo = ease_off(c, flank=flank)
+        ltca = loaded_tca(c, torques, flank=flank, options=options, easeoff=eo)
+        return ltca_metrics(ltca, c), (*grid_bounds(ltca), static_strength(ltca))
+
+    def analyse():
+        kept = dataclasses.replace(options, compliance=teeth.compliance(pinion_key))
+        eo = teeth.ease_off(c, flank)
+        ltca = loaded_tca(c, torques, flank=flank, options=kept, easeoff=eo)
+        return ltca_metrics(ltca, c), (*grid_bounds(ltca), static_strength(ltca))
+
+    # the same inputs analysed before in this development (or one of the same basic
+    # design, development_shared): read back
+    return teeth.analysed(analysis_key(c, torques, options, pinion_key, flank), analyse)
+
+
+def analysis_key(case: Case, torques, options: LTCAOptions, pinion_key: tuple,
+                 flank: str) -> tuple:
+    """What :func:`analyse_design`'s result with kept teeth is a function of: the case
+    analysed (its full ``repr``, every float to the last bit, its misalignment,
+    operating point and tables included), the torques [N·m], the LTCA options (their
+    ``repr``: a compliance model handed in, which carries no value ``repr`` of its own,
+    makes the key of one object alone), the key of the pinion tooth kept
+    (:class:`KeptTeeth`) and the flank.
+
+    Parameters
+    ----------
+    case : geometry.case.Case — as analysed (misalignment applied)
+    torques : sequence of float, shape (n,) — [N·m]
+    options : LTCAOptions — before the kept teeth's compliance is put in
+    pinion_key : tuple
+    flank : str — ``"drive"`` or ``"coast"``
+
+    Returns
+    -------
+    tuple — hashable
+    """
+    return (repr(case), tuple(float(t) for t in np.ravel(torques)), repr(options),
+            tuple(pinion_key), flank)
 
 
 class StageStop(Exception):
