@@ -251,26 +251,38 @@ class KeptTeeth:
     such a relief moves by far less than the fit's own residual; the developed design is
     analysed with its own teeth by ``ltca run``.
 
-    It also keeps each analysis' result (:meth:`analysed`, :func:`analyse_design`): a
-    design analysed again with the same inputs — the same case to the last bit, torques,
-    LTCA options, pinion-tooth key and flank — is read back instead of analysed again
-    (issue 71: the Formate development run in full after the stop on a foreseen torque
-    cut repeats the stopped one's search and check design for design,
-    :mod:`contact.optimize.development_shared`).
+    It also keeps each analysis' result (:meth:`analysed`, :func:`analyse_design`) for a
+    development of the same basic design run again with these teeth
+    (:meth:`begin_development`): there the n-th analysis of the same inputs — the same
+    case to the last bit, torques, LTCA options, pinion-tooth key and flank — is read
+    back as the n-th one of the first run gave it (issue 71: the Formate development run
+    in full after the stop on a foreseen torque cut repeats the stopped one's search and
+    check design for design, :mod:`contact.optimize.development_shared`). Within one
+    development every analysis is its own, as before: an LTCA is not a pure function of
+    those inputs alone (the envelope seeds continued across a search's trials and the
+    process memos can pick another root; measured on the 9x31's search, docs/performance.md).
     """
 
     def __init__(self) -> None:
         self._teeth: dict[tuple, Any] = {}
         self._ease_offs: dict[tuple, Any] = {}
-        self._analyses: dict[tuple, Any] = {}
+        self._analyses: dict[tuple, list[Any]] = {}
+        self._asked: dict[tuple, int] = {}
         self.built = 0
         self.ease_offs_reused = 0
         self.analyses_reused = 0
 
+    def begin_development(self) -> None:
+        """Start a development's run with these teeth: its analyses are counted anew, so
+        that the n-th analysis of an input it asks for reads back the n-th result an
+        earlier run kept (:meth:`analysed`)."""
+        self._asked = {}
+
     def analysed(self, key: tuple, analyse: Callable[[], Any]) -> Any:
-        """The result of ``analyse()`` kept under ``key`` (:func:`analysis_key`): computed
-        the first time, a deep copy of the kept one after (a caller may change what it is
-        handed; the kept result stays as computed). An analysis that raises keeps nothing.
+        """The n-th analysis of ``key`` (:func:`analysis_key`) in this development's run:
+        the n-th result kept under it by an earlier run (:meth:`begin_development`), a deep
+        copy (a caller may change what it is handed); else ``analyse()``, kept as the n-th.
+        An analysis that raises keeps nothing (it raises again when asked again).
 
         Parameters
         ----------
@@ -283,13 +295,16 @@ class KeptTeeth:
         """
         import copy
 
-        kept = self._analyses.get(key)
-        if kept is None:
-            kept = analyse()
-            self._analyses[key] = kept
-            return copy.deepcopy(kept)
-        self.analyses_reused += 1
-        return copy.deepcopy(kept)
+        n = self._asked.get(key, 0)
+        self._asked[key] = n + 1
+        kept = self._analyses.setdefault(key, [])
+        if n < len(kept):
+            self.analyses_reused += 1
+            return copy.deepcopy(kept[n])
+        result = analyse()
+        if n == len(kept):
+            kept.append(result)
+        return copy.deepcopy(result)
 
     def ease_off(self, case: Case, flank: str):
         """The ease-off (:func:`contact.utca.easeoff.ease_off`) of ``case``'s ``flank``
@@ -383,8 +398,8 @@ def analyse_design(case: Case, torques: list[float], misalignment: Misalignment 
         ltca = loaded_tca(c, torques, flank=flank, options=kept, easeoff=eo)
         return ltca_metrics(ltca, c), (*grid_bounds(ltca), static_strength(ltca))
 
-    # the same inputs analysed before in this development (or one of the same basic
-    # design, development_shared): read back
+    # the same inputs analysed by an earlier run of this basic design's development
+    # (development_shared): read back
     return teeth.analysed(analysis_key(c, torques, options, pinion_key, flank), analyse)
 
 

@@ -17,10 +17,11 @@ development.develop` the synthesis memo (:func:`geometry.synthesis.case_synthesi
 synthesize`'s ``memo``) and the :class:`~contact.optimize.development_evaluate.KeptTeeth`
 of its basic design — the same objects for equal basic designs, new ones for any other
 (the generated gear's, another design torque's) — so that a repeated synthesis, tooth
-model or analysis is read back (:meth:`~contact.optimize.development_evaluate.KeptTeeth.
-analysed`: keyed by the analysed case to the last bit, its torques, options, pinion-tooth
-key and flank) instead of computed again. A design's numbers are those of its own
-computation: an analysis read back is the one the same inputs gave.
+model or analysis is read back instead of computed again: the n-th analysis of the same
+inputs in the second run is the first run's n-th (:meth:`~contact.optimize.
+development_evaluate.KeptTeeth.analysed`: keyed by the analysed case to the last bit, its
+torques, options, pinion-tooth key and flank), so that the repeated run's numbers are the
+first run's; within one run every analysis is computed, as before.
 
 Public names
 ------------
@@ -81,9 +82,11 @@ class SharedDevelopments:
         self.developments += 1
         if key in self._kept:
             self.repeated += 1
-            return self._kept[key]
-        kept = self._kept[key] = ({}, KeptTeeth())
-        return kept
+        else:
+            self._kept[key] = ({}, KeptTeeth())
+        memo, teeth = self._kept[key]
+        teeth.begin_development()  # its analyses counted anew: the n-th reads the n-th
+        return memo, teeth
 
 
 def kept_for(shared: SharedDevelopments | None, basic: Any) -> tuple[dict, KeptTeeth]:
