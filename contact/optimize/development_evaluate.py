@@ -257,10 +257,12 @@ class KeptTeeth:
     case to the last bit, torques, LTCA options, pinion-tooth key and flank — is read
     back as the n-th one of the first run gave it (issue 71: the Formate development run
     in full after the stop on a foreseen torque cut repeats the stopped one's search and
-    check design for design, :mod:`contact.optimize.development_shared`). Within one
-    development every analysis is its own, as before: an LTCA is not a pure function of
-    those inputs alone (the envelope seeds continued across a search's trials and the
-    process memos can pick another root; measured on the 9x31's search, docs/performance.md).
+    check design for design, :mod:`contact.optimize.development_shared`), the repeated
+    run's numbers its first run's. Within one development every analysis is computed, as
+    before: an earlier analysis of the same inputs there ran with other envelope seeds
+    continued from other trials, and the same inputs' LTCA is not reproducible to the last
+    design from one process to the next (two of the 9x31's designs, docs/performance.md),
+    so a read-back there could be another number than the run computes.
     """
 
     def __init__(self) -> None:

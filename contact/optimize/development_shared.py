@@ -9,8 +9,9 @@ gear's design fails too, the Formate gear is developed again in full
 (:func:`~contact.optimize.development_process.with_generated_gear`). The second run
 repeats the first one's drive search, its check and the check's steps design for design
 (the same basic data, the same targets, the same deterministic search) before it goes past
-the stop: measured on the FM hypoid 9x31 at Σ 75° of benchmarks/data/unseen_designs,
-≈ 90 s of CPU (docs/own_gear_set.md, "Round 28").
+the stop: on the FM hypoid 9x31 at Σ 75° of benchmarks/data/unseen_designs, 15 % of its
+``ltca synthesize`` (≈ 40–70 s of CPU; docs/performance.md, "Two new designs over issue
+71's 2 min").
 
 :class:`SharedDevelopments` hands each development of :func:`contact.optimize.
 development.develop` the synthesis memo (:func:`geometry.synthesis.case_synthesis.
