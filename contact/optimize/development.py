@@ -190,6 +190,7 @@ from contact.optimize.development_result import (  # noqa: F401
     metrics_text,
 )
 from contact.optimize.development_root import at_decided_level, given_torque_root
+from contact.optimize.development_shared import SharedDevelopments, kept_for, log_reused
 from contact.optimize.development_stages import (  # noqa: F401
     CROWNING_STEP,
     HEIGHT_DESIGNS,
@@ -264,6 +265,9 @@ def _wrapped(basic: BasicDesign, apply_remedy: bool, **kw: Any) -> DevelopmentRe
     from contact.optimize.development_process import with_generated_gear
 
     kw.pop("outclassed_below", None)
+    # a basic design developed twice (the Formate gear in full after a foreseen cut's
+    # stop) reads its syntheses, teeth and analyses back (development_shared)
+    kw["shared"] = kw.get("shared") or SharedDevelopments()
     return with_generated_gear(functools.partial(develop, **{**kw, "gear_fallback": False}),
                                basic, kw.get("progress"))
 
@@ -275,7 +279,8 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
             synthesis_progress: Any = None, root_stress: bool = True,
             gear_fallback: bool = True, outclassed_below: float = math.nan,
             foresee_cut: bool = False, apply_remedy: bool = False,
-            torque_name: str = "") -> DevelopmentResult:
+            torque_name: str = "",
+            shared: SharedDevelopments | None = None) -> DevelopmentResult:
     """Develop the drive flank, then the coast flank, of a basic design to the bearing of
     ``targets``.
 
@@ -342,6 +347,13 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
         (:func:`contact.optimize.development_remedy.developed_with_remedy`; about twice
         the CPU, three times where the first remedy's drive LTE exceeds the verdict's
         limit between the torques and the next checked remedy is developed too).
+    shared : SharedDevelopments, optional
+        The synthesis memo and kept teeth (with their analyses) of each basic design
+        developed (:class:`~contact.optimize.development_shared.SharedDevelopments`): a
+        development of a basic design developed before in it reads back what that one
+        computed with the same inputs. Default: new ones (the ``gear_fallback`` wrapper
+        makes one for the developments it runs: the Formate gear developed in full after a
+        foreseen cut's stop repeats the stopped development's search and check).
 
     Returns
     -------
@@ -448,7 +460,8 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
     if apply_remedy or gear_fallback:
         return _wrapped(basic, apply_remedy, targets=targets, progress=progress,
                         synthesis_progress=synthesis_progress, root_stress=root_stress,
-                        gear_fallback=gear_fallback, outclassed_below=outclassed_below)
+                        gear_fallback=gear_fallback, outclassed_below=outclassed_below,
+                        shared=shared)
     t0 = time.process_time()
     basic.blank()  # blanks the basic data cannot make: its own error, before any trial
     targets = targets or targets_from_table(basic.development, size_scale=basic.size_scale())
@@ -461,8 +474,9 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
     # synthesised once per coast bearing; the relief stage and the final synthesis re-make
     # only the relief) and the shell tooth models (the gear's once, the pinion's once per
     # bearing design)
-    memo: dict = {}
-    teeth = KeptTeeth()
+    # (the same objects for a development of this basic design again: development_shared)
+    memo, teeth = kept_for(shared, basic)
+    reused = teeth.analyses_reused
 
     def make(b: BasicDesign) -> Case:  # a design of the coarse search: no tip planes
         return synthesize(b, memo=memo, tip_planes=False)[0]
@@ -747,6 +761,7 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
                                given_root_text=given_root_text,
                                lte_torque=float(setup.get("lte_torque", math.nan)),
                                coast_lte_range=_coast_judged(setup, coast, best, teeth))
+    log_reused(teeth, reused)
     say(result.headline())
     return result
 

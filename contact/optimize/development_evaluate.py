@@ -250,13 +250,63 @@ class KeptTeeth:
     heel and root to tip, :func:`contact.compliance.tooth.shell_tooth_from_case`), which
     such a relief moves by far less than the fit's own residual; the developed design is
     analysed with its own teeth by ``ltca run``.
+
+    It also keeps each analysis' result (:meth:`analysed`, :func:`analyse_design`) for a
+    development of the same basic design run again with these teeth
+    (:meth:`begin_development`): there the n-th analysis of the same inputs — the same
+    case to the last bit, torques, LTCA options, pinion-tooth key and flank — is read
+    back as the n-th one of the first run gave it (issue 71: the Formate development run
+    in full after the stop on a foreseen torque cut repeats the stopped one's search and
+    check design for design, :mod:`contact.optimize.development_shared`), the repeated
+    run's numbers its first run's. Within one development every analysis is computed, as
+    before: an earlier analysis of the same inputs there ran with other envelope seeds
+    continued from other trials, and the same inputs' LTCA is not reproducible to the last
+    design from one process to the next (two of the 9x31's designs, docs/performance.md),
+    so a read-back there could be another number than the run computes.
     """
 
     def __init__(self) -> None:
         self._teeth: dict[tuple, Any] = {}
         self._ease_offs: dict[tuple, Any] = {}
+        self._analyses: dict[tuple, list[Any]] = {}
+        self._asked: dict[tuple, int] = {}
         self.built = 0
         self.ease_offs_reused = 0
+        self.analyses_reused = 0
+
+    def begin_development(self) -> None:
+        """Start a development's run with these teeth: its analyses are counted anew, so
+        that the n-th analysis of an input it asks for reads back the n-th result an
+        earlier run kept (:meth:`analysed`)."""
+        self._asked = {}
+
+    def analysed(self, key: tuple, analyse: Callable[[], Any]) -> Any:
+        """The n-th analysis of ``key`` (:func:`analysis_key`) in this development's run:
+        the n-th result kept under it by an earlier run (:meth:`begin_development`), a deep
+        copy (a caller may change what it is handed); else ``analyse()``, kept as the n-th.
+        An analysis that raises keeps nothing (it raises again when asked again).
+
+        Parameters
+        ----------
+        key : tuple — what the result is a function of (hashable)
+        analyse : callable () → result
+
+        Returns
+        -------
+        The result (metrics dict, grid tuple for :func:`analyse_design`).
+        """
+        import copy
+
+        n = self._asked.get(key, 0)
+        self._asked[key] = n + 1
+        kept = self._analyses.setdefault(key, [])
+        if n < len(kept):
+            self.analyses_reused += 1
+            return copy.deepcopy(kept[n])
+        result = analyse()
+        if n == len(kept):
+            kept.append(result)
+        return copy.deepcopy(result)
 
     def ease_off(self, case: Case, flank: str):
         """The ease-off (:func:`contact.utca.easeoff.ease_off`) of ``case``'s ``flank``
@@ -339,11 +389,45 @@ def analyse_design(case: Case, torques: list[float], misalignment: Misalignment 
     from contact.utca.easeoff import ease_off
 
     c = case if misalignment is None else dataclasses.replace(case, misalignment=misalignment)
-    if teeth is not None:
-        options = dataclasses.replace(options, compliance=teeth.compliance(pinion_key))
-    eo = ease_off(c, flank=flank) if teeth is None else teeth.ease_off(c, flank)
-    ltca = loaded_tca(c, torques, flank=flank, options=options, easeoff=eo)
-    return ltca_metrics(ltca, c), (*grid_bounds(ltca), static_strength(ltca))
+    if teeth is None:
+        eo = ease_off(c, flank=flank)
+        ltca = loaded_tca(c, torques, flank=flank, options=options, easeoff=eo)
+        return ltca_metrics(ltca, c), (*grid_bounds(ltca), static_strength(ltca))
+
+    def analyse():
+        kept = dataclasses.replace(options, compliance=teeth.compliance(pinion_key))
+        eo = teeth.ease_off(c, flank)
+        ltca = loaded_tca(c, torques, flank=flank, options=kept, easeoff=eo)
+        return ltca_metrics(ltca, c), (*grid_bounds(ltca), static_strength(ltca))
+
+    # the same inputs analysed by an earlier run of this basic design's development
+    # (development_shared): read back
+    return teeth.analysed(analysis_key(c, torques, options, pinion_key, flank), analyse)
+
+
+def analysis_key(case: Case, torques, options: LTCAOptions, pinion_key: tuple,
+                 flank: str) -> tuple:
+    """What :func:`analyse_design`'s result with kept teeth is a function of: the case
+    analysed (its full ``repr``, every float to the last bit, its misalignment,
+    operating point and tables included), the torques [N·m], the LTCA options (their
+    ``repr``: a compliance model handed in, which carries no value ``repr`` of its own,
+    makes the key of one object alone), the key of the pinion tooth kept
+    (:class:`KeptTeeth`) and the flank.
+
+    Parameters
+    ----------
+    case : geometry.case.Case — as analysed (misalignment applied)
+    torques : sequence of float, shape (n,) — [N·m]
+    options : LTCAOptions — before the kept teeth's compliance is put in
+    pinion_key : tuple
+    flank : str — ``"drive"`` or ``"coast"``
+
+    Returns
+    -------
+    tuple — hashable
+    """
+    return (repr(case), tuple(float(t) for t in np.ravel(torques)), repr(options),
+            tuple(pinion_key), flank)
 
 
 class StageStop(Exception):
