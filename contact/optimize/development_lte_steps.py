@@ -3,7 +3,8 @@
 on the coast flank too), a shallower root relief where the LTE exceeds the verdict's
 60 µrad (:func:`checked_relief_lte`, :func:`shallower_root_relief`: the loop both
 flanks share), a flatter profile and a deeper TE parabola (:func:`checked_crowning_lte`,
-recording the least LTE the development reached; :func:`crossing_level`), the TE level
+recording the least LTE the development reached; :func:`crossing_level`; the crowning
+matched to the load, :func:`matched_crowning`), the TE level
 raised back to the flank's own (:func:`checked_te_back`) and less crowning both ways
 where the development's own LTE target is still missed (:func:`checked_overlap_lte`).
 Each design placed and checked at ``ltca run``'s sampling and kept by
@@ -460,8 +461,13 @@ def checked_crowning_lte(best: DevelopmentEvaluation, targets: DevelopmentTarget
     where the light and design LTE cross between the two, at their crossing
     (:func:`crossing_level`); each design (a synthesis of steps 3-6) placed and checked at
     :data:`CHECK_LTCA`, kept where it scores better, misses no target the design met (the
-    pattern length included) and is tolerant (:func:`_tolerant_variant`); at most four
-    designs, none where the design is within the limit at every torque. ``level`` [µrad]:
+    pattern length included) and is tolerant (:func:`_tolerant_variant`); at most five
+    designs, none where the design is within the limit at every torque; last, where the
+    design torque's LTE is still the larger and above the limit and the flatter profiles
+    widened its lead, the crowning raised to the two LTE's crossing
+    (:func:`matched_crowning`, at most × :data:`CROWNING_MATCH_MAX`; the fifth design,
+    kept by the same rule: the crowning is the TE parabola matched to the load, which a
+    ``te_level`` of 10–45 µrad beside it cannot deepen). ``level`` [µrad]:
     the flank's own TE level, where the design's values do not give one; ``lte_limit``
     [µrad]: the verdict's ``lte`` limit (default
     :data:`contact.study.verdicts.LTE_LIMIT`, 60 µrad). Each design's LTE is recorded
