@@ -106,6 +106,7 @@ from contact.optimize.development_keep import (  # noqa: F401  (re-exported)
 )
 from contact.optimize.development_lte_steps import (  # noqa: F401  (re-exported)
     CROWNING_LTE_FRACTIONS,
+    CROWNING_MATCH_MAX,
     ELLIPSE_STEP,
     RELIEF_LTE_FRACTIONS,
     checked_crowning_lte,
@@ -116,6 +117,7 @@ from contact.optimize.development_lte_steps import (  # noqa: F401  (re-exported
     checked_te_back,
     crossing_level,
     long_bearing,
+    matched_crowning,
     shallower_root_relief,
 )
 from contact.optimize.development_path_steps import (  # noqa: F401  (re-exported)

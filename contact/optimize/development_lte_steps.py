@@ -3,7 +3,8 @@
 on the coast flank too), a shallower root relief where the LTE exceeds the verdict's
 60 µrad (:func:`checked_relief_lte`, :func:`shallower_root_relief`: the loop both
 flanks share), a flatter profile and a deeper TE parabola (:func:`checked_crowning_lte`,
-recording the least LTE the development reached; :func:`crossing_level`), the TE level
+recording the least LTE the development reached; :func:`crossing_level`; the crowning
+matched to the load, :func:`matched_crowning`), the TE level
 raised back to the flank's own (:func:`checked_te_back`) and less crowning both ways
 where the development's own LTE target is still missed (:func:`checked_overlap_lte`).
 Each design placed and checked at ``ltca run``'s sampling and kept by
@@ -460,8 +461,13 @@ def checked_crowning_lte(best: DevelopmentEvaluation, targets: DevelopmentTarget
     where the light and design LTE cross between the two, at their crossing
     (:func:`crossing_level`); each design (a synthesis of steps 3-6) placed and checked at
     :data:`CHECK_LTCA`, kept where it scores better, misses no target the design met (the
-    pattern length included) and is tolerant (:func:`_tolerant_variant`); at most four
-    designs, none where the design is within the limit at every torque. ``level`` [µrad]:
+    pattern length included) and is tolerant (:func:`_tolerant_variant`); at most five
+    designs, none where the design is within the limit at every torque; last, where the
+    design torque's LTE is still the larger and above the limit and the flatter profiles
+    widened its lead, the crowning raised to the two LTE's crossing
+    (:func:`matched_crowning`, at most × :data:`CROWNING_MATCH_MAX`; the fifth design,
+    kept by the same rule: the crowning is the TE parabola matched to the load, which a
+    ``te_level`` of 10–45 µrad beside it cannot deepen). ``level`` [µrad]:
     the flank's own TE level, where the design's values do not give one; ``lte_limit``
     [µrad]: the verdict's ``lte`` limit (default
     :data:`contact.study.verdicts.LTE_LIMIT`, 60 µrad). Each design's LTE is recorded
@@ -503,9 +509,12 @@ def checked_crowning_lte(best: DevelopmentEvaluation, targets: DevelopmentTarget
 
     if not above(best):
         return best
+    # the crowning's LTE trade as the fractions measure it: (crowning [µm], (light, design))
+    seen: list[tuple[float, tuple[float, float]]] = []
     if CROWNING_NAME in targets.variables and CROWNING_NAME in best.values:
         lo, hi = (float(x) for x in targets.variables[CROWNING_NAME])
         now = float(best.values[CROWNING_NAME])
+        seen.append((now, _lte_ends(best)))
         for fraction in CROWNING_LTE_FRACTIONS:
             x = float(np.clip(fraction * now, lo, hi))
             if not above(best) or not x < float(best.values[CROWNING_NAME]) - 1e-9:
@@ -516,16 +525,30 @@ def checked_crowning_lte(best: DevelopmentEvaluation, targets: DevelopmentTarget
                               "urad)", targets, setup, teeth, say, placed)
             if e is None:
                 continue
+            seen.append((x, _lte_ends(e)))
             _tried(setup, "the profile crowning flattened")
             why = kept_why(best, e, targets, setup, teeth, say, "the flatter profile",
                            lost=_lost_targets)
             _reached(setup, e, what, why)
             if not why:
                 best = e
-    if TE_NAME not in targets.variables or not above(best):
-        return best
+    if TE_NAME in targets.variables and above(best):
+        best = _deeper_te_level(best, targets, setup, teeth, say, placed, level, limit, above)
+    if above(best):
+        best = _matched_crowning(best, targets, setup, teeth, say, placed, seen, limit, above)
+    return best
+
+
+def _deeper_te_level(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                     setup: Mapping[str, Any], teeth: KeptTeeth | None,
+                     say: Callable[[str], None],
+                     placed: Callable[[Mapping[str, float]], Case], level: float | None,
+                     limit: float, above: Callable[[DevelopmentEvaluation], bool]
+                     ) -> DevelopmentEvaluation:
+    """The te_level step of :func:`checked_crowning_lte` (its body moved unchanged): the
+    TE level at its upper bound and at the light and design LTE's crossing."""
     light, design = _lte_ends(best)
-    lo, hi = (float(x) for x in targets.variables[TE_NAME])
+    _lo, hi = (float(x) for x in targets.variables[TE_NAME])
     now = float(best.values.get(TE_NAME, hi if level is None else level))
     if not (design > limit and design > light and hi > now + 1.0):
         return best
@@ -548,6 +571,94 @@ def checked_crowning_lte(best: DevelopmentEvaluation, targets: DevelopmentTarget
             if cross is not None and now + 1.0 < cross < hi - 1.0:
                 tried.append(round(cross, 1))
     return best
+
+
+#: the most :func:`checked_crowning_lte` raises a profile crowning to match its TE to the
+#: load, × the design's crowning (its linear reach: the light and design LTE's trade
+#: measured on the 16×16 at Σ 60° from 0 to 9.3 µm, docs/synthesis.md)
+CROWNING_MATCH_MAX = 2.0
+
+
+def matched_crowning(seen: list[tuple[float, tuple[float, float]]]) -> float | None:
+    """[µm] The profile crowning at which the light and design torque's LTE p-p cross,
+    from the design's own crowning and a flatter one of the same design.
+
+    Parameters
+    ----------
+    seen : list of (float, (float, float))
+        (crowning [µm], (light, design) LTE p-p [µrad])): the design's own first, then the
+        flatter designs :func:`checked_crowning_lte` analysed.
+
+    Returns
+    -------
+    float or None
+        The crowning [µm] above the design's where design − light, linear in the crowning
+        through the design's and the flatter design nearest it, reaches 0; clipped to
+        :data:`CROWNING_MATCH_MAX` × the design's. None where the design's LTE is not the
+        design torque's, the flatter one did not widen the gap (the crowning is not the
+        TE parabola matched to the load), or a value is not finite.
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: the profile crowning's TE identity (:func:`geometry.synthesis.crowning_te.
+    crowning_te_rate`): a crowning c adds the TE parabola k·c, which at light load is the
+    unloaded TE and at the design torque absorbs the deflection's transfer between tooth
+    pairs (Litvin & Fuentes 2004 §9.4, the predesigned parabolic TE), so the LTE's larger
+    end is least where the light LTE, rising with c, meets the design LTE, falling with it
+    (as :func:`crossing_level` for the TE level). Measured on the 16×16 at Σ 60° as
+    written (path −88°, 58.6 / 390.7 N m, ``ltca run``'s sampling): crowning 0 / 2.33 /
+    4.67 / 7 / 9.3 µm: 21 / 108, 38 / 108, 54 / 95, 64 / 81, 78 / 72 µrad.
+    """
+    if len(seen) < 2:
+        return None
+    now, (light, design) = seen[0]
+    flatter = [(c, ends) for c, ends in seen[1:] if c < now]
+    if not flatter or not now > 0.0:
+        return None
+    c1, (l1, d1) = max(flatter, key=lambda t: t[0])
+    g0, g1 = design - light, d1 - l1
+    if not all(math.isfinite(v) for v in (g0, g1)) or not (0.0 < g0 < g1):
+        return None
+    return float(min(now + (now - c1) * g0 / (g1 - g0), CROWNING_MATCH_MAX * now))
+
+
+def _matched_crowning(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                      setup: Mapping[str, Any], teeth: KeptTeeth | None,
+                      say: Callable[[str], None],
+                      placed: Callable[[Mapping[str, float]], Case],
+                      seen: list[tuple[float, tuple[float, float]]], limit: float,
+                      above: Callable[[DevelopmentEvaluation], bool]
+                      ) -> DevelopmentEvaluation:
+    """The last step of :func:`checked_crowning_lte`: where the design torque's LTE is
+    still above the limit and the light torque's, the profile crowning raised to where
+    the two cross (:func:`matched_crowning`, within its bounds), one design placed and
+    checked, kept by :func:`~contact.optimize.development_keep.kept_why`."""
+    light, design = _lte_ends(best)
+    if (not (design > limit and design > light) or CROWNING_NAME not in best.values
+            or not seen or float(best.values[CROWNING_NAME]) != seen[0][0]):
+        return best  # a flatter profile kept: the trade points the other way
+    x = matched_crowning(seen)
+    if x is None:
+        return best
+    x = float(np.clip(x, *(float(v) for v in targets.variables[CROWNING_NAME])))
+    if not x > float(best.values[CROWNING_NAME]) + 1e-3:
+        return best
+    what = f"design {best.index + 1} with profile_crowning {x:.3g} um"
+    e = _said_variant(best, dict(best.values) | {CROWNING_NAME: x}, "crowning lte",
+                      f"with profile_crowning {x:.3g} um, its TE matched to the load (its LTE "
+                      f"{light:.0f}/{design:.0f} urad, the design torque's above {limit:g})",
+                      targets, setup, teeth, say, placed)
+    if e is None:
+        return best
+    _tried(setup, "the profile crowning matched to the load")
+    why = kept_why(best, e, targets, setup, teeth, say, "the crowning matched to the load",
+                   lost=_lost_targets)
+    _reached(setup, e, what, why)
+    return best if why else e
 
 
 def crossing_level(x0: float, lte0: tuple[float, float], x1: float,
