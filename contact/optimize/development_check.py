@@ -333,7 +333,11 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     (:func:`contact.optimize.development_relief_ellipse_range.
     checked_relief_ellipse_range`); last, where its LTE over the torques is still above
     that limit, a slightly hollow profile with the reliefs rebalanced
-    (:func:`contact.optimize.development_hollow_lte.checked_hollow_lte`). Run again where
+    (:func:`contact.optimize.development_hollow_lte.checked_hollow_lte`); last, where
+    it is still above that limit and its contact path leaves the unrelieved flank within
+    half a pitch of M, the path turned towards the face until one pitch lies between the
+    relief corners (:func:`contact.optimize.development_path_window.
+    checked_path_window`). Run again where
     the design torque was lowered after them (to the
     bearing's static flank capacity or its FE root-stress capacity): the light torque
     follows the design torque (``light_load`` × it), and the light-load LTE rises as the
@@ -385,7 +389,11 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     # last, a slightly hollow profile with the reliefs rebalanced where the LTE over the
     # torques is still above the verdict's limit (the spiral bevel 14x36 at Sigma 70 deg)
     from contact.optimize.development_hollow_lte import checked_hollow_lte
-    return checked_hollow_lte(best, targets, setup, teeth, say, placed)
+    best = checked_hollow_lte(best, targets, setup, teeth, say, placed)
+    # last, where the LTE still exceeds the verdict's limit with the contact path off the
+    # unrelieved flank within a pitch, the path turned onto it (the miter 20x20)
+    from contact.optimize.development_path_window import checked_path_window
+    return checked_path_window(best, targets, setup, teeth, say, placed)
 
 
 def steps_on_each(chosen: DevelopmentEvaluation, others: list[DevelopmentEvaluation],

@@ -1,0 +1,176 @@
+"""The development's check step for a contact path that leaves the unrelieved flank within
+one pitch (issue 71): the path turned until one pair's whole pitch lies between the relief
+corners.
+
+The synthesis designs the drive TE as a parabola about M, and the pairs hand the load over
+half a pitch of roll either side of it. Where one pitch of roll carries the contact past a
+relief corner (or off the face) before that, the transfer is made by the relief, not by the
+parabola: on the face-milled spiral bevel miter 20×20 of benchmarks/data/unseen_designs
+(generated gear, z 20/20, c_ham 0.25, ε_vβ 1.34) the developed path of −45° leaves the
+unrelieved flank at −0.35 and +0.25 pitch (the root and the tip relief's corners), its
+unloaded TE p-p 104 µrad against the parabola's 2.5, LTE 102 / 116 µrad. On that pair every
+path the development's bounds hold (−80° … −25°) leaves it within 0.8 pitch: near the
+conjugate contact line (about −15° there) the contact runs fast, and along the profile one
+pitch climbs about the whole working depth. Past the contact line (0° … +40°) one pitch
+runs along the face, which its face contact ratio covers (docs/synthesis.md, "The miter
+20×20's contact path off the unrelieved flank").
+
+:func:`checked_path_window` gives a checked drive design whose LTE p-p exceeds the
+verdict's limit at a torque and whose one-pitch window
+(:func:`geometry.pair.path_window.path_window`) does not hold ±half a pitch about M the path
+turned in :data:`PATH_WINDOW_TURN` steps towards the face (increasing angle, past the
+contact line, up to :data:`PATH_WINDOW_MAX`) to the first angle whose window holds it, every
+other prescription kept; the design is kept on the check steps' rule (better, tolerant at
+the mounting excursions, :func:`~contact.optimize.development_keep.kept_why`). A design
+within the limit is returned as it is, without any synthesis: the step changes nothing the
+development writes for such designs.
+"""
+
+from __future__ import annotations
+
+import logging
+from collections.abc import Callable, Mapping
+from typing import Any
+
+import numpy as np
+
+from contact.optimize.development_evaluate import KeptTeeth
+from contact.optimize.development_keep import kept_why
+from contact.optimize.development_result import DevelopmentEvaluation
+from contact.optimize.development_targets import DevelopmentTargets
+from contact.optimize.development_variant import said_variant
+from geometry.case import Case
+from geometry.core.errors import InputError
+from geometry.pair.path_window import PathWindow, path_window
+
+__all__ = ["PATH_WINDOW_MAX", "PATH_WINDOW_TURN", "STAGE", "checked_path_window",
+           "path_angles"]
+
+log = logging.getLogger("contact.optimize.development")
+
+#: [deg] the step by which :func:`checked_path_window` turns the path towards the face
+PATH_WINDOW_TURN = 15.0
+#: [deg] the largest path angle it tries: a path rising towards the heel at 60° from the
+#: lengthwise direction is still a diagonal bearing (the miter 20×20's window holds the
+#: pitch from 0° to +40°, 0.9 pitch at +60°)
+PATH_WINDOW_MAX = 60.0
+#: the check stage of the step's design (:attr:`DevelopmentEvaluation.stage`)
+STAGE = "path window"
+
+
+def path_angles(start: float, *, turn: float = PATH_WINDOW_TURN,
+                most: float = PATH_WINDOW_MAX) -> list[float]:
+    """The path angles [deg] :func:`checked_path_window` tries from a design's ``start``
+    [deg]: ``start + turn``, ``start + 2 turn`` … up to ``most``, each rounded to 0.01°.
+
+    Parameters
+    ----------
+    start : float — [deg]
+        The design's path angle, in (−90°, 90°).
+    turn : float — [deg]
+        The step, > 0.
+    most : float — [deg]
+        The last angle tried, < 90°.
+
+    Returns
+    -------
+    list of float — [deg]
+        Increasing; empty where ``start + turn`` exceeds ``most``.
+
+    Raises
+    ------
+    InputError
+        If ``turn`` is not positive or ``most`` not below 90°.
+
+    Notes
+    -----
+    Source: the issue-71 development's check (docs/synthesis.md, "The miter 20×20's
+    contact path off the unrelieved flank").
+    """
+    if not turn > 0.0:
+        raise InputError(f"turn: must be > 0 deg, got {turn!r}")
+    if not most < 90.0:
+        raise InputError(f"most: must be < 90 deg (a path angle), got {most!r}")
+    n = int(np.floor((most - start) / turn + 1e-9))
+    return [round(start + k * turn, 2) for k in range(1, n + 1)]
+
+
+def _window(placed: Callable[[Mapping[str, float]], Case], values: Mapping[str, float]
+            ) -> tuple[Case, PathWindow] | None:
+    """The design ``values`` placed and its drive path's window; None where its synthesis
+    or the window's TCA fails (logged)."""
+    try:
+        case = placed(values)
+        return case, path_window(case)
+    except Exception as exc:  # a path near the contact line has no ellipse: not tried
+        log.info("development %s: path_angle %.4g not tried: %s", STAGE,
+                 float(values["path_angle"]), exc)
+        return None
+
+
+def checked_path_window(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                        setup: Mapping[str, Any], teeth: KeptTeeth | None,
+                        say: Callable[[str], None],
+                        placed: Callable[[Mapping[str, float]], Case], *,
+                        lte_limit: float | None = None) -> DevelopmentEvaluation:
+    """A drive design whose LTE p-p at the check exceeds the verdict's limit and whose
+    contact path leaves the unrelieved flank within ±half a pitch of M, given the path
+    turned towards the face to the first angle whose window holds the pitch.
+
+    Parameters
+    ----------
+    best : DevelopmentEvaluation
+        The design the check's steps have kept so far (checked).
+    targets, setup, teeth, say, placed
+        As every check step's (:func:`~contact.optimize.development_check.check_steps`).
+    lte_limit : float, optional — [µrad]
+        The verdict's ``lte`` limit (default :data:`contact.study.verdicts.LTE_LIMIT`,
+        60 µrad).
+
+    Returns
+    -------
+    DevelopmentEvaluation
+        The design kept: ``best`` itself where it is within the limit at every torque, it
+        has no path angle, its own window holds the pitch, no angle up to
+        :data:`PATH_WINDOW_MAX` does, or that design did not score better.
+
+    Raises
+    ------
+    Nothing: a design whose synthesis, window or analysis fails is not kept (logged).
+
+    Notes
+    -----
+    The window is the conventional TCA's (seed Eq. 2.14) of the flank without its rems,
+    read against the blade's relief corners (:func:`geometry.pair.path_window.
+    path_window`); the transfer at ±pitch/2 of the designed parabola (seed §2.3.1, Fig.
+    2.9). Measured on the miter 20×20 (docs/synthesis.md, "The miter 20×20's contact path
+    off the unrelieved flank"): path −45° → 0° with the ellipse 0.70, te_level 10 µrad and
+    the reliefs 15 µm kept, undeveloped: LTE p-p 101.5 / 108.0 / 100.3 → 32.8 / 33.4 /
+    25.7 µrad at 50 / 250 / 500 N m.
+    """
+    from contact.study.verdicts import LTE_LIMIT
+
+    limit = LTE_LIMIT if lte_limit is None else float(lte_limit)
+    if (not best.checked_full or "path_angle" not in best.values
+            or not np.nanmax(best.metrics["lte_peak_to_peak"]) > limit):
+        return best
+    own = _window(placed, best.values)
+    if own is None or own[1].holds_pitch:
+        return best
+    start = float(best.values["path_angle"])
+    for angle in path_angles(start):
+        values = dict(best.values) | {"path_angle": angle}
+        got = _window(placed, values)
+        if got is None or not got[1].holds_pitch:
+            continue
+        case, window = got
+        e = said_variant(best, values, STAGE,
+                         f"with path_angle {angle:.4g} (its path left the unrelieved flank "
+                         f"at the {own[1].leaves_by()}; at {angle:.4g} deg it holds "
+                         f"{window.low:+.2f}..{window.high:+.2f} pitch; its LTE above "
+                         f"{limit:g} urad)", targets, setup, teeth, say, placed, case=case)
+        return best if kept_why(best, e, targets, setup, teeth, say,
+                                "the path turned onto the unrelieved flank") else e
+    say(f"  design {best.index + 1}: its path leaves the unrelieved flank at the "
+        f"{own[1].leaves_by()}, and no path up to {PATH_WINDOW_MAX:g} deg holds a pitch")
+    return best
