@@ -86,6 +86,17 @@ def test_a_path_along_the_face_holds_a_pitch_on_the_unrelieved_flank():
     assert w.face[-1] < 0.0
 
 
+def test_a_path_across_the_contact_line_holds_a_pitch_too():
+    """Path +30° (the angle the development's path-window step keeps first): the window
+    −0.55 … +0.55 pitch, left at the root relief's corner; +45° no longer holds it
+    (−0.50 … +0.45, the tip relief)."""
+    w = path_window(_case(30.0))
+    assert w.holds_pitch and (w.low, w.high) == pytest.approx((-0.55, 0.55))
+    assert w.leaves_by() == "root relief at -0.55 pitch"
+    w = path_window(_case(45.0))
+    assert not w.holds_pitch and (w.low, w.high) == pytest.approx((-0.5, 0.45))
+
+
 def test_a_bad_roll_list_is_an_input_error():
     with pytest.raises(InputError, match="rolls"):
         path_window(_case(), rolls=[0.1, 0.2])

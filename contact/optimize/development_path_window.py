@@ -18,12 +18,15 @@ runs along the face, which its face contact ratio covers (docs/synthesis.md, "Th
 :func:`checked_path_window` gives a checked drive design whose LTE p-p exceeds the
 verdict's limit at a torque and whose one-pitch window
 (:func:`geometry.pair.path_window.path_window`) does not hold ±half a pitch about M the path
-turned in :data:`PATH_WINDOW_TURN` steps towards the face (increasing angle, past the
-contact line, up to :data:`PATH_WINDOW_MAX`) to the first angle whose window holds it, every
-other prescription kept; the design is kept on the check steps' rule (better, tolerant at
-the mounting excursions, :func:`~contact.optimize.development_keep.kept_why`). A design
-within the limit is returned as it is, without any synthesis: the step changes nothing the
-development writes for such designs.
+turned towards the face (increasing angle, past the contact line), every other
+prescription kept: of the angles :data:`PATH_WINDOW_TURN` apart from the design's up to
+:data:`PATH_WINDOW_MAX`, those whose window holds the pitch, the largest first — nearest
+the direction across the contact line, where one pitch carries the contact least far along
+the face, the most compact bearing (on the miter: 0.61 of the face per pitch at 0°, 0.17
+at +30°) — each kept on the check steps' rule (better, tolerant at the mounting
+excursions, :func:`~contact.optimize.development_keep.kept_why`), at most
+:data:`PATH_WINDOW_DESIGNS` analysed. A design within the limit is returned as it is,
+without any synthesis: the step changes nothing the development writes for such designs.
 """
 
 from __future__ import annotations
@@ -43,8 +46,8 @@ from geometry.case import Case
 from geometry.core.errors import InputError
 from geometry.pair.path_window import PathWindow, path_window
 
-__all__ = ["PATH_WINDOW_MAX", "PATH_WINDOW_TURN", "STAGE", "checked_path_window",
-           "path_angles"]
+__all__ = ["PATH_WINDOW_DESIGNS", "PATH_WINDOW_MAX", "PATH_WINDOW_TURN", "STAGE",
+           "checked_path_window", "path_angles"]
 
 log = logging.getLogger("contact.optimize.development")
 
@@ -54,6 +57,9 @@ PATH_WINDOW_TURN = 15.0
 #: lengthwise direction is still a diagonal bearing (the miter 20×20's window holds the
 #: pitch from 0° to +40°, 0.9 pitch at +60°)
 PATH_WINDOW_MAX = 60.0
+#: the most designs :func:`checked_path_window` analyses (each a check at ``ltca run``'s
+#: sampling and its tolerance)
+PATH_WINDOW_DESIGNS = 3
 #: the check stage of the step's design (:attr:`DevelopmentEvaluation.stage`)
 STAGE = "path window"
 
@@ -115,7 +121,9 @@ def checked_path_window(best: DevelopmentEvaluation, targets: DevelopmentTargets
                         lte_limit: float | None = None) -> DevelopmentEvaluation:
     """A drive design whose LTE p-p at the check exceeds the verdict's limit and whose
     contact path leaves the unrelieved flank within ±half a pitch of M, given the path
-    turned towards the face to the first angle whose window holds the pitch.
+    turned towards the face to an angle whose window holds the pitch: of
+    :func:`path_angles`, those that hold it, the largest first, until one is kept (at most
+    :data:`PATH_WINDOW_DESIGNS` analysed).
 
     Parameters
     ----------
@@ -132,7 +140,7 @@ def checked_path_window(best: DevelopmentEvaluation, targets: DevelopmentTargets
     DevelopmentEvaluation
         The design kept: ``best`` itself where it is within the limit at every torque, it
         has no path angle, its own window holds the pitch, no angle up to
-        :data:`PATH_WINDOW_MAX` does, or that design did not score better.
+        :data:`PATH_WINDOW_MAX` does, or none of those analysed was kept.
 
     Raises
     ------
@@ -158,7 +166,8 @@ def checked_path_window(best: DevelopmentEvaluation, targets: DevelopmentTargets
     if own is None or own[1].holds_pitch:
         return best
     start = float(best.values["path_angle"])
-    for angle in path_angles(start):
+    tried = 0
+    for angle in reversed(path_angles(start)):  # the most compact bearing first
         values = dict(best.values) | {"path_angle": angle}
         got = _window(placed, values)
         if got is None or not got[1].holds_pitch:
@@ -169,8 +178,14 @@ def checked_path_window(best: DevelopmentEvaluation, targets: DevelopmentTargets
                          f"at the {own[1].leaves_by()}; at {angle:.4g} deg it holds "
                          f"{window.low:+.2f}..{window.high:+.2f} pitch; its LTE above "
                          f"{limit:g} urad)", targets, setup, teeth, say, placed, case=case)
-        return best if kept_why(best, e, targets, setup, teeth, say,
-                                "the path turned onto the unrelieved flank") else e
-    say(f"  design {best.index + 1}: its path leaves the unrelieved flank at the "
-        f"{own[1].leaves_by()}, and no path up to {PATH_WINDOW_MAX:g} deg holds a pitch")
+        if not kept_why(best, e, targets, setup, teeth, say,
+                        "the path turned onto the unrelieved flank"):
+            return e
+        tried += 1
+        if tried >= PATH_WINDOW_DESIGNS:
+            return best
+    if not tried:
+        say(f"  design {best.index + 1}: its path leaves the unrelieved flank at the "
+            f"{own[1].leaves_by()}, and no path up to {PATH_WINDOW_MAX:g} deg holds a "
+            "pitch")
     return best

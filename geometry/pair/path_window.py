@@ -99,7 +99,9 @@ class PathWindow:
 
     def leaves_by(self) -> str:
         """Where the path leaves the window on the side it is shortest, in words (for a
-        log line or a note): ``"tip relief at +0.25 pitch"``."""
+        log line or a note): ``"tip relief at +0.25 pitch"`` (past a relief corner), ``"face
+        end"`` (past toe or heel), ``"blank's edge"`` (off either blank's outline between
+        the corners) or ``"flank's end"`` (no contact found)."""
         if not np.isfinite(self.low):
             return "not on the unrelieved flank at M"
         ends = []
@@ -107,10 +109,10 @@ class PathWindow:
             k = int(np.argmin(np.abs(self.roll - end))) + step
             if not 0 <= k < len(self.roll):
                 continue
-            h = self.height[k]
+            h, u = self.height[k], self.face[k]
             why = ("tip relief" if h > self.tip_corner else "root relief"
-                   if h < self.root_corner else "face end" if np.isfinite(h)
-                   else "flank's end")
+                   if h < self.root_corner else "face end" if not 0.0 <= u <= 1.0
+                   else "blank's edge" if np.isfinite(h) else "flank's end")
             ends.append((abs(end), f"{why} at {end:+.2f} pitch"))
         return min(ends)[1] if ends else "nowhere within the rolls analysed"
 
