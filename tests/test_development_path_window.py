@@ -94,7 +94,7 @@ def test_a_turn_not_kept_goes_on_to_the_next_angle_that_holds(monkeypatch):
     """+30° not tolerant (edges at a mounting excursion): not kept, +15° tried next and
     kept; with every turn untolerant, at most PATH_WINDOW_DESIGNS (3) analysed, the design
     kept as it was."""
-    seen, placed, fake, place = _recorded(monkeypatch, untolerant=(30.0,))
+    seen, _placed, fake, place = _recorded(monkeypatch, untolerant=(30.0,))
     targets, setup, chosen = stand_in(monkeypatch, fake, [49.2, 328.1])
     start = chosen(dict(WRITTEN))
     seen.clear()
