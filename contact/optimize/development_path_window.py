@@ -11,7 +11,7 @@ unrelieved flank at −0.35 and +0.25 pitch (the root and the tip relief's corne
 unloaded TE p-p 104 µrad against the parabola's 2.5, LTE 102 / 116 µrad. On that pair every
 path the development's bounds hold (−80° … −25°) leaves it within 0.8 pitch: near the
 conjugate contact line (about −15° there) the contact runs fast, and along the profile one
-pitch climbs about the whole working depth. Past the contact line (0° … +40°) one pitch
+pitch climbs about the whole working depth. Past the contact line (0° … +30°) one pitch
 runs along the face, which its face contact ratio covers (docs/synthesis.md, "The miter
 20×20's contact path off the unrelieved flank").
 
@@ -55,7 +55,7 @@ log = logging.getLogger("contact.optimize.development")
 PATH_WINDOW_TURN = 15.0
 #: [deg] the largest path angle it tries: a path rising towards the heel at 60° from the
 #: lengthwise direction is still a diagonal bearing (the miter 20×20's window holds the
-#: pitch from 0° to +40°, 0.9 pitch at +60°)
+#: pitch from 0° to +30°, 0.95 pitch at +45°, 0.9 at +60°)
 PATH_WINDOW_MAX = 60.0
 #: the most designs :func:`checked_path_window` analyses (each a check at ``ltca run``'s
 #: sampling and its tolerance)
