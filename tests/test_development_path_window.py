@@ -174,3 +174,48 @@ def test_the_step_runs_last_in_the_check():
 
     src = inspect.getsource(dcheck.check_steps)
     assert src.index("checked_hollow_lte(") < src.index("checked_path_window(")
+
+
+def test_a_turned_pattern_at_the_toe_is_centred_by_m(monkeypatch):
+    """+30° not kept with its light pattern 0.00–0.85 (the miter's check: the toe's edge):
+    the same path with M placed ½ ((1 − 0.85) − 0) = 0.075 of the face towards the heel is
+    tried next, its window read again, and kept where it clears the toe (stand-in)."""
+    seen, _placed, _fake, place = _recorded(monkeypatch)
+
+    def law(case, torques, misalignment=None, **kw):
+        m, lim = _miter(case, torques, misalignment, **kw)
+        if case["path_angle"] == 30.0:
+            shift = case.get("mean_point_shift", 0.0)
+            m = m | {"pattern_toe_u": np.array([0.0 + shift, 0.0]),
+                     "pattern_heel_u": np.array([0.85 + shift, 0.9])}
+            if misalignment is not None and shift == 0.0:
+                m = m | {"edge_load_share": np.array([0.0, 0.03])}
+        if misalignment is None:
+            seen.append(dict(case))
+        return m, lim
+
+    targets, setup, chosen = stand_in(monkeypatch, law, [49.2, 328.1])
+    start = chosen(WRITTEN | {"mean_point_shift": 0.0})
+    seen.clear()
+    got = dpw.checked_path_window(start, targets, setup, None, print, place)
+    assert [(d["path_angle"], d["mean_point_shift"]) for d in seen] == [
+        (30.0, 0.0), (30.0, 0.075)]
+    assert got.values["mean_point_shift"] == 0.075
+
+
+def test_centred_values_leave_a_clear_pattern_and_keep_the_bounds():
+    """A pattern clear of both ends (0.2–0.7 with the clearance 0.04): None; one on the
+    heel's edge (0.3–1.0): M moved −0.15; the move clipped to the shift's bounds (±0.2)."""
+    from development_stand_ins import checked
+
+    from contact.optimize.development_targets import DevelopmentTargets
+
+    targets = DevelopmentTargets()
+    clear = checked(dict(WRITTEN), _metrics(), targets, 0.6)
+    assert dpw.centred_values(clear, clear.values, targets) is None
+    heel = checked(dict(WRITTEN), _metrics(pattern_toe_u=[0.3, 0.3],
+                                           pattern_heel_u=[1.0, 1.0]), targets, 0.6)
+    assert dpw.centred_values(heel, heel.values, targets)["mean_point_shift"] == -0.15
+    far = dpw.centred_values(heel, WRITTEN | {"mean_point_shift": -0.1}, targets)
+    assert far["mean_point_shift"] == pytest.approx(-0.2)
+    assert dpw.centred_values(None, WRITTEN, targets) is None

@@ -39,6 +39,7 @@ import numpy as np
 
 from contact.optimize.development_evaluate import KeptTeeth
 from contact.optimize.development_keep import kept_why
+from contact.optimize.development_pattern_steps import SHIFT_BOUNDS, SHIFT_NAME
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import DevelopmentTargets
 from contact.optimize.development_variant import said_variant
@@ -47,7 +48,7 @@ from geometry.core.errors import InputError
 from geometry.pair.path_window import PathWindow, path_window
 
 __all__ = ["PATH_WINDOW_DESIGNS", "PATH_WINDOW_MAX", "PATH_WINDOW_TURN", "STAGE",
-           "checked_path_window", "path_angles"]
+           "centred_values", "checked_path_window", "path_angles"]
 
 log = logging.getLogger("contact.optimize.development")
 
@@ -99,6 +100,49 @@ def path_angles(start: float, *, turn: float = PATH_WINDOW_TURN,
         raise InputError(f"most: must be < 90 deg (a path angle), got {most!r}")
     n = int(np.floor((most - start) / turn + 1e-9))
     return [round(start + k * turn, 2) for k in range(1, n + 1)]
+
+
+def centred_values(e: DevelopmentEvaluation | None, values: Mapping[str, float],
+                   targets: DevelopmentTargets) -> dict[str, float] | None:
+    """The prescriptions ``values`` [file units] of a turned design ``e`` with M placed so
+    that its light-load pattern's span lies midway between toe and heel: ``mean_point_shift``
+    moved by ½ ((1 − heel u) − toe u), within the targets' bounds of it (else
+    :data:`~contact.optimize.development_pattern_steps.SHIFT_BOUNDS`). None where ``e`` is
+    None, has no pattern, keeps its clearance to both ends (``targets.clearance``), or the
+    move is below 0.01 of the face.
+
+    Parameters
+    ----------
+    e : DevelopmentEvaluation or None
+        The turned design, checked.
+    values : mapping
+        Its prescriptions [file units].
+    targets : DevelopmentTargets
+
+    Returns
+    -------
+    dict or None
+        ``values`` with ``mean_point_shift`` [1, of the face width, > 0 towards the heel].
+
+    Notes
+    -----
+    The pattern follows M along the face about one for one
+    (:data:`~contact.optimize.development_pattern_steps.CENTRE_U_SLOPE`, 0.95); a turned
+    path's long pattern on the miter 20×20 ran 0.00–0.85 of the face (the toe's edge).
+    """
+    if e is None or e.metrics is None or "pattern_toe_u" not in e.metrics:
+        return None
+    toe = float(np.asarray(e.metrics["pattern_toe_u"], float)[0])
+    heel = float(np.asarray(e.metrics["pattern_heel_u"], float)[0])
+    c = float(targets.clearance)
+    if not np.isfinite(toe + heel) or (toe > c and heel < 1.0 - c):
+        return None
+    lo, hi = (float(x) for x in targets.variables.get(SHIFT_NAME, SHIFT_BOUNDS))
+    x0 = float(values.get(SHIFT_NAME, 0.0))
+    x = round(float(np.clip(x0 + 0.5 * ((1.0 - heel) - toe), lo, hi)), 4)
+    if abs(x - x0) < 0.01:
+        return None
+    return dict(values) | {SHIFT_NAME: x}
 
 
 def _window(placed: Callable[[Mapping[str, float]], Case], values: Mapping[str, float]
@@ -180,6 +224,22 @@ def checked_path_window(best: DevelopmentEvaluation, targets: DevelopmentTargets
                          f"{limit:g} urad)", targets, setup, teeth, say, placed, case=case)
         if not kept_why(best, e, targets, setup, teeth, say,
                         "the path turned onto the unrelieved flank"):
+            return e
+        tried += 1
+        if tried >= PATH_WINDOW_DESIGNS:
+            return best
+        shifted = centred_values(e, values, targets)
+        got = None if shifted is None else _window(placed, shifted)
+        if got is None or not got[1].holds_pitch:
+            continue
+        case, window = got
+        e = said_variant(best, shifted, STAGE,
+                         f"with path_angle {angle:.4g} and mean_point_shift "
+                         f"{shifted[SHIFT_NAME]:.3g} (the turned pattern centred between "
+                         f"toe and heel; it holds {window.low:+.2f}..{window.high:+.2f} "
+                         "pitch)", targets, setup, teeth, say, placed, case=case)
+        if not kept_why(best, e, targets, setup, teeth, say,
+                        "the turned path with M placed"):
             return e
         tried += 1
         if tried >= PATH_WINDOW_DESIGNS:
