@@ -24,8 +24,10 @@ prescription kept: of the angles :data:`PATH_WINDOW_TURN` apart from the design'
 the direction across the contact line, where one pitch carries the contact least far along
 the face, the most compact bearing (on the miter: 0.61 of the face per pitch at 0°, 0.17
 at +30°) — each kept on the check steps' rule (better, tolerant at the mounting
-excursions, :func:`~contact.optimize.development_keep.kept_why`), at most
-:data:`PATH_WINDOW_DESIGNS` analysed. A design within the limit is returned as it is,
+excursions, :func:`~contact.optimize.development_keep.kept_why`); one not kept whose
+light-load pattern runs to the toe or heel is tried again with M placed to centre its span
+(:func:`centred_values`); at most :data:`PATH_WINDOW_DESIGNS` analysed. A design within
+the limit is returned as it is,
 without any synthesis: the step changes nothing the development writes for such designs.
 """
 
@@ -166,8 +168,9 @@ def checked_path_window(best: DevelopmentEvaluation, targets: DevelopmentTargets
     """A drive design whose LTE p-p at the check exceeds the verdict's limit and whose
     contact path leaves the unrelieved flank within ±half a pitch of M, given the path
     turned towards the face to an angle whose window holds the pitch: of
-    :func:`path_angles`, those that hold it, the largest first, until one is kept (at most
-    :data:`PATH_WINDOW_DESIGNS` analysed).
+    :func:`path_angles`, those that hold it, the largest first, until one is kept, each
+    not kept whose pattern runs to an end followed by the same path with M placed
+    (:func:`centred_values`; at most :data:`PATH_WINDOW_DESIGNS` analysed).
 
     Parameters
     ----------
