@@ -178,8 +178,9 @@ def test_the_step_runs_last_in_the_check():
 
 def test_a_turned_pattern_at_the_toe_is_centred_by_m(monkeypatch):
     """+30° not kept with its light pattern 0.00–0.85 (the miter's check: the toe's edge):
-    the same path with M placed ½ ((1 − 0.85) − 0) = 0.075 of the face towards the heel is
-    tried next, its window read again, and kept where it clears the toe (stand-in)."""
+    the same path with M placed ½ ((1 − 0.85) − 0) = 0.075 of the face towards the heel and
+    the parabola deepened to 30 µrad is tried next, its window read again, and kept where it
+    clears the toe (stand-in)."""
     seen, _placed, _fake, place = _recorded(monkeypatch)
 
     def law(case, torques, misalignment=None, **kw):
@@ -201,11 +202,13 @@ def test_a_turned_pattern_at_the_toe_is_centred_by_m(monkeypatch):
     assert [(d["path_angle"], d["mean_point_shift"]) for d in seen] == [
         (30.0, 0.0), (30.0, 0.075)]
     assert got.values["mean_point_shift"] == 0.075
+    assert got.values["te_level"] == dpw.PATH_WINDOW_TE == 30.0  # the parabola deepened
 
 
 def test_centred_values_leave_a_clear_pattern_and_keep_the_bounds():
     """A pattern clear of both ends (0.2–0.7 with the clearance 0.04): None; one on the
-    heel's edge (0.3–1.0): M moved −0.15; the move clipped to the shift's bounds (±0.2)."""
+    heel's edge (0.3–1.0): M moved −0.15 and te_level 10 → 30 µrad (a deeper one kept);
+    the move clipped to the shift's bounds (±0.2)."""
     from development_stand_ins import checked
 
     from contact.optimize.development_targets import DevelopmentTargets
@@ -215,7 +218,10 @@ def test_centred_values_leave_a_clear_pattern_and_keep_the_bounds():
     assert dpw.centred_values(clear, clear.values, targets) is None
     heel = checked(dict(WRITTEN), _metrics(pattern_toe_u=[0.3, 0.3],
                                            pattern_heel_u=[1.0, 1.0]), targets, 0.6)
-    assert dpw.centred_values(heel, heel.values, targets)["mean_point_shift"] == -0.15
+    moved = dpw.centred_values(heel, heel.values, targets)
+    assert moved["mean_point_shift"] == -0.15 and moved["te_level"] == 30.0
+    deep = dpw.centred_values(heel, WRITTEN | {"te_level": 40.0}, targets)
+    assert deep["te_level"] == 40.0  # never flattened
     far = dpw.centred_values(heel, WRITTEN | {"mean_point_shift": -0.1}, targets)
     assert far["mean_point_shift"] == pytest.approx(-0.2)
     assert dpw.centred_values(None, WRITTEN, targets) is None

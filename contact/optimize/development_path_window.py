@@ -34,6 +34,7 @@ without any synthesis: the step changes nothing the development writes for such 
 from __future__ import annotations
 
 import logging
+import math
 from collections.abc import Callable, Mapping
 from typing import Any
 
@@ -49,7 +50,8 @@ from geometry.case import Case
 from geometry.core.errors import InputError
 from geometry.pair.path_window import PathWindow, path_window
 
-__all__ = ["PATH_WINDOW_DESIGNS", "PATH_WINDOW_MAX", "PATH_WINDOW_TURN", "STAGE",
+__all__ = ["PATH_WINDOW_DESIGNS", "PATH_WINDOW_MAX", "PATH_WINDOW_TE", "PATH_WINDOW_TURN",
+           "STAGE",
            "centred_values", "checked_path_window", "path_angles"]
 
 log = logging.getLogger("contact.optimize.development")
@@ -63,6 +65,12 @@ PATH_WINDOW_MAX = 60.0
 #: the most designs :func:`checked_path_window` analyses (each a check at ``ltca run``'s
 #: sampling and its tolerance)
 PATH_WINDOW_DESIGNS = 3
+#: [µrad] the TE level the turned design's second try has at least (:func:`centred_values`):
+#: a flatter parabola lets the light-load pattern cover the whole path, which a turned
+#: path lays along the face (the miter 20×20 at te_level 10: 0.00–0.85 of it); at +30° and
+#: 30 µrad the undeveloped miter reads LTE 53 / 46 / 31 µrad at 50 / 250 / 500 N m (10 µrad:
+#: 54 / 46 / 30)
+PATH_WINDOW_TE = 30.0
 #: the check stage of the step's design (:attr:`DevelopmentEvaluation.stage`)
 STAGE = "path window"
 
@@ -109,9 +117,10 @@ def centred_values(e: DevelopmentEvaluation | None, values: Mapping[str, float],
     """The prescriptions ``values`` [file units] of a turned design ``e`` with M placed so
     that its light-load pattern's span lies midway between toe and heel: ``mean_point_shift``
     moved by ½ ((1 − heel u) − toe u), within the targets' bounds of it (else
-    :data:`~contact.optimize.development_pattern_steps.SHIFT_BOUNDS`). None where ``e`` is
-    None, has no pattern, keeps its clearance to both ends (``targets.clearance``), or the
-    move is below 0.01 of the face.
+    :data:`~contact.optimize.development_pattern_steps.SHIFT_BOUNDS`), and the TE parabola
+    at least :data:`PATH_WINDOW_TE` (within ``te_level``'s bounds) to shorten the pattern
+    along the path. None where ``e`` is None, has no pattern, keeps its clearance to both
+    ends (``targets.clearance``), or nothing moves by 0.01.
 
     Parameters
     ----------
@@ -142,9 +151,14 @@ def centred_values(e: DevelopmentEvaluation | None, values: Mapping[str, float],
     lo, hi = (float(x) for x in targets.variables.get(SHIFT_NAME, SHIFT_BOUNDS))
     x0 = float(values.get(SHIFT_NAME, 0.0))
     x = round(float(np.clip(x0 + 0.5 * ((1.0 - heel) - toe), lo, hi)), 4)
-    if abs(x - x0) < 0.01:
+    new = dict(values) | {SHIFT_NAME: x}
+    if "te_level" in values:
+        t_lo, t_hi = (float(v) for v in targets.variables.get("te_level", (0.0, 1000.0)))
+        new["te_level"] = float(np.clip(max(float(values["te_level"]), PATH_WINDOW_TE),
+                                        t_lo, t_hi))
+    if all(abs(float(new[k]) - float(values.get(k, 0.0))) < 0.01 for k in new):
         return None
-    return dict(values) | {SHIFT_NAME: x}
+    return new
 
 
 def _window(placed: Callable[[Mapping[str, float]], Case], values: Mapping[str, float]
@@ -237,10 +251,12 @@ def checked_path_window(best: DevelopmentEvaluation, targets: DevelopmentTargets
             continue
         case, window = got
         e = said_variant(best, shifted, STAGE,
-                         f"with path_angle {angle:.4g} and mean_point_shift "
-                         f"{shifted[SHIFT_NAME]:.3g} (the turned pattern centred between "
-                         f"toe and heel; it holds {window.low:+.2f}..{window.high:+.2f} "
-                         "pitch)", targets, setup, teeth, say, placed, case=case)
+                         f"with path_angle {angle:.4g}, mean_point_shift "
+                         f"{shifted[SHIFT_NAME]:.3g} and te_level "
+                         f"{shifted.get('te_level', math.nan):.3g} urad (the turned pattern "
+                         "centred between toe and heel, shorter; it holds "
+                         f"{window.low:+.2f}..{window.high:+.2f} pitch)", targets, setup,
+                         teeth, say, placed, case=case)
         if not kept_why(best, e, targets, setup, teeth, say,
                         "the turned path with M placed"):
             return e
