@@ -410,7 +410,7 @@ def lte_reached(setup: Mapping[str, Any], e: DevelopmentEvaluation, what: str,
                 why: str = "", lever: str = "") -> None:
     """Record a check step's drive design in the development's least-LTE record
     (``setup["lte_reach"]``, which ``ltca synthesize``'s contact-ratio note states, :func:`
-    contact.commands.synthesize.reach_text`): kept where its larger LTE p-p of the light
+    contact.optimize.written_notes.reach_text`): kept where its larger LTE p-p of the light
     and design torque is the least seen, and ``lever`` added to the levers tried.
 
     Parameters

@@ -794,7 +794,7 @@ def lte_diagnosis(lte: Sequence[float], limit: float,
                   checks: Sequence[ChangeCheck] = (),
                   unrelieved: float = math.nan) -> LteDiagnosis:
     """What sets the written drive flank's LTE, said the same way by ``ltca synthesize``'s
-    note (:func:`contact.commands.synthesize.reach_text`) and ``ltca run``'s next step
+    note (:func:`contact.optimize.written_notes.reach_text`) and ``ltca run``'s next step
     (:func:`contact.commands.next_steps.overlap_lines`): its unloaded TE
     (:func:`ute_sets_lte`, :func:`ute_lte_text`) or, else, the low contact ratios, whose
     change is a trial (:data:`RATIO_TRIAL_TEXT`).
