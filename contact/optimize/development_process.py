@@ -573,8 +573,9 @@ def _generated_after_foreseen(run: Callable[..., Any], basic: Any, foreseen: Cut
 
 
 def _window_said(result: Any) -> str:
-    """``" (its design torque the drive LTE window's: ...)"`` where the LTE window set
-    ``result``'s design torque (:func:`cut_reference`), else empty."""
+    """``" (its design torque the drive LTE window's, set by the contact ratio, ...)"``
+    where the LTE window set ``result``'s design torque (``lte_torque`` finite:
+    :func:`cut_reference`), else empty."""
     if not math.isfinite(float(getattr(result, "lte_torque", math.nan))):
         return ""
     return (" (its design torque the drive LTE window's, set by the contact ratio, not the "

@@ -293,7 +293,6 @@ def teeth_remedy(design, target: float = FACE_CONTACT_RATIO_MIN) -> tuple[int, i
     InputError
         ``target`` not a number in (0, 5].
     """
-
     _check_target(target)
     z1, z2 = int(design.z1), int(design.z2)
     if not _eps_vb_or_nan(design) < target:
