@@ -17,6 +17,7 @@ import numpy as np
 from scipy import linalg
 
 from geometry.core.errors import InputError
+from geometry.core.kernels import kernels_module
 from geometry.core.validation import positive, real
 
 __all__ = [
@@ -27,6 +28,11 @@ __all__ = [
 
 #: Mindlin shear correction factor used unless told otherwise (Mindlin 1951).
 SHEAR_CORRECTION = 5.0 / 6.0
+
+#: the compliance's compiled kernel module (it re-exports the grouped load vectors' fill,
+#: :mod:`contact.compliance.shell_loads_numba`; the string of
+#: :data:`contact.compliance.tooth_map.KERNEL_MODULE`, not imported: tooth_map imports this)
+_KERNEL_MODULE = "contact.compliance.tooth_map_numba"
 
 #: displacement components of the shape-function families (u along x, v along θ, w normal)
 _U, _V, _W = 0, 1, 2
@@ -347,8 +353,6 @@ class ShellModel:
         zs = np.broadcast_to(np.asarray(offset, dtype=float), (n_pts,))
         dxi = 1.0 / self.reference_height
         deta = 2.0 / self.tooth.subtended_angle
-        g, dg = _legendre_rows(eta, self.n_face)
-        heights: dict[tuple[int, int], tuple[np.ndarray, np.ndarray]] = {}
         if group_weights is None:
             wts = np.ones(1)
         else:
@@ -358,7 +362,9 @@ class ShellModel:
                                  f"{n_pts} points into groups")
         n_out = n_pts // wts.size
         if wts.size > 1:
-            return self._grouped_load_vectors(xi, g, dg, d, zs, wts)
+            return self._grouped_load_vectors(xi, eta, d, zs, wts)
+        g, dg = _legendre_rows(eta, self.n_face)
+        heights: dict[tuple[int, int], tuple[np.ndarray, np.ndarray]] = {}
         # filled as (loads, unknowns) and returned transposed: a Fortran-ordered
         # (unknowns, loads) array, the layout half_solve's BLAS product takes as it is
         out_t = np.empty((n_out, self.n_dof))
@@ -398,8 +404,9 @@ class ShellModel:
             i += 1
         return out_t.T
 
-    def _grouped_load_vectors(self, xi: np.ndarray, g: np.ndarray, dg: np.ndarray,
-                              d: np.ndarray, zs: np.ndarray, wts: np.ndarray) -> np.ndarray:
+    def _grouped_load_vectors(self, xi: np.ndarray, eta: np.ndarray, d: np.ndarray,
+                              zs: np.ndarray, wts: np.ndarray, *,
+                              kernels: str | None = None) -> np.ndarray:
         """:meth:`load_vectors` with ``group_weights`` (G > 1 points a group): the works
         of all families in one stacked product, written straight into the output.
 
@@ -413,15 +420,39 @@ class ShellModel:
         product per family and term (to round-off: the 2G terms are summed in one dot
         product instead of two sums subtracted; 4e-16 of the largest entry on the default
         case's segments).
+
+        Where the compliance's compiled kernels run (``kernels``, as
+        :func:`geometry.core.kernels.kernels_module`; None: the process's choice), A and
+        B are filled point by point in one pass
+        (:func:`contact.compliance.shell_loads_numba.load_vector_factors`: the same
+        entries bit for bit, issue 75); the product is the same.
         """
         n_grp = wts.size
         n_out = xi.size // n_grp
-        n_face = g.shape[0]
+        n_face = self.n_face
         rows = self.n_dof // n_face
         dxi = 1.0 / self.reference_height
         deta = 2.0 / self.tooth.subtended_angle
         rotating = any(fam.rotates for fam, *_ in self._layout)
         n_terms = 2 * n_grp if rotating else n_grp
+        # filled as (loads, unknowns) and returned transposed: a Fortran-ordered
+        # (unknowns, loads) array, the layout half_solve's BLAS product takes as it is
+        out_t = np.empty((n_out, self.n_dof))
+        compiled = kernels_module(_KERNEL_MODULE, kernels)
+        if compiled is not None:
+            a_mat = np.empty((n_out, rows, n_terms))
+            b_mat = np.empty((n_out, n_terms, n_face))
+            families = np.array([(fam.rotates, fam.component, fam.z_power, off // n_face,
+                                  power, count) for fam, off, power, count in self._layout],
+                                dtype=np.int64)
+            compiled.load_vector_factors(
+                np.ascontiguousarray(xi), np.ascontiguousarray(eta),
+                np.ascontiguousarray(d), np.ascontiguousarray(zs),
+                np.ascontiguousarray(wts), n_face, families, dxi, deta,
+                float(self.tooth.radius), a_mat, b_mat)
+            np.matmul(a_mat, b_mat, out=out_t.reshape(n_out, rows, n_face))
+            return out_t.T
+        g, dg = _legendre_rows(eta, n_face)
         # A (groups, rows, terms): each height row's weighted works a (and c) at the
         # group's points (zero for a family the force does no work on)
         a_mat = np.zeros((n_out, rows, n_terms))
@@ -450,9 +481,6 @@ class ShellModel:
         b_mat[:, :n_grp, :] = g.reshape(n_face, n_out, n_grp).transpose(1, 2, 0)
         if rotating:
             b_mat[:, n_grp:, :] = dg.reshape(n_face, n_out, n_grp).transpose(1, 2, 0)
-        # filled as (loads, unknowns) and returned transposed: a Fortran-ordered
-        # (unknowns, loads) array, the layout half_solve's BLAS product takes as it is
-        out_t = np.empty((n_out, self.n_dof))
         np.matmul(a_mat, b_mat, out=out_t.reshape(n_out, rows, n_face))
         return out_t.T
 

@@ -37,9 +37,12 @@ import math
 import numba
 import numpy as np
 
+from contact.compliance.shell_loads_numba import load_vector_factors
 from contact.compliance.tooth_map import projection_step
 
-__all__ = ["project_to_mid", "trajectory"]
+#: (``load_vector_factors`` re-exported: the shell's grouped load vectors use this module's
+#: kernels choice, and :func:`geometry.core.kernels.cache_ready` checks its cache here)
+__all__ = ["load_vector_factors", "project_to_mid", "trajectory"]
 
 _jit = numba.njit(cache=True, nogil=True)
 
