@@ -289,7 +289,7 @@ class ShellModel:
     _layout: tuple = field(repr=False)  # ((family, offset, x_power, x_count), ...)
     _factor: tuple = field(repr=False)
     _scale: np.ndarray = field(repr=False)
-    _inverse: np.ndarray = field(repr=False)  # U⁻ᵀ, lower triangular, Fortran order
+    _half_operator: np.ndarray = field(repr=False)  # U⁻ᵀ S, lower triangular, Fortran order
 
     def w_functions(self, x: np.ndarray, theta: np.ndarray) -> np.ndarray:
         """Mid-surface deflection read-out: W(x, θ, z = 0) = ``w_functions(x, θ).T @ a``.
@@ -493,23 +493,34 @@ class ShellModel:
         """``Y = U⁻ᵀ S F`` for load vectors ``loads`` (n_dof, P), with S K S = UᵀU the
         Jacobi-scaled Cholesky factorisation: ``Fᵀ K⁻¹ F = Yᵀ Y`` [(N·mm)^(−1/2) per N]
         with one triangular product instead of the two solves of :meth:`solve`.
-        ``overwrite_loads``: a Fortran-ordered float ``loads`` is scaled and multiplied in
-        place and returned (no copy of the (n_dof, P) array: the same Y bit for bit).
+        ``overwrite_loads``: a Fortran-ordered float ``loads`` is multiplied in place and
+        returned (no copy of the (n_dof, P) array: the same Y bit for bit).
 
-        U⁻ᵀ is formed once with the model: a triangular product (BLAS trmm) costs half
-        the triangular solve it replaces (trsm; 4.7 vs 9.2 ms for 1,465 loads of 378
-        unknowns) and gives the same compliance YᵀY to ~5e-15 relative (cond U ≤ 2e6 on
-        the default case's teeth).
+        U⁻ᵀ S is formed once with the model (:func:`contact.compliance.shell.
+        _scaled_cholesky`): a triangular product (BLAS trmm) costs half the triangular
+        solve it replaces (trsm; 4.7 vs 9.2 ms for 1,465 loads of 378 unknowns) and gives
+        the same compliance YᵀY to ~5e-15 relative (cond U ≤ 2e6 on the default case's
+        teeth). The scale S folded into the operator's columns (issue 75, speed89) spares
+        a pass over the loads (≈ 1 ms of a study point's 1,576 loads a tooth); Y then
+        differs from U⁻ᵀ (S F) by round-off (each term L_ij s_j F_jk rounded in another
+        order: within 1e-14 of max |Y| on the default case's teeth,
+        ``tests/test_compliance_fast_paths.py``).
+
+        Parameters
+        ----------
+        loads : ndarray, shape (n_dof, P) — [1] load vectors (:meth:`load_vectors`)
+        overwrite_loads : bool — multiply a Fortran-ordered float ``loads`` in place
+
+        Returns
+        -------
+        ndarray, shape (n_dof, P), Fortran order — [(N·mm)^(−1/2) per N]
         """
-        # (the scaled loads formed in Fortran order and multiplied in place: BLAS's
-        # layout, so nothing is copied either way)
-        if (overwrite_loads and isinstance(loads, np.ndarray) and loads.ndim == 2
+        # (BLAS's layout, Fortran order: multiplied in place, nothing copied either way)
+        if not (overwrite_loads and isinstance(loads, np.ndarray) and loads.ndim == 2
                 and loads.dtype == float
                 and loads.flags.f_contiguous and loads.flags.writeable):
-            scaled = np.multiply(self._scale[:, None], loads, out=loads)
-        else:
-            scaled = np.multiply(self._scale[:, None], loads, order="F")
-        return linalg.blas.dtrmm(1.0, self._inverse, scaled, lower=1, overwrite_b=1)
+            loads = np.array(loads, dtype=float, order="F")
+        return linalg.blas.dtrmm(1.0, self._half_operator, loads, lower=1, overwrite_b=1)
 
 
 def _legendre_rows(t: np.ndarray, count: int) -> tuple[np.ndarray, np.ndarray]:
