@@ -251,7 +251,7 @@ def build_shell_model(
     quad = _volume_quadrature(tooth, a, nq_x, nq_t, nq_z)
     layout, n_dof = _dof_layout(th, m, n)
     K = _stiffness(tooth, th, kappa, layout, n_dof, n, quad, a)
-    factor, scale, inverse = _scaled_cholesky(K, n_dof)
+    factor, scale, half = _scaled_cholesky(K, n_dof)
     elapsed = time.perf_counter() - t0
     log.debug(
         "shell model: %d unknowns (M=%d, N=%d, %s), %d quadrature points, %.3f s",
@@ -269,7 +269,7 @@ def build_shell_model(
         _layout=layout,
         _factor=factor,
         _scale=scale,
-        _inverse=inverse,
+        _half_operator=half,
     )
 
 
@@ -414,10 +414,11 @@ def _strains(
 
 def _scaled_cholesky(K: np.ndarray, n_dof: int) -> tuple[tuple, np.ndarray, np.ndarray]:
     """Cholesky factor (upper, as :func:`scipy.linalg.cho_factor`) of the Jacobi-scaled
-    stiffness S K S = UᵀU [1], the scale S = diag(K)^(−1/2), and U⁻ᵀ (lower triangular,
-    Fortran order; the half solve's operator, :meth:`ShellModel.half_solve`); raises
-    :class:`LTCAError` for a zero or non-finite diagonal term or a K that is not positive
-    definite."""
+    stiffness S K S = UᵀU [1], the scale S = diag(K)^(−1/2), and U⁻ᵀ S (lower triangular,
+    Fortran order; the half solve's operator, :meth:`ShellModel.half_solve`: the scale
+    folded into U⁻ᵀ's columns once, so a half solve is one triangular product, issue 75);
+    raises :class:`LTCAError` for a zero or non-finite diagonal term or a K that is not
+    positive definite."""
     d = np.sqrt(np.diag(K))
     if not np.all(np.isfinite(d)) or np.any(d <= 0.0):
         raise LTCAError("shell stiffness has a zero or non-finite diagonal term")
@@ -433,7 +434,7 @@ def _scaled_cholesky(K: np.ndarray, n_dof: int) -> tuple[tuple, np.ndarray, np.n
         ) from exc
     inverse = linalg.solve_triangular(factor[0], np.eye(n_dof, order="F"), trans="T",
                                       lower=False, check_finite=False, overwrite_b=True)
-    return factor, scale, np.asfortranarray(np.tril(inverse))
+    return factor, scale, np.asfortranarray(np.tril(inverse) * scale[None, :])
 
 
 # ---------------------------------------------------------------------------------------

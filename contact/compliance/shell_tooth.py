@@ -17,6 +17,7 @@ import numpy as np
 from scipy import linalg
 
 from geometry.core.errors import InputError
+from geometry.core.kernels import kernels_module
 from geometry.core.validation import positive, real
 
 __all__ = [
@@ -27,6 +28,11 @@ __all__ = [
 
 #: Mindlin shear correction factor used unless told otherwise (Mindlin 1951).
 SHEAR_CORRECTION = 5.0 / 6.0
+
+#: the compliance's compiled kernel module (it re-exports the grouped load vectors' fill,
+#: :mod:`contact.compliance.shell_loads_numba`; the string of
+#: :data:`contact.compliance.tooth_map.KERNEL_MODULE`, not imported: tooth_map imports this)
+_KERNEL_MODULE = "contact.compliance.tooth_map_numba"
 
 #: displacement components of the shape-function families (u along x, v along θ, w normal)
 _U, _V, _W = 0, 1, 2
@@ -283,7 +289,7 @@ class ShellModel:
     _layout: tuple = field(repr=False)  # ((family, offset, x_power, x_count), ...)
     _factor: tuple = field(repr=False)
     _scale: np.ndarray = field(repr=False)
-    _inverse: np.ndarray = field(repr=False)  # U⁻ᵀ, lower triangular, Fortran order
+    _half_operator: np.ndarray = field(repr=False)  # U⁻ᵀ S, lower triangular, Fortran order
 
     def w_functions(self, x: np.ndarray, theta: np.ndarray) -> np.ndarray:
         """Mid-surface deflection read-out: W(x, θ, z = 0) = ``w_functions(x, θ).T @ a``.
@@ -347,8 +353,6 @@ class ShellModel:
         zs = np.broadcast_to(np.asarray(offset, dtype=float), (n_pts,))
         dxi = 1.0 / self.reference_height
         deta = 2.0 / self.tooth.subtended_angle
-        g, dg = _legendre_rows(eta, self.n_face)
-        heights: dict[tuple[int, int], tuple[np.ndarray, np.ndarray]] = {}
         if group_weights is None:
             wts = np.ones(1)
         else:
@@ -358,7 +362,9 @@ class ShellModel:
                                  f"{n_pts} points into groups")
         n_out = n_pts // wts.size
         if wts.size > 1:
-            return self._grouped_load_vectors(xi, g, dg, d, zs, wts)
+            return self._grouped_load_vectors(xi, eta, d, zs, wts)
+        g, dg = _legendre_rows(eta, self.n_face)
+        heights: dict[tuple[int, int], tuple[np.ndarray, np.ndarray]] = {}
         # filled as (loads, unknowns) and returned transposed: a Fortran-ordered
         # (unknowns, loads) array, the layout half_solve's BLAS product takes as it is
         out_t = np.empty((n_out, self.n_dof))
@@ -398,8 +404,9 @@ class ShellModel:
             i += 1
         return out_t.T
 
-    def _grouped_load_vectors(self, xi: np.ndarray, g: np.ndarray, dg: np.ndarray,
-                              d: np.ndarray, zs: np.ndarray, wts: np.ndarray) -> np.ndarray:
+    def _grouped_load_vectors(self, xi: np.ndarray, eta: np.ndarray, d: np.ndarray,
+                              zs: np.ndarray, wts: np.ndarray, *,
+                              kernels: str | None = None) -> np.ndarray:
         """:meth:`load_vectors` with ``group_weights`` (G > 1 points a group): the works
         of all families in one stacked product, written straight into the output.
 
@@ -413,15 +420,39 @@ class ShellModel:
         product per family and term (to round-off: the 2G terms are summed in one dot
         product instead of two sums subtracted; 4e-16 of the largest entry on the default
         case's segments).
+
+        Where the compliance's compiled kernels run (``kernels``, as
+        :func:`geometry.core.kernels.kernels_module`; None: the process's choice), A and
+        B are filled point by point in one pass
+        (:func:`contact.compliance.shell_loads_numba.load_vector_factors`: the same
+        entries bit for bit, issue 75); the product is the same.
         """
         n_grp = wts.size
         n_out = xi.size // n_grp
-        n_face = g.shape[0]
+        n_face = self.n_face
         rows = self.n_dof // n_face
         dxi = 1.0 / self.reference_height
         deta = 2.0 / self.tooth.subtended_angle
         rotating = any(fam.rotates for fam, *_ in self._layout)
         n_terms = 2 * n_grp if rotating else n_grp
+        # filled as (loads, unknowns) and returned transposed: a Fortran-ordered
+        # (unknowns, loads) array, the layout half_solve's BLAS product takes as it is
+        out_t = np.empty((n_out, self.n_dof))
+        compiled = kernels_module(_KERNEL_MODULE, kernels)
+        if compiled is not None:
+            a_mat = np.empty((n_out, rows, n_terms))
+            b_mat = np.empty((n_out, n_terms, n_face))
+            families = np.array([(fam.rotates, fam.component, fam.z_power, off // n_face,
+                                  power, count) for fam, off, power, count in self._layout],
+                                dtype=np.int64)
+            compiled.load_vector_factors(
+                np.ascontiguousarray(xi), np.ascontiguousarray(eta),
+                np.ascontiguousarray(d), np.ascontiguousarray(zs),
+                np.ascontiguousarray(wts), n_face, families, dxi, deta,
+                float(self.tooth.radius), a_mat, b_mat)
+            np.matmul(a_mat, b_mat, out=out_t.reshape(n_out, rows, n_face))
+            return out_t.T
+        g, dg = _legendre_rows(eta, n_face)
         # A (groups, rows, terms): each height row's weighted works a (and c) at the
         # group's points (zero for a family the force does no work on)
         a_mat = np.zeros((n_out, rows, n_terms))
@@ -450,9 +481,6 @@ class ShellModel:
         b_mat[:, :n_grp, :] = g.reshape(n_face, n_out, n_grp).transpose(1, 2, 0)
         if rotating:
             b_mat[:, n_grp:, :] = dg.reshape(n_face, n_out, n_grp).transpose(1, 2, 0)
-        # filled as (loads, unknowns) and returned transposed: a Fortran-ordered
-        # (unknowns, loads) array, the layout half_solve's BLAS product takes as it is
-        out_t = np.empty((n_out, self.n_dof))
         np.matmul(a_mat, b_mat, out=out_t.reshape(n_out, rows, n_face))
         return out_t.T
 
@@ -465,23 +493,34 @@ class ShellModel:
         """``Y = U⁻ᵀ S F`` for load vectors ``loads`` (n_dof, P), with S K S = UᵀU the
         Jacobi-scaled Cholesky factorisation: ``Fᵀ K⁻¹ F = Yᵀ Y`` [(N·mm)^(−1/2) per N]
         with one triangular product instead of the two solves of :meth:`solve`.
-        ``overwrite_loads``: a Fortran-ordered float ``loads`` is scaled and multiplied in
-        place and returned (no copy of the (n_dof, P) array: the same Y bit for bit).
+        ``overwrite_loads``: a Fortran-ordered float ``loads`` is multiplied in place and
+        returned (no copy of the (n_dof, P) array: the same Y bit for bit).
 
-        U⁻ᵀ is formed once with the model: a triangular product (BLAS trmm) costs half
-        the triangular solve it replaces (trsm; 4.7 vs 9.2 ms for 1,465 loads of 378
-        unknowns) and gives the same compliance YᵀY to ~5e-15 relative (cond U ≤ 2e6 on
-        the default case's teeth).
+        U⁻ᵀ S is formed once with the model (:func:`contact.compliance.shell.
+        _scaled_cholesky`): a triangular product (BLAS trmm) costs half the triangular
+        solve it replaces (trsm; 4.7 vs 9.2 ms for 1,465 loads of 378 unknowns) and gives
+        the same compliance YᵀY to ~5e-15 relative (cond U ≤ 2e6 on the default case's
+        teeth). The scale S folded into the operator's columns (issue 75, speed89) spares
+        a pass over the loads (≈ 1 ms of a study point's 1,576 loads a tooth); Y then
+        differs from U⁻ᵀ (S F) by round-off (each term L_ij s_j F_jk rounded in another
+        order: within 1e-14 of max |Y| on the default case's teeth,
+        ``tests/test_compliance_fast_paths.py``).
+
+        Parameters
+        ----------
+        loads : ndarray, shape (n_dof, P) — [1] load vectors (:meth:`load_vectors`)
+        overwrite_loads : bool — multiply a Fortran-ordered float ``loads`` in place
+
+        Returns
+        -------
+        ndarray, shape (n_dof, P), Fortran order — [(N·mm)^(−1/2) per N]
         """
-        # (the scaled loads formed in Fortran order and multiplied in place: BLAS's
-        # layout, so nothing is copied either way)
-        if (overwrite_loads and isinstance(loads, np.ndarray) and loads.ndim == 2
+        # (BLAS's layout, Fortran order: multiplied in place, nothing copied either way)
+        if not (overwrite_loads and isinstance(loads, np.ndarray) and loads.ndim == 2
                 and loads.dtype == float
                 and loads.flags.f_contiguous and loads.flags.writeable):
-            scaled = np.multiply(self._scale[:, None], loads, out=loads)
-        else:
-            scaled = np.multiply(self._scale[:, None], loads, order="F")
-        return linalg.blas.dtrmm(1.0, self._inverse, scaled, lower=1, overwrite_b=1)
+            loads = np.array(loads, dtype=float, order="F")
+        return linalg.blas.dtrmm(1.0, self._half_operator, loads, lower=1, overwrite_b=1)
 
 
 def _legendre_rows(t: np.ndarray, count: int) -> tuple[np.ndarray, np.ndarray]:

@@ -25,6 +25,11 @@ the results agree with the NumPy path to round-off (the fractions to ~1e-15; che
 1e-13 in ``tests/test_compliance_fast_paths.py``); numba does not contract or reassociate without
 ``fastmath``, so they do not depend on the CPU.
 
+The module also holds (re-exported from :mod:`contact.compliance.shell_loads_numba`) the
+compiled fill of the shell's grouped load-vector factors,
+:func:`~contact.compliance.shell_loads_numba.load_vector_factors`: the compliance's
+kernels are chosen and cached as one module.
+
 This module imports numba; :mod:`contact.compliance.tooth_map` and
 :mod:`contact.compliance.tooth` use it where numba is installed and ``LTCA_KERNELS`` is
 not ``numpy`` (:func:`geometry.core.kernels.kernels_module`).
@@ -37,9 +42,12 @@ import math
 import numba
 import numpy as np
 
+from contact.compliance.shell_loads_numba import load_vector_factors
 from contact.compliance.tooth_map import projection_step
 
-__all__ = ["project_to_mid", "trajectory"]
+#: (``load_vector_factors`` re-exported: the shell's grouped load vectors use this module's
+#: kernels choice, and :func:`geometry.core.kernels.cache_ready` checks its cache here)
+__all__ = ["load_vector_factors", "project_to_mid", "trajectory"]
 
 _jit = numba.njit(cache=True, nogil=True)
 
