@@ -124,8 +124,8 @@ def lte_kept_raise(cut: DevelopmentEvaluation, raised: DevelopmentEvaluation,
     written_lte_capacity(raised, targets, trial, teeth, lines.append)
     within = float(trial.get("lte_torque", math.nan))
     torque = float(setup["torques"][1])
-    why = (f"the drive LTE {range_curve(low)} at the cut torques, {range_curve(high)} at "
-           f"the raised ones")
+    why = (f"the drive {range_curve(low)} at the cut torques, {range_curve(high)} at the "
+           f"raised ones")
     if math.isfinite(within) and within > 1.01 * torque:
         return LteRaise(within, why)
     say(f"  no design torque above {torque:.4g} N m keeps the drive LTE within {limit:g} urad "
