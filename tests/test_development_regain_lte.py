@@ -95,11 +95,13 @@ def test_the_cut_torque_where_no_torque_above_it_keeps_60(monkeypatch):
     assert lines and "no design torque above 278.3" in lines[-1]
 
 
-def test_regained_writes_the_lte_window_s_torque(monkeypatch):
+@pytest.mark.parametrize("tolerant_to", [RAISED, 350.0])
+def test_regained_writes_the_lte_window_s_torque(monkeypatch, tolerant_to):
     """``development._regained`` on the 16×16's numbers: the capacity holds to 390.7 N m
-    (the stand-in of ``regained_capacity``), the tolerance too; the LTE limit kept at the
-    cut torque ends the raise at the LTE's torque, its capacity asked again there, the
-    design re-scored there; the source, the line and ``lte_torque`` say it."""
+    (the stand-in of ``regained_capacity``), the tolerance too (or to 350 N m only: its
+    torque's capacity asked first); the LTE limit kept at the cut torque ends the raise at
+    the LTE's torque, its capacity asked again there, the design re-scored there; the
+    source, the line and ``lte_torque`` say it."""
     targets, setup, best, _raised, _seen = _start(monkeypatch)
     setup["source"] = "the local pitting capacity"
     asked: list[float] = []
@@ -116,8 +118,9 @@ def test_regained_writes_the_lte_window_s_torque(monkeypatch):
 
     monkeypatch.setattr(droot, "regained_capacity", regained)
     monkeypatch.setattr(dev, "rescored", rescored)
-    monkeypatch.setattr(dreg, "tolerant_raise",
-                        lambda *a, **k: dreg.TolerantRaise(RAISED))
+    held = (dreg.TolerantRaise(RAISED) if tolerant_to == RAISED else
+            dreg.TolerantRaise(tolerant_to, 360.0, ("dE+0.05: plastic",)))
+    monkeypatch.setattr(dreg, "tolerant_raise", lambda *a, **k: held)
     best = dataclasses.replace(best, case=dict(_VALUES))
     rescored_at_cut = rescored(best, ("tree", CUT), None, targets, setup)
     best = dataclasses.replace(rescored_at_cut, case=best.case)
@@ -125,11 +128,17 @@ def test_regained_writes_the_lte_window_s_torque(monkeypatch):
     got, text, safety = dev._regained(best.case, best, targets, setup, None, CEILING, "cut",
                                       math.nan, lines.append)
     t = setup["torques"][1]
-    assert CUT * 1.01 < t <= _CROSSING and asked == [CEILING, t]
+    assert CUT * 1.01 < t <= _CROSSING
+    assert asked == ([CEILING, t] if tolerant_to == RAISED else [CEILING, tolerant_to, t])
     assert setup["lte_torque"] == t and setup["torques"] == case_torques(0.15, t)
     assert np.all(got.metrics["lte_peak_to_peak"] <= 60.0) and safety == 2.93
     assert text == setup["source"] and f"raised back to {t:.4g} N m (of 649.4)" in text
-    assert "its capacity 390.7 N m, the drive LTE within 60 urad at every torque up to" in text
+    if tolerant_to == RAISED:
+        assert ("its capacity 390.7 N m, the drive LTE within 60 urad at every torque up to"
+                in text)
+    else:  # the tolerance's clause names the capacity; the LTE's follows it
+        assert "held up to 350 N m (not at 360" in text
+        assert "; the drive LTE within 60 urad at every torque up to" in text
     assert f"design torque 278.3 -> {t:.4g} N m" in lines[-1]
 
 

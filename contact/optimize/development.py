@@ -1037,9 +1037,10 @@ def _regained(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTarge
         if up is None:
             return best, root_text, root_safety
         raised, torques, capacity, safety = up
-        window = (f" — its capacity {plain_number(new)} N m, the drive LTE within "
-                  f"{verdict_lte_limit():g} urad at every torque up to {plain_number(capacity)} "
-                  f"N m only ({kept.why})")
+        # (after the tolerance's clause, which names the capacity already)
+        window = ("; " if tolerance else f" — its capacity {plain_number(new)} N m, ") + (
+            f"the drive LTE within {verdict_lte_limit():g} urad at every torque up to "
+            f"{plain_number(capacity)} N m only ({kept.why})")
         new = capacity
     source = (f"{setup['source']}; on the bearing developed at {plain_number(torque)} N m, "
               f"raised back to {plain_number(new)} N m (of {plain_number(ceiling)}), where every "
