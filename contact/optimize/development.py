@@ -985,10 +985,14 @@ def _regained(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTarge
     at the cut ones, and only as far as the written case keeps the mounting tolerance it
     had at the cut torque (:func:`contact.optimize.development_regain.tolerant_raise`: the
     excursions ΔE/ΔP at the raised torques, the highest torque that keeps them bisected
-    where they do not; that torque's capacity and targets checked again); ``setup``'s
-    torques and source updated where kept. Returns the design, the case's torque phrase
-    and S_F,FE at the design torque."""
+    where they do not; that torque's capacity and targets checked again), and only as far
+    as the drive LTE keeps the verdict's limit at every torque where it keeps it at the cut
+    torque (:func:`contact.optimize.development_regain_lte.lte_kept_raise`; ``setup``'s
+    ``lte_torque`` then the torque it set); ``setup``'s torques and source updated where
+    kept. Returns the design, the case's torque phrase and S_F,FE at the design torque."""
+    from contact.optimize.development_range_lte import verdict_lte_limit
     from contact.optimize.development_regain import tolerant_raise
+    from contact.optimize.development_regain_lte import lte_kept_raise
 
     torque = float(setup["torques"][1])
     up = _raised_to(case, best, targets, setup, ceiling, torque, say)
@@ -1017,14 +1021,37 @@ def _regained(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTarge
                      f"at {plain_number(held.fails)}; at {plain_number(new)} N m "
                      f"{'; '.join(held.lost)})")
         new = capacity
+    # the drive LTE the verdict judges, where the cut torque keeps its limit: the raise
+    # ends where the written bearing keeps it at every torque (development_regain_lte)
+    kept = lte_kept_raise(best, raised, targets, setup, teeth, list(torques), say)
+    window = ""
+    if kept.torque < new:
+        if not kept.torque > 1.01 * torque:
+            say(f"  design torque not raised {plain_number(torque)} -> {plain_number(new)} N m "
+                f"on the bearing developed at it: it would lose the drive LTE limit it keeps "
+                f"({kept.why})")
+            return best, root_text, root_safety
+        # below the capacity found: every criterion holds there (S falls with T)
+        up = _raised_to(case, best, targets, setup, kept.torque, torque, say,
+                        " (the LTE window's)")
+        if up is None:
+            return best, root_text, root_safety
+        raised, torques, capacity, safety = up
+        # (after the tolerance's clause, which names the capacity already)
+        window = ("; " if tolerance else f" — its capacity {plain_number(new)} N m, ") + (
+            f"the drive LTE within {verdict_lte_limit():g} urad at every torque up to "
+            f"{plain_number(capacity)} N m only ({kept.why})")
+        new = capacity
     source = (f"{setup['source']}; on the bearing developed at {plain_number(torque)} N m, "
               f"raised back to {plain_number(new)} N m (of {plain_number(ceiling)}), where every "
-              f"capacity criterion holds{tolerance}")
+              f"capacity criterion holds{tolerance}{window}")
     say(f"  design torque {plain_number(torque)} -> {plain_number(new)} N m: the bearing "
         f"developed at the lowered torque carries it (S_F,FE and S_H,loc at or above their minima"
         + (f"; the mounting tolerance holds to it{tolerance}" if tolerance else
-           ", the mounting tolerance kept") + ")")
+           ", the mounting tolerance kept") + window + ")")
     setup.update(torques=torques, source=source)
+    if window:  # the LTE window set it (development_process.cut_reference)
+        setup["lte_torque"] = float(new)
     return raised, source, safety
 
 
