@@ -30,6 +30,7 @@ Public functions
 ----------------
 node_slopes     node slopes along one axis: the pieces' splines, harmonic at the cuts
 corner_spline   the bicubic Hermite interpolant of gridded data with those slopes
+corner_splines  the same of several fields on one grid and cuts, at once
 """
 
 from __future__ import annotations
@@ -42,7 +43,7 @@ from scipy.interpolate import RectBivariateSpline, make_interp_spline
 from geometry.core.caches import memoised
 from geometry.core.errors import InputError
 
-__all__ = ["corner_spline", "node_slopes"]
+__all__ = ["corner_spline", "corner_splines", "node_slopes"]
 
 def _grid(x: np.ndarray, name: str) -> np.ndarray:
     x = np.asarray(x, dtype=float)
@@ -52,10 +53,11 @@ def _grid(x: np.ndarray, name: str) -> np.ndarray:
     return x
 
 
-@memoised(maxsize=16)
+@memoised(maxsize=64)
 def _spline_slopes(knots: bytes) -> np.ndarray:
     """(n, n) the node slopes of the not-a-knot interpolating spline of the nodes' bytes,
-    as a matrix applied to the values."""
+    as a matrix applied to the values (a piece's nodes are given from its first, so that
+    the pieces of a uniform grid share one per length)."""
     x = np.frombuffer(knots, dtype=float)
     k = min(3, x.size - 1)
     out = make_interp_spline(x, np.eye(x.size), k=k).derivative()(x)
@@ -64,12 +66,12 @@ def _spline_slopes(knots: bytes) -> np.ndarray:
 
 
 def _piece_slopes(x: np.ndarray, y: np.ndarray) -> np.ndarray:
-    """Node slopes of one piece's not-a-knot spline (a quadratic on 3 nodes, the secant
-    on 2)."""
+    """Node slopes (n, m) of one piece's not-a-knot spline of each column of y (n, m) (a
+    quadratic on 3 nodes, the secant on 2)."""
     if x.size == 2:
         s = (y[1] - y[0]) / (x[1] - x[0])
-        return np.array([s, s])
-    return _spline_slopes(np.ascontiguousarray(x).tobytes()) @ y
+        return np.stack([s, s])
+    return _spline_slopes(np.ascontiguousarray(x - x[0]).tobytes()) @ y
 
 
 def _cuts(cut, shape: tuple[int, int], name: str) -> np.ndarray | None:
@@ -126,19 +128,27 @@ def node_slopes(x, y, cut=None) -> np.ndarray:
     cut = _cuts(cut, y.shape, "cut")
     if cut is None:
         return out
-    for line in np.flatnonzero(cut[1:-1].any(axis=0)):
-        cuts = [0, *(np.flatnonzero(cut[1:-1, line]) + 1), x.size - 1]
-        left = np.full(x.size, np.nan)  # one-sided slopes from the piece to the left
-        right = np.full(x.size, np.nan)
+    inner = cut.copy()
+    inner[[0, -1]] = False  # a line's ends are its ends anyway
+    lines = np.flatnonzero(inner.any(axis=0))
+    # the lines that share a pattern of cuts at once (a relief's start often cuts many
+    # lines at the same nodes)
+    patterns, group = np.unique(inner[:, lines].T, axis=0, return_inverse=True)
+    for k, pattern in enumerate(patterns):
+        cols = lines[np.ravel(group) == k]
+        cuts = [0, *np.flatnonzero(pattern), x.size - 1]
+        left = np.full((x.size, cols.size), np.nan)  # one-sided slopes, piece to the left
+        right = np.full((x.size, cols.size), np.nan)
         for a, b in itertools.pairwise(cuts):
-            s = _piece_slopes(x[a:b + 1], y[a:b + 1, line])
-            right[a] = s[0]
-            left[b] = s[-1]
-            out[a + 1:b, line] = s[1:-1]
-        out[0, line], out[-1, line] = right[0], left[-1]
-        for j in cuts[1:-1]:
-            p, q = left[j], right[j]
-            out[j, line] = 2.0 * p * q / (p + q) if p * q > 0 else 0.0
+            sl = _piece_slopes(x[a:b + 1], y[a:b + 1][:, cols])
+            right[a] = sl[0]
+            left[b] = sl[-1]
+            out[a + 1:b, cols] = sl[1:-1]
+        out[0, cols], out[-1, cols] = right[0], left[-1]
+        j = np.array(cuts[1:-1])
+        pl, q = left[j], right[j]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            out[j[:, None], cols] = np.where(pl * q > 0, 2.0 * pl * q / (pl + q), 0.0)
     return out
 
 
@@ -202,16 +212,55 @@ def corner_spline(x, y, z, cut_x=None, cut_y=None) -> RectBivariateSpline:
     Source: the module docstring (bicubic Hermite patches: de Boor, *A Practical Guide to
     Splines*, 1978, ch. XVII; slopes: Fritsch & Butland 1984 at the cuts).
     """
+    return corner_splines(x, y, [z], cut_x, cut_y)[0]
+
+
+def corner_splines(x, y, zs, cut_x=None, cut_y=None) -> list[RectBivariateSpline]:
+    """:func:`corner_spline` of several fields on one grid with the same cuts, at once.
+
+    Parameters
+    ----------
+    x, y, cut_x, cut_y
+        As :func:`corner_spline`.
+    zs : sequence of K array_like (nx, ny)
+        The fields' values (finite).
+
+    Returns
+    -------
+    list of K scipy.interpolate.RectBivariateSpline
+        :func:`corner_spline` of each field (the same arithmetic per field: the lines of
+        all fields go through :func:`node_slopes` together).
+
+    Raises
+    ------
+    InputError
+        As :func:`corner_spline`, or no field.
+
+    Notes
+    -----
+    Source: the module docstring.
+    """
     x, y = _grid(x, "x"), _grid(y, "y")
-    z = np.asarray(z, dtype=float)
-    if z.shape != (x.size, y.size):
-        raise InputError(f"z: must be ({x.size}, {y.size}), got {z.shape}")
-    cut_x = _cuts(cut_x, z.shape, "cut_x")
-    cut_y = _cuts(cut_y, z.shape, "cut_y")
-    zx = node_slopes(x, z, cut_x)
-    zy = node_slopes(y, z.T, None if cut_y is None else cut_y.T).T
-    zxy = node_slopes(x, zy, cut_x)
+    z = np.asarray(zs, dtype=float)
+    if z.ndim != 3 or z.shape[0] == 0 or z.shape[1:] != (x.size, y.size):
+        raise InputError(f"z: must be ({x.size}, {y.size}) for each of at least one "
+                         f"field, got {z.shape[1:] if z.ndim == 3 else z.shape}")
+    k = z.shape[0]
+    cut_x = _cuts(cut_x, z.shape[1:], "cut_x")
+    cut_y = _cuts(cut_y, z.shape[1:], "cut_y")
+    # the fields side by side along the lines' axis: (nx, K ny) and (ny, K nx)
+    zx_lines = z.transpose(1, 0, 2).reshape(x.size, -1)
+    zx = node_slopes(x, zx_lines, None if cut_x is None else np.tile(cut_x, k))
+    zy_lines = z.transpose(2, 0, 1).reshape(y.size, -1)
+    zy = node_slopes(y, zy_lines, None if cut_y is None else np.tile(cut_y.T, k))
+    zy = zy.reshape(y.size, k, x.size).transpose(2, 1, 0).reshape(x.size, -1)  # (nx, K ny)
+    zxy = node_slopes(x, zy, None if cut_x is None else np.tile(cut_x, k))
     tx, ax, bx = _hermite_coefficients(x)
     ty, ay, by = _hermite_coefficients(y)
-    c = ax @ z @ ay.T + bx @ zx @ ay.T + ax @ zy @ by.T + bx @ zxy @ by.T
-    return RectBivariateSpline._from_tck((tx, ty, c.ravel(), 3, 3))
+    out = []
+    for i in range(k):
+        cols = slice(i * y.size, (i + 1) * y.size)
+        c = (ax @ z[i] @ ay.T + bx @ zx[:, cols] @ ay.T + ax @ zy[:, cols] @ by.T
+             + bx @ zxy[:, cols] @ by.T)
+        out.append(RectBivariateSpline._from_tck((tx, ty, c.ravel(), 3, 3)))
+    return out

@@ -42,7 +42,7 @@ from typing import NamedTuple
 import numpy as np
 from scipy.interpolate import BSpline, RectBivariateSpline
 
-from contact.utca.corner_spline import corner_spline
+from contact.utca.corner_spline import corner_splines
 from contact.utca.easeoff import EaseOff, fill_missing
 from contact.utca.piecewise import PiecewiseSpline, from_splines, piece_basis
 from contact.utca.relief_corners import relief_corners
@@ -172,8 +172,7 @@ class EaseOffFields:
                 return [RectBivariateSpline(self.u, self.v, filled[..., k])
                         for k in range(len(fields))]
             cx, cy = cuts if cut else (None, None)
-            return [corner_spline(self.u, self.v, filled[..., k], cx, cy)
-                    for k in range(len(fields))]
+            return corner_splines(self.u, self.v, np.moveaxis(filled, -1, 0), cx, cy)
 
         # ε and Q from the valid nodes and, beyond them, from the computed nodes on the same
         # smooth sheet (both points on their blades' main sections), continued linearly
