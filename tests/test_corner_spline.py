@@ -182,3 +182,34 @@ def test_bad_input_names_the_field():
         node_slopes(V, np.full((V.size, 1), np.nan))
     with pytest.raises(InputError, match="cut_y: must be a bool array"):
         corner_spline(U, V, np.zeros((U.size, V.size)), cut_y=np.zeros((3, 3), bool))
+
+
+def test_a_measured_deviation_adds_no_cut():
+    """A gear deviation with a sharp bend of its own (a worn band 4 µm deep with straight
+    flanks between u 0.4 and 0.6, as a wear step's border) leaves the cuts where the design
+    put them: the default case's (its pinion tip relief) exactly, and none on a case
+    without relief, whose fields stay the interpolating splines (``RectBivariateSpline``
+    itself, not the Hermite form) — the worn ease-off's bends are never cut (spline88's
+    data-found corners cut them and broke tests/test_wear.py)."""
+    from pathlib import Path
+
+    from contact.catalogue import resolve_case
+    from contact.utca.deviations import SurfaceDeviation, apply_deviations
+    from contact.utca.easeoff import ease_off
+    from contact.utca.fields import EaseOffFields
+    from geometry.case import load_case
+
+    gu, gv = np.linspace(-0.2, 1.2, 29), np.linspace(-0.2, 1.2, 15)
+    band = -0.004 * np.clip(1.0 - np.abs(gu - 0.5) / 0.1, 0.0, 1.0)[:, None] * np.ones(gv.size)
+    worn = SurfaceDeviation(gu, gv, band)
+    eo = ease_off(resolve_case(None), flank="drive")
+    designed = relief_corners(eo)
+    assert designed is not None
+    got = relief_corners(apply_deviations(eo, gear=worn))
+    assert np.array_equal(got[0], designed[0]) and np.array_equal(got[1], designed[1])
+    plain = ease_off(load_case(Path(__file__).resolve().parents[1] / "cases"
+                               / "kolivand2009_fm_11x41.toml"), flank="drive")
+    deviated = apply_deviations(plain, gear=worn)
+    assert relief_corners(deviated) is None
+    f = EaseOffFields(deviated)
+    assert f.cuts is None and type(f.eps) is RectBivariateSpline
