@@ -131,6 +131,8 @@ def node_slopes(x, y, cut=None) -> np.ndarray:
     inner = cut.copy()
     inner[[0, -1]] = False  # a line's ends are its ends anyway
     lines = np.flatnonzero(inner.any(axis=0))
+    if lines.size == 0:
+        return out
     # the lines that share a pattern of cuts at once (a relief's start often cuts many
     # lines at the same nodes)
     patterns, group = np.unique(inner[:, lines].T, axis=0, return_inverse=True)
