@@ -12,9 +12,10 @@ planes:
   (roll/pitch)², read two independent ways — the conventional TCA of the two generated
   surfaces (seed Eq. 2.14) and the ease-off's UTCA (seed §4.2, §2.3.2.2);
 * a tip relief of 15 µm from 0.9 of the way to the tip leaves the flank within the
-  parabola's few µrad on a fine ease-off grid, but the default 41 × 21 grid's bicubic
-  spline of the ease-off rings next to the relief's corner and reads some 30 µrad more
-  (a strict xfail: the defect, left open).
+  parabola's few µrad on the default 41 × 21 ease-off grid as on a fine one (the global
+  bicubic spline of the ease-off rang next to the relief's corner and read some 30 µrad
+  more; the fields' corner-aware interpolant, :mod:`contact.utca.corner_spline`, does
+  not).
 """
 
 from __future__ import annotations
@@ -98,16 +99,16 @@ def test_unrelieved_ratio_one_flank_carries_the_designed_parabola_by_utca():
     assert c2 == pytest.approx(TE_LEVEL, rel=0.05)
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "the default 41 x 21 ease-off grid's bicubic interpolating spline of the ease-off "
-    "rings next to a steep profile relief's corner: 30 urad below the unrelieved flank's "
-    "spline at u 0.5, v 0.50, where the node values are equal (docs/synthesis.md, 'The "
-    "FM 16x16 at Sigma 60 deg's unloaded TE of 85 urad'); not fixed"))
 def test_a_short_tip_relief_reads_the_same_unloaded_te_on_the_default_grid():
     """Tip relief 15 µm from 0.9 of the way from M to the tip: the UTE p-p on the default
-    grid within 2 µrad of an 81 × 81 grid's (measured 34.4 against 4.1 µrad; 41 × 41: 7.1),
-    and never below the unrelieved flank's lowest UTE by more than 1 µrad (a relief only
-    removes material; measured −30.7 µrad)."""
+    grid within 2 µrad of an 81 × 81 grid's (measured 4.52 against 3.97 µrad; with the
+    global interpolating spline of the ease-off it was 34.4, the spline ringing next to
+    the relief's corner: issue 71, docs/synthesis.md "The ease-off interpolant at a relief
+    corner"), and never below the unrelieved flank's lowest UTE by more than 1 µrad (a
+    relief only removes material; measured −0.02 µrad, the unrelieved flank's −0.02; it
+    was −30.7). 2 µrad: the corner lies between two profile nodes on either grid and the
+    cell holding it is interpolated at that grid's resolution (the unrelieved flank's two
+    grids agree to 0.01 µrad: 2.70 / 2.69)."""
     case, _ = _case(0.015, 0.9)
     default = unloaded_cycle(ease_off(case, flank="drive"))
     fine = unloaded_cycle(ease_off(case, flank="drive", grid=dict(nu=81, nv=81)))

@@ -25,6 +25,13 @@ section, whose heights count from the tip plane: 0–3 nodes per point, the comm
 equal to 1e-11 rad), which changed the UTE p-p at ΔE, ΔP = (−0.15, 0.095) mm by −3.0 µrad,
 and with the edge contact at that corner the LTE p-p (−7.9 µrad at (−0.175, 0.095)), the
 edge pressure (−207 to +130 MPa) and the pattern's root row (one grid step) at six points.
+All 25 points were written again when the ease-off's fields Q, ε and K were cut at the
+pinion's flankrem corner (issue 71, branch spline89: the default case's tip relief crosses
+every lengthwise column of its ease-off, where the global spline rang; a reviewed change
+of results): UTE p-p by up to 2.0 µrad (range 12.04–91.03 → 10.68–91.18), LTE p-p up to
+1.6 µrad (10.89–22.42 → 12.51–23.42), LTE mean up to 0.7 µrad, flank pressure up to
+72 MPa, edge pressure up to 283 MPa (the limit 5262 MPa unchanged), edge share up to
+0.09 %, pattern centre up to 0.25 mm and the toe row at two points (one grid step).
 
 Why it is cheap enough for CI: the coarse LTCA (8 rolls per cycle, 8 segments per curve)
 leaves the ease-off, UTCA and the tooth models as they are in a full analysis (so every

@@ -1,7 +1,6 @@
 """The ease-off fields as smooth functions over the gear grid (seed §2.3.2.2, §4.4).
 
-:class:`EaseOffFields` holds bicubic interpolating splines
-(``scipy.interpolate.RectBivariateSpline``, s = 0, which reproduce the exact node values) of
+:class:`EaseOffFields` holds bicubic interpolants (which reproduce the exact node values) of
 the fields of an :class:`contact.utca.easeoff.EaseOff` over the gear projection-plane grid
 (u, v): the surface of roll angle Q, the angular ease-off ε, the gap curvature K, the
 normal arm, the real gear flank (points and normals) and the mating pinion point's margin
@@ -14,11 +13,19 @@ ask of the ease-off: which places can be touched (:meth:`EaseOffFields.inside`,
 ε, Q and K are built from the valid nodes and the computed nodes on the same smooth sheet
 beyond them (both points on their blades' main sections), continued linearly past those
 (:func:`contact.utca.easeoff.fill_missing`): a blade-section junction kinks the fields and
-a cubic spline would carry the kink back. Q must be strictly monotone along the profile
-direction (checked; otherwise ``ModelUnavailableError``), so a contact curve is
-parameterised by the lengthwise fraction u and its profile place v*(u) solved by Newton's
-method on the spline (on a set of places shared by many curves, on the spline's cubic
-piece of each place's column: :meth:`EaseOffFields.solve_columns`).
+a cubic spline would carry the kink back. Their interpolant is the interpolating bicubic
+spline (``RectBivariateSpline``, s = 0), except where a relief's corner crosses the sheet
+(:func:`contact.utca.relief_corners.relief_corners`: from the blades' sections of the
+nodes, not from the data): there it is :func:`contact.utca.corner_spline.corner_spline`,
+its grid lines cut at the corner with shape-preserving slopes, where the global spline
+rang (30 µrad below flat node data next to a tip relief's corner, issue 71), and the
+other fields are the interpolating splines in the same form (same knots).
+
+Q must be strictly monotone along the profile direction (checked; otherwise
+``ModelUnavailableError``), so a contact curve is parameterised by the lengthwise fraction
+u and its profile place v*(u) solved by Newton's method on the interpolant (on a set of
+places shared by many curves, on the interpolant's cubic piece of each place's column:
+:meth:`EaseOffFields.solve_columns`).
 
 Public functions
 ----------------
@@ -35,8 +42,10 @@ from typing import NamedTuple
 import numpy as np
 from scipy.interpolate import BSpline, RectBivariateSpline
 
+from contact.utca.corner_spline import corner_splines
 from contact.utca.easeoff import EaseOff, fill_missing
 from contact.utca.piecewise import PiecewiseSpline, from_splines, piece_basis
+from contact.utca.relief_corners import relief_corners
 from contact.utca.spline_group import SplineGroup
 from geometry.core.caches import Same, memoised
 from geometry.core.errors import InputError, ModelUnavailableError
@@ -87,7 +96,7 @@ def kernels_module(kernels: str | None = None) -> ModuleType | None:
 
 
 class EaseOffFields:
-    """Bicubic splines of the ease-off fields over the gear grid (u, v).
+    """Bicubic interpolants of the ease-off fields over the gear grid (u, v).
 
     Parameters
     ----------
@@ -104,7 +113,14 @@ class EaseOffFields:
     u, v : ndarray — [1]
         The gear grid's lengthwise and profile fractions.
     q, eps, gap : RectBivariateSpline
-        Q [rad], ε [rad] and the gap curvature K [1/rad] over (u, v).
+        Q [rad], ε [rad] and the gap curvature K [1/rad] over (u, v): the interpolating
+        splines, or where a relief's corner crosses the sheet (``cuts``) bicubic Hermite
+        interpolants with double knots cut there
+        (:func:`contact.utca.corner_spline.corner_spline`; the others then the
+        interpolating splines in that form).
+    cuts : (ndarray of bool (nu, nv), ndarray of bool (nu, nv)) or None
+        The nodes at which the lines along u and along v are cut
+        (:func:`contact.utca.relief_corners.relief_corners`); None: no relief corner.
     arm : RectBivariateSpline
         Normal arm ρ |n·e_θ| [mm].
     pos, nrm : list of 3 RectBivariateSpline
@@ -144,19 +160,33 @@ class EaseOffFields:
         self.computed = computed
         gear_ok = np.all(np.isfinite(eo.gear_position), axis=-1)
 
-        def spl(fields, ok):
+        # the grid lines cut at a relief's corner, from the design (relief_corners): None
+        # without a relief on the sheet, and then every field is the interpolating spline
+        cuts = relief_corners(eo)
+        self.cuts = cuts
+
+        def spl(fields, ok, cut=False):
             # the fields sharing a mask are filled together (same arithmetic per field)
             filled = fill_missing(np.stack(fields, -1), ok)
-            return [RectBivariateSpline(self.u, self.v, filled[..., k])
-                    for k in range(len(fields))]
+            if cuts is None:
+                return [RectBivariateSpline(self.u, self.v, filled[..., k])
+                        for k in range(len(fields))]
+            cx, cy = cuts if cut else (None, None)
+            return corner_splines(self.u, self.v, np.moveaxis(filled, -1, 0), cx, cy)
 
         # ε and Q from the valid nodes and, beyond them, from the computed nodes on the same
         # smooth sheet (both points on their blades' main sections), continued linearly
         # past those: a section junction (e.g. the gear's fillet) kinks the fields, and a
-        # cubic spline would carry the kink back into the contact region
+        # cubic spline would carry the kink back into the contact region. Where a relief's
+        # corner crosses the sheet their grid lines are cut there (relief_corners: the
+        # blades' sections of the nodes, not the data; corner_spline): the global spline
+        # rang there, 30 µrad below flat node data next to a tip relief's corner (issue
+        # 71). The gear flank's fields are smooth, and the pinion mate's margin is a least
+        # of distances whose ridges are no corner of the contact region: their splines
+        # uncut (then on the same knots as the cut ones, for the groups of values()).
         sheet = valid | eo.smooth
         self.q, self.eps, self.gap = spl(
-            [eo.raw_roll_angle, eo.raw_ease_off_angle, eo.gap_curvature], sheet)
+            [eo.raw_roll_angle, eo.raw_ease_off_angle, eo.gap_curvature], sheet, True)
         k_nodes = eo.gap_curvature[sheet & np.isfinite(eo.gap_curvature)]
         self.gap_range = ((float(k_nodes.min()), float(k_nodes.max())) if k_nodes.size
                           else (-np.inf, np.inf))
@@ -316,22 +346,32 @@ class EaseOffFields:
             The spline's knot intervals in v.
         coefficients : ndarray (nc, n_int, 4) — [rad]
             On [breaks[i], breaks[i + 1]], Q(uc[j], v) = Σ_p c[j, i, p] (v − breaks[i])^p:
-            the bicubic spline of Q restricted to each column (a cubic B-spline in v whose
-            coefficients are the u-basis at uc[j] applied to the spline's; de Boor, *A
-            Practical Guide to Splines*, 1978), matching FITPACK's evaluation to round-off.
+            the bicubic interpolant of Q restricted to each column (a cubic B-spline in v
+            whose coefficients are the u-basis at uc[j] applied to the spline's; cut at a
+            relief corner, its piecewise-polynomial form's cell polynomial in u evaluated
+            at uc[j]; de Boor, *A Practical Guide to Splines*, 1978), matching FITPACK's
+            evaluation to round-off.
         """
         key = (len(uc), float(uc[0]), float(uc[-1]))
         cols = self._columns.get(key)
         if cols is None:
-            tx, ty, c = self.q.tck
-            kx, ky = self.q.degrees
-            d = BSpline.design_matrix(np.asarray(uc, dtype=float), tx, kx).toarray()
-            coef = d @ c.reshape(len(tx) - kx - 1, len(ty) - ky - 1)  # v-spline per column
-            basis = piece_basis(ty, ky)  # (n_int, 4, 4)
-            n_int = basis.shape[0]
-            idx = np.arange(n_int)[:, None] + np.arange(ky + 1)[None, :]
-            cols = self._columns[key] = (ty[ky:ky + n_int + 1],
-                                         np.einsum("jia,iap->jip", coef[:, idx], basis))
+            if self.cuts is None:
+                tx, ty, c = self.q.tck
+                kx, ky = self.q.degrees
+                d = BSpline.design_matrix(np.asarray(uc, dtype=float), tx, kx).toarray()
+                coef = d @ c.reshape(len(tx) - kx - 1, len(ty) - ky - 1)  # per column
+                basis = piece_basis(ty, ky)  # (n_int, 4, 4)
+                n_int = basis.shape[0]
+                idx = np.arange(n_int)[:, None] + np.arange(ky + 1)[None, :]
+                cols = self._columns[key] = (ty[ky:ky + n_int + 1],
+                                             np.einsum("jia,iap->jip", coef[:, idx], basis))
+            else:  # double knots: the piecewise form's cell polynomials in u at uc
+                pp = self._field_pieces("q")
+                x = np.minimum(np.maximum(np.asarray(uc, dtype=float), pp.bx[0]), pp.bx[-1])
+                i = np.minimum(np.searchsorted(pp.bx, x, side="right") - 1, len(pp.bx) - 2)
+                powers = (x - pp.bx[i])[:, None] ** np.arange(pp.coefficients.shape[3])
+                cols = self._columns[key] = (pp.by, np.einsum(
+                    "jp,jipq->jiq", powers, pp.coefficients[i, :, 0]))
         return cols
 
     def solve_columns(self, uc, target):

@@ -104,13 +104,16 @@ def _piece_basis(knots: bytes, k: int) -> np.ndarray:
     return out
 
 
-def _breakpoints(t: np.ndarray, k: int, name: str) -> np.ndarray:
-    """The knots t[k] … t[n] that bound the intervals, which must be distinct."""
+def _breakpoints(t: np.ndarray, k: int, name: str) -> tuple[np.ndarray, np.ndarray]:
+    """The distinct knots t[k] … t[n] that bound the intervals, and which of the knot
+    intervals have a length (a knot of multiplicity m opens m − 1 empty ones)."""
     b = np.asarray(t[k:len(t) - k], dtype=float)
-    if b.size < 2 or not np.all(np.diff(b) > 0):
+    step = np.diff(b)
+    if b.size < 2 or np.any(step < 0) or not np.any(step > 0):
         raise ValueError(f"splines: the {name}-knots between the end knots must be "
-                         "distinct and increasing (an interpolating spline's are)")
-    return b
+                         "non-decreasing and span an interval")
+    full = step > 0
+    return np.concatenate([b[:1], b[1:][full]]), full
 
 
 def from_splines(splines: list, kernels: ModuleType | None = None) -> PiecewiseSpline:
@@ -119,8 +122,9 @@ def from_splines(splines: list, kernels: ModuleType | None = None) -> PiecewiseS
     Parameters
     ----------
     splines : list of K scipy.interpolate.RectBivariateSpline
-        Splines with the same knots and degrees (e.g. interpolating splines on one grid),
-        whose interior knots are distinct.
+        Splines with the same knots and degrees (e.g. interpolating splines on one grid,
+        or :func:`contact.utca.corner_spline.corner_spline`'s, whose interior knots are
+        double: their empty knot intervals are left out).
     kernels : module, optional
         :mod:`contact.utca.isoline_numba` to form the coefficients in its compiled loop
         (:func:`~contact.utca.isoline_numba.pieces`: the same sums, without NumPy's
@@ -134,7 +138,7 @@ def from_splines(splines: list, kernels: ModuleType | None = None) -> PiecewiseS
     Raises
     ------
     ValueError
-        No splines, splines on different knots or degrees, or repeated interior knots.
+        No splines, splines on different knots or degrees, or knots that decrease.
     """
     if not splines:
         raise ValueError("splines: must hold at least one spline, got none")
@@ -144,17 +148,20 @@ def from_splines(splines: list, kernels: ModuleType | None = None) -> PiecewiseS
         if (s.degrees != (kx, ky) or not np.array_equal(s.tck[0], tx)
                 or not np.array_equal(s.tck[1], ty)):
             raise ValueError("splines: must all have the same knots and degrees")
-    bx, by = _breakpoints(tx, kx, "x"), _breakpoints(ty, ky, "y")
+    (bx, full_x), (by, full_y) = _breakpoints(tx, kx, "x"), _breakpoints(ty, ky, "y")
     nx, ny = len(tx) - kx - 1, len(ty) - ky - 1
     c = np.stack([np.asarray(s.tck[2], dtype=float).reshape(nx, ny) for s in splines])
     basis_x, basis_y = piece_basis(tx, kx), piece_basis(ty, ky)  # (ncx, kx+1, kx+1), …
     if kernels is not None:
-        return PiecewiseSpline(bx, by, kernels.pieces(c, basis_x, basis_y))
-    # along x, then along y: Σ_a Σ_b Bx[i, a, p] c[s, i + a, j + b] By[j, b, q], the
-    # (kx + 1) × (ky + 1) coefficients that act on each cell as sliding windows
-    along_x = np.matmul(sliding_window_view(c, kx + 1, axis=1), basis_x[None])
-    coef = np.matmul(sliding_window_view(along_x, ky + 1, axis=2), basis_y[None, None])
-    coef = coef.transpose(1, 2, 0, 3, 4)  # (ncx, ncy, K, kx + 1, ky + 1)
+        coef = kernels.pieces(c, basis_x, basis_y)
+    else:
+        # along x, then along y: Σ_a Σ_b Bx[i, a, p] c[s, i + a, j + b] By[j, b, q], the
+        # (kx + 1) × (ky + 1) coefficients that act on each cell as sliding windows
+        along_x = np.matmul(sliding_window_view(c, kx + 1, axis=1), basis_x[None])
+        coef = np.matmul(sliding_window_view(along_x, ky + 1, axis=2), basis_y[None, None])
+        coef = coef.transpose(1, 2, 0, 3, 4)  # (ncx, ncy, K, kx + 1, ky + 1)
+    if not (full_x.all() and full_y.all()):  # repeated knots: their empty intervals out
+        coef = coef[full_x][:, full_y]
     return PiecewiseSpline(bx, by, np.ascontiguousarray(coef))
 
 

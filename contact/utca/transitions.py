@@ -258,9 +258,11 @@ def _solve_transitions(h: _PairDifference, x: np.ndarray, hx: np.ndarray):
 _BATCH = 12  # rolls per round of the batched search
 _GUARDS = 3  # of which spread over the whole bracket when the others close in on the root
 _TRANSITION_TOL = 1e-12  # [rad] the batched search's bracket
-#: [rad] brackets narrower than this may see the difference change sign more than once
-#: by round-off (|h| ~ 1e-19 rad within ~1e-13 rad of a crossing, measured), which is not
-#: a second crossing
+#: [rad] sign changes of the difference that all lie within this of each other are
+#: round-off, not a second crossing (|h| ~ 1e-19 to 1e-17 rad within ~1e-14 rad of a
+#: crossing, measured; the rolls closing in on an estimated root can sit there while the
+#: bracket is still wider: the default case at ΔE = ΔP = −0.12 mm on the ease-off's
+#: corner-aware interpolant, issue 71)
 _NOISE_WIDTH = 1e-10
 
 
@@ -283,7 +285,8 @@ def _batched_search(h: _PairDifference, a: float, fa: float, b: float, fb: float
     (a, b) : (float, float) — [rad], or None
         The final bracket, |b − a| < 1e-12 rad: ``a`` the last roll on the reference
         pair's side (M1 or M2), ``b`` the first on the neighbour's. None where a round
-        finds the difference changing sign more than once in the bracket: the transition
+        finds the difference changing sign more than once in the bracket, the changes
+        farther apart than :data:`_NOISE_WIDTH` (closer: round-off): the transition
         is then left to :func:`_sequential_search`, whose choice among the crossings
         (the one its false position runs into) is this toolkit's.
 
@@ -326,7 +329,8 @@ def _batched_search(h: _PairDifference, a: float, fa: float, b: float, fb: float
         fm = h(m, np.full(m.size, k))
         xs = np.r_[a, m, b]
         fs = np.r_[fa, fm, fb]
-        if abs(w) > _NOISE_WIDTH and np.count_nonzero(np.diff(fs > 0)) > 1:
+        flips = np.flatnonzero(np.diff(fs > 0))
+        if flips.size > 1 and abs(xs[flips[-1] + 1] - xs[flips[0]]) > _NOISE_WIDTH:
             return None  # several crossings: which one is a matter of the path taken
         i = int(np.argmax(fs > 0))  # the first roll on the neighbour's side (≥ 1)
         a, fa, b, fb = xs[i - 1], fs[i - 1], xs[i], fs[i]
