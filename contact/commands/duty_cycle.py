@@ -168,7 +168,11 @@ def run(args: argparse.Namespace) -> int:
     from contact.catalogue import resolve_case
     from contact.commands.run import ltca_options
     from contact.study.duty_cycle import bin_table, edge_note, run_duty_cycle
-    from contact.study.duty_cycle_inputs import example_duty_cycle, read_duty_cycle
+    from contact.study.duty_cycle_inputs import (
+        example_duty_cycle,
+        illustrative_speed_note,
+        read_duty_cycle,
+    )
     from contact.study.run import StudyRun
     from geometry.core.errors import InputError
     from geometry.core.io import write_netcdf
@@ -206,6 +210,9 @@ def run(args: argparse.Namespace) -> int:
     if duty.illustrative:
         print("NOTE: the bundled spectrum and deflection table are ILLUSTRATIVE (made-up "
               "proportions), not a measured drive cycle")
+        speed_note = illustrative_speed_note(duty, case.operating.pinion_speed)
+        if speed_note:
+            print_wrapped(f"NOTE: {speed_note}")
     rows = [(i, f"{r['torque']:g}", f"{r['speed']:g}", plain_number(r['hours']),
              f"{r['lte_mean']:.1f}", f"{r['lte_peak_to_peak']:.2f}",
              f"{r['pressure_max_flank']:.0f}", f"{100 * r['edge_load_share']:.1f}",

@@ -54,7 +54,7 @@ if TYPE_CHECKING:
     from geometry.case import Case
 
 __all__ = ["DEFLECTION_FIELDS", "DeflectionTable", "DutyCycle", "example_duty_cycle",
-           "read_duty_cycle"]
+           "illustrative_speed_note", "read_duty_cycle"]
 
 #: the deflection table's columns and their units
 DEFLECTION_FIELDS = {"delta_E": "mm", "delta_P": "mm", "delta_G": "mm", "delta_Sigma": "deg"}
@@ -438,3 +438,37 @@ def example_duty_cycle(max_torque: float | None = None, max_speed: float = 3000.
                      deflection=table, grade="MQ", miner_rule="modified",
                      name="illustrative axle spectrum (not a measured drive cycle)",
                      illustrative=True)
+
+
+def illustrative_speed_note(duty: DutyCycle, case_speed: float) -> str | None:
+    """What the illustrative spectrum's speeds are not, where the case runs faster.
+
+    The bundled spectrum (:func:`example_duty_cycle`) falls from 3000 to 600 rpm for every
+    case; an e-axle whose ``[operating] pinion_speed`` is 12000 rpm ran it without a word
+    that its bins are a quarter of the case's speed and below (issue 71, round 29 of
+    docs/own_gear_set.md).
+
+    Parameters
+    ----------
+    duty : DutyCycle
+        The spectrum run; only an ``illustrative`` one gets a note.
+    case_speed : float — [rpm]
+        The case's ``[operating] pinion_speed`` (0: no speed given, no note).
+
+    Returns
+    -------
+    str or None
+        The note, naming both speeds and how to give a measured spectrum; None where the
+        spectrum is a user's or its top speed is at or above the case's.
+
+    Notes
+    -----
+    Source: :data:`EXAMPLE_BINS` (the speeds' shares of ``max_speed``); docs/duty_cycle.md.
+    """
+    top = float(np.max(duty.pinion_speed))
+    if not duty.illustrative or not math.isfinite(case_speed) or case_speed <= top:
+        return None
+    return (f"the illustrative bins run at {top:g} ... {float(np.min(duty.pinion_speed)):g} "
+            f"rpm, below the case's [operating] pinion_speed {case_speed:g} rpm: its speed "
+            "factors, film and losses are not the case's; a measured spectrum (--duty FILE "
+            "or a [duty_cycle] table, docs/duty_cycle.md) gives them")
