@@ -210,3 +210,30 @@ def test_a_development_cut_by_its_lte_window_is_not_outclassed(window, raised):
     with pytest.raises(Outclassed):
         development._outclassed({"torques": [30.0, 200.0], "lowered": True,
                                  "lte_torque": WINDOW}, 600.0)
+
+
+@pytest.mark.parametrize("rated", [RATED, 1000.0, math.nan])
+@pytest.mark.parametrize("window", [WINDOW, 300.0, math.nan])
+@pytest.mark.parametrize("torque", [100.0, 268.5, 268.55, 300.0, 612.7, 1449.0])
+def test_cut_below_is_the_rule_failed_outcome_and_outclassed_wrote_inline(rated, window,
+                                                                          torque):
+    """cut_below (branch cpu89) is the one helper of the cut rule that _torque_cut and
+    development._outclassed wrote inline before it: judged against the expressions as they
+    stood (the reference: the smaller finite one of the rated and the window's torque; the
+    stop: no window, or below half of it), exactly (a comparison, no tolerance). 268.55 is
+    half the window's 537.1: not below it."""
+    from contact.optimize import development
+    from contact.optimize.development_process import Outclassed, cut_below
+
+    finite = [t for t in (rated, window) if math.isfinite(t)]
+    ref = min(finite) if finite else math.nan
+    assert cut_below(torque, rated, window) == (math.isfinite(ref) and torque < 0.5 * ref)
+    stopped = torque < 600.0 and not torque >= 0.5 * window  # _outclassed's former rule
+    setup = {"torques": [0.15 * torque, torque], "lowered": True, "lte_torque": window}
+    if stopped:
+        with pytest.raises(Outclassed):
+            development._outclassed(setup, 600.0)
+    else:
+        development._outclassed(setup, 600.0)
+    result = _outcome("Generate", torque=torque, lte_torque=window)
+    assert bool(failed_outcome(result, rated)) == cut_below(torque, rated, window)

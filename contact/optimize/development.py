@@ -1128,12 +1128,16 @@ def _outclassed(setup: dict[str, Any], below: float) -> None:
     written_lte_capacity`) and it is not below
     :data:`~contact.optimize.development_process.TORQUE_CUT_FRACTION` of that: such a cut
     is the contact ratio's, no failed outcome, and may rank above the design compared
-    with (:func:`~contact.optimize.development_process.failed_outcome`)."""
-    from contact.optimize.development_process import TORQUE_CUT_FRACTION, Outclassed
+    with (:func:`~contact.optimize.development_process.failed_outcome`; the half judged
+    by :func:`~contact.optimize.development_process.cut_below`, as that does)."""
+    from contact.optimize.development_process import Outclassed, cut_below
 
     torque = float(setup["torques"][1])
     window = float(setup.get("lte_torque", math.nan))
-    if setup["lowered"] and torque < below and not torque >= TORQUE_CUT_FRACTION * window:
+    # (a torque the window lowered stops only where it is cut below half of the window's
+    # torque, judged as failed_outcome judges it; no rated torque here)
+    if (setup["lowered"] and torque < below
+            and (math.isnan(window) or cut_below(torque, math.nan, window))):
         raise Outclassed(torque)
 
 

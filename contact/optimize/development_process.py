@@ -36,6 +36,7 @@ cut_foreseen          whether a pitting bound foresees the Formate design's torq
 CutForeseen           a Formate development stopped there
 failed_outcome        why a developed design fails its own check (empty where it does not)
 cut_reference         the torque a cut is judged against: the rated one or the LTE window's
+cut_below             whether a design torque is below the cut fraction of that reference
 lte_over              the written design's LTE p-p above ltca run's limit, in words
 outclassing_torque    the design torque below which a second development cannot win
 Outclassed            a development stopped there
@@ -58,8 +59,8 @@ from geometry.core.errors import InputError
 from geometry.core.text import plain_number
 
 __all__ = ["FORESEEN_CUT_MARGIN", "TORQUE_CUT_FRACTION", "CutForeseen", "Outclassed",
-           "better_outcome", "cut_foreseen", "cut_reference", "failed_outcome", "lte_over",
-           "outclassing_torque", "with_generated_gear"]
+           "better_outcome", "cut_below", "cut_foreseen", "cut_reference", "failed_outcome",
+           "lte_over", "outclassing_torque", "with_generated_gear"]
 
 log = logging.getLogger(__name__)
 
@@ -169,7 +170,8 @@ def _torque_cut(result: Any, rated: float) -> str:
     out = []
     cut = float(result.torque[1])
     ref = cut_reference(result, rated)
-    if result.torque_lowered and math.isfinite(ref) and cut < TORQUE_CUT_FRACTION * ref:
+    if result.torque_lowered and cut_below(cut, rated,
+                                           float(getattr(result, "lte_torque", math.nan))):
         of = (f"{plain_number(ref)} N m, the drive LTE window's (rated {plain_number(rated)} N m)"
               if ref < rated else f"{plain_number(rated)} N m")
         out.append(f"design torque cut to {plain_number(cut)} of {of} (below "
@@ -208,8 +210,47 @@ def cut_reference(result: Any, rated: float) -> float:
     (below 0.5 of the rated torque) it developed the Formate gear in full (396.5 s CPU),
     kept at 612.7 N·m with drive / coast LTE 73 / 106 µrad. Source: issue 71.
     """
-    window = float(getattr(result, "lte_torque", math.nan))
-    finite = [t for t in (float(rated), window) if math.isfinite(t)]
+    return _reference(rated, float(getattr(result, "lte_torque", math.nan)))
+
+
+def cut_below(torque: float, rated: float, window: float) -> bool:
+    """Whether a design torque is a cut: below :data:`TORQUE_CUT_FRACTION` × the smaller of
+    the rated torque and the torque the drive LTE window set (:func:`cut_reference`'s
+    rule, the one :func:`failed_outcome`, :func:`outclassing_torque` and
+    :func:`contact.optimize.development._outclassed` judge a cut by).
+
+    Parameters
+    ----------
+    torque : float — [N·m]
+        The design torque judged.
+    rated : float — [N·m]
+        The rated torque (the ISO 10300 capacity or the basic file's); NaN: not known;
+        ``math.nan`` for the window alone (a development's own stop,
+        :func:`contact.optimize.development._outclassed`).
+    window : float — [N·m]
+        The torque the drive LTE window set (``lte_torque``); NaN: none.
+
+    Returns
+    -------
+    bool
+        ``torque < TORQUE_CUT_FRACTION × cut_reference``, the smaller of the finite ones
+        of ``rated`` and ``window``; False where neither is finite (no reference: no cut).
+
+    Notes
+    -----
+    Source: issue 71 (branch half88's rule (a), docs/synthesis.md "An LTE-window cut is no
+    failed outcome": a cut is judged against the LTE window's torque, the contact ratio's,
+    where that is below the rated one); one helper for the failed outcome and the
+    ``Outclassed`` stop (branch cpu89, no behaviour change).
+    """
+    ref = _reference(rated, window)
+    return math.isfinite(ref) and float(torque) < TORQUE_CUT_FRACTION * ref
+
+
+def _reference(rated: float, window: float) -> float:
+    """[N·m] The smaller of the finite ones of ``rated`` and ``window``; NaN where neither
+    is (:func:`cut_reference`, :func:`cut_below`)."""
+    finite = [float(t) for t in (rated, window) if math.isfinite(float(t))]
     return min(finite) if finite else math.nan
 
 
@@ -349,9 +390,9 @@ def outclassing_torque(first: Any, rated: float) -> float:
         As :func:`failed_outcome`.
     """
     torque = float(first.torque[1])
-    ref = cut_reference(first, rated)
-    if (not first.torque_lowered or not math.isfinite(ref)
-            or not torque < TORQUE_CUT_FRACTION * ref or lte_over(first)):
+    if (not first.torque_lowered
+            or not cut_below(torque, rated, float(getattr(first, "lte_torque", math.nan)))
+            or lte_over(first)):
         return math.nan
     return torque
 
