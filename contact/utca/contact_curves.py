@@ -586,7 +586,7 @@ _SHORT_ITER = 4  # grids locating a short curve: 8^-4 ≈ 2e-4 of two coarse ste
 _REFINE_POINTS, _REFINE_ITER = 17, 4  # grids refining the shift: 8^-4 ≈ 2e-4 of the first
 
 
-def _probe_shift(f: EaseOffFields, t: np.ndarray):
+def _probe_shift(f: EaseOffFields, t: np.ndarray, phase: float = 0.0):
     """Iso-line shifts t_b for roll values whose iso-line Q = t misses the contact region.
 
     The shift minimises UTE_seed(t + t_b) + ½ K t_b² (K > 0 at the contact point). It is
@@ -594,7 +594,8 @@ def _probe_shift(f: EaseOffFields, t: np.ndarray):
     kept where |t_b| ≤ :data:`_MAX_SHIFT` pitches, then refined on the curves themselves
     by successive grids (the cost is infinite where the iso-line misses: the minimum often
     sits where it starts to meet a corner of the region), so that t_b varies continuously
-    with t.
+    with t. ``phase`` [1] moves the grids' places by that share of the last grid's step
+    (default 0; the shifts found do not depend on it to 1e-12 rad, :func:`_feasible_edge`).
 
     Returns
     -------
@@ -640,10 +641,10 @@ def _probe_shift(f: EaseOffFields, t: np.ndarray):
     def grid_cost(rows, x):
         return cost(np.repeat(tb[rows], x.shape[1]), x.ravel()).reshape(x.shape)
 
-    d_star, found = _grid_minimum(grid_cost, d0[cand] - 2 * dq, d0[cand] + 2 * dq, d0[cand],
-                                  _REFINE_ITER)
     # the last grid's step (the bracket 4 dq narrowed by 2/(n - 1) at each pass)
     step = 4 * dq * (2 / (_REFINE_POINTS - 1)) ** (_REFINE_ITER - 1) / (_REFINE_POINTS - 1)
+    mid = d0[cand] + phase * step
+    d_star, found = _grid_minimum(grid_cost, mid - 2 * dq, mid + 2 * dq, mid, _REFINE_ITER)
     d_star = _feasible_edge(grid_cost, d_star, found, step)
     return cand[found], d_star[found]
 
