@@ -1002,17 +1002,13 @@ def _regained(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTarge
     held = tolerant_raise(case, targets, setup, teeth, best.values, new, say)
     tolerance = ""
     if not held.holds:
-        if held.why or not held.torque > 1.01 * torque:
-            why = held.why or (f"the mounting tolerance it has at {plain_number(torque)} N m holds "
-                               f"up to {plain_number(held.torque)} N m only (not at "
-                               f"{plain_number(held.fails)}; at {plain_number(new)} N m "
-                               f"{'; '.join(held.lost)})")
-            say(f"  design torque not raised {plain_number(torque)} -> {plain_number(new)} N m on "
-                f"the bearing developed at it: {why}")
-            return best, root_text, root_safety
-        # below the capacity found: every criterion holds there (S falls with T)
-        up = _raised_to(case, best, targets, setup, held.torque, torque, say,
-                        " (the mounting tolerance's)")
+        why = held.why or (f"the mounting tolerance it has at {plain_number(torque)} N m holds "
+                           f"up to {plain_number(held.torque)} N m only (not at "
+                           f"{plain_number(held.fails)}; at {plain_number(new)} N m "
+                           f"{'; '.join(held.lost)})")
+        up = _lowered_raise(case, best, targets, setup, torque, new,
+                            math.nan if held.why else held.torque, why,
+                            " (the mounting tolerance's)", say)
         if up is None:
             return best, root_text, root_safety
         raised, torques, capacity, safety = up
@@ -1026,14 +1022,9 @@ def _regained(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTarge
     kept = lte_kept_raise(best, raised, targets, setup, teeth, list(torques), say)
     window = ""
     if kept.torque < new:
-        if not kept.torque > 1.01 * torque:
-            say(f"  design torque not raised {plain_number(torque)} -> {plain_number(new)} N m "
-                f"on the bearing developed at it: it would lose the drive LTE limit it keeps "
-                f"({kept.why})")
-            return best, root_text, root_safety
-        # below the capacity found: every criterion holds there (S falls with T)
-        up = _raised_to(case, best, targets, setup, kept.torque, torque, say,
-                        " (the LTE window's)")
+        up = _lowered_raise(case, best, targets, setup, torque, new, kept.torque,
+                            f"it would lose the drive LTE limit it keeps ({kept.why})",
+                            " (the LTE window's)", say)
         if up is None:
             return best, root_text, root_safety
         raised, torques, capacity, safety = up
@@ -1053,6 +1044,21 @@ def _regained(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTarge
     if window:  # the LTE window set it (development_process.cut_reference)
         setup["lte_torque"] = float(new)
     return raised, source, safety
+
+
+def _lowered_raise(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                   setup: dict[str, Any], torque: float, new: float, limit: float, why: str,
+                   what: str, say: Callable[[str], None]
+                   ) -> tuple[DevelopmentEvaluation, tuple, float, float] | None:
+    """:func:`_regained`'s raise from ``torque`` [N·m] ended below the capacity ``new``
+    [N·m] at ``limit`` [N·m] (the mounting tolerance's or the LTE window's: every capacity
+    criterion holds there, S falls with T): :func:`_raised_to` that torque, or None —
+    said with ``why`` — where ``limit`` is not above 1.01 × ``torque`` (NaN: refused)."""
+    if not limit > 1.01 * torque:
+        say(f"  design torque not raised {plain_number(torque)} -> {plain_number(new)} N m on "
+            f"the bearing developed at it: {why}")
+        return None
+    return _raised_to(case, best, targets, setup, limit, torque, say, what)
 
 
 def _raised_to(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTargets,
