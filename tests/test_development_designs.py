@@ -299,7 +299,12 @@ def test_user_design_synthesised_developed_run_and_rated(basic, tmp_path, capsys
 # hypoid's beta_m remedy now misses the pattern length the development keeps (len81), so
 # its face width is kept; the spiral bevel's beta_m remedy keeps 60.9 urad between the
 # torques against the face width's 62.5, with no target lost, so it is kept.
-REMEDIED = {"spiral_bevel_15x28_s110": ("beta_m", 35.0, 43.9, 60.9),
+# Measured 2026-11-28 at 10690213 (spline89's ease-off cut at relief corners, regain89's
+# raise that keeps the LTE window): the spiral bevel's first remedy, the face width b2
+# 28 -> 36.5 mm, now keeps 59.3 urad between the torques (drive 14.6 / 44.1 urad at
+# 123.6 / 824.3 N m, coast 47.7 / 53.9 and 55.7 between; ATTENTION 3, no FAIL), so the
+# next remedy (beta_m) is not developed.
+REMEDIED = {"spiral_bevel_15x28_s110": ("b2", 28.0, 36.5, 59.3),
             "hypoid_15x31_a10": ("b2", 27.0, 32.6, 63.3)}
 
 
