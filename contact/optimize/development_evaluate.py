@@ -46,6 +46,7 @@ from contact.optimize.development_targets import (
     HEIGHT_NAME,
     METRIC_NAMES,
     RELIEF_NAMES,
+    STAGE_TERMS,
     DevelopmentTargets,
     development_score,
     footprint_centre,
@@ -549,13 +550,45 @@ def bearing_key(values: Mapping[str, float]) -> tuple:
                         if k not in (*RELIEF_NAMES, HEIGHT_NAME, CROWNING_NAME)))
 
 
+def met_text(e: DevelopmentEvaluation) -> str:
+    """What ``e.met`` means, for its progress line: ``" (all targets met)"`` where its
+    stage scores every target, ``" (the <stage> stage's targets met; <keys> left to the
+    later stages)"`` where it scores fewer (the bearing stage leaves the edges, the
+    plastic share, the centre v to the relief, :data:`~contact.optimize.
+    development_targets.STAGE_TERMS`), empty where not met.
+
+    Parameters
+    ----------
+    e : DevelopmentEvaluation
+        A scored design (its ``met`` and ``stage``).
+
+    Returns
+    -------
+    str
+        The parenthesis, with its leading space, or empty.
+
+    Notes
+    -----
+    Source: round 29 (docs/own_gear_set.md): the 13x50's bearing stage said "(all targets
+    met)" of a design carrying 1.7 % of its torque plastic (issue 71, branch tol89).
+    """
+    if not e.met:
+        return ""
+    terms = STAGE_TERMS.get(e.stage)
+    left = [k for k in STAGE_TERMS["relief"] if terms is not None and k not in terms]
+    if not left:
+        return " (all targets met)"
+    return f" (the {e.stage} stage's targets met; {', '.join(left)} left to the later stages)"
+
+
 def evaluation_line(e: DevelopmentEvaluation, n: int, stage: str = "relief") -> str:
     """The progress line of design ``e`` of at most ``n`` at ``stage``: its values, then
-    its metrics and objective (or why it failed) and its CPU seconds."""
+    its metrics and objective (or why it failed), what its targets met are
+    (:func:`met_text`) and its CPU seconds."""
     vals = ", ".join(f"{k} {v:.3g}" for k, v in e.values.items())
     if e.reason:
         return f"  {stage} design {e.index + 1}/{n}: {vals}: failed ({e.reason})"
     return (f"  {stage} design {e.index + 1}/{n}: {vals}: {metrics_text(e.metrics)}; "
-            f"objective {e.objective:.3g}{' (all targets met)' if e.met else ''} "
+            f"objective {e.objective:.3g}{met_text(e)} "
             f"[{e.seconds:.0f} s]")
 

@@ -16,6 +16,9 @@ from typing import Any
 from contact.optimize.development_evaluate import KeptTeeth
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import DevelopmentTargets
+from contact.optimize.development_tolerance import (
+    less_intolerant_variant as _less_intolerant_variant,
+)
 from contact.optimize.development_tolerance import tolerant_variant as _tolerant_variant
 from contact.optimize.development_variant import check_rank as _check_rank
 from contact.optimize.development_variant import lte_fails as _lte_fails
@@ -206,7 +209,10 @@ def kept_why(best: DevelopmentEvaluation, e: DevelopmentEvaluation | None,
     tolerant : bool, optional
         Ask last whether ``e`` is tolerant (:func:`_tolerant_variant`: the mounting
         excursions, up to four coarse analyses, so asked only where every other rule
-        keeps it); default True.
+        keeps it); where it is not, it still replaces a ``best`` that is not tolerant
+        either and misses no more at any excursion (:func:`~contact.optimize.
+        development_tolerance.less_intolerant_variant`: the worst toe, heel, edge and
+        plastic shortfalls, issue 71, branch tol89); default True.
 
     Returns
     -------
@@ -257,6 +263,7 @@ def kept_why(best: DevelopmentEvaluation, e: DevelopmentEvaluation | None,
         return "it scores no better"
     if not lost_first and (why := missed()):
         return why
-    if tolerant and not _tolerant_variant(e, targets, setup, teeth, say):
+    if (tolerant and not _tolerant_variant(e, targets, setup, teeth, say)
+            and not _less_intolerant_variant(best, e, targets, setup, teeth, say)):
         return "not tolerant at dE/dP +/-0.05 mm"
     return ""

@@ -156,6 +156,116 @@ def tolerant_variant(e: DevelopmentEvaluation, targets: DevelopmentTargets,
     return not _missed_excursion(tolerance, say)
 
 
+def worst_shortfalls(tolerance: Mapping[str, tuple[Mapping, Mapping[str, float]]]
+                     ) -> dict[str, float]:
+    """The worst shortfall of each of :data:`TOLERANCE_KEYS` over the mounting excursions
+    of ``tolerance``.
+
+    Parameters
+    ----------
+    tolerance : mapping label → (metrics, shortfalls)
+        :func:`tolerance_checks` of one design (every excursion; shortfalls [1], as
+        :func:`~contact.optimize.development_targets.development_score`'s, inf where an
+        excursion's analysis failed).
+
+    Returns
+    -------
+    dict str → float
+        Per key of :data:`TOLERANCE_KEYS` (toe, heel, edge, plastic) its largest shortfall
+        [1] over the excursions; 0 where none misses it (and where ``tolerance`` is empty).
+
+    Notes
+    -----
+    Source: the issue-71 development's tolerance (docs/synthesis.md, "Development bearing";
+    the excursions ΔE, ΔP ± the targets' tolerances).
+    """
+    return {k: max((float(short[k]) for _, short in tolerance.values()), default=0.0)
+            for k in TOLERANCE_KEYS}
+
+
+def no_more_intolerant(kept: Mapping[str, float], variant: Mapping[str, float]) -> bool:
+    """Whether a variant not tolerant misses no more at the mounting excursions than the
+    design kept, which is not tolerant either: the keep rule's second preference
+    (:func:`less_intolerant_variant`; the first is a tolerant variant).
+
+    Parameters
+    ----------
+    kept, variant : mapping str → float
+        :func:`worst_shortfalls` of the design kept and of its variant (per key of
+        :data:`TOLERANCE_KEYS`, [1]).
+
+    Returns
+    -------
+    bool
+        True where ``kept`` misses one of :data:`TOLERANCE_KEYS` (a shortfall > 0) and
+        every shortfall of ``variant`` is finite and no larger than ``kept``'s; False
+        where ``kept`` is tolerant (only a tolerant variant replaces it), where the
+        variant misses a key more or one the kept design meets, or where its analysis
+        failed (inf).
+
+    Notes
+    -----
+    Source: round 29 (docs/own_gear_set.md, the spiral bevel 13x50 m_et 6 at 700 N m):
+    the check step refused a variant of LTE 28 µrad without plastic as "not tolerant",
+    keeping a design not tolerant either (edge 3.0 %, plastic 0.7 % at ΔE/ΔP ±0.05 mm);
+    issue 71, branch tol89 (docs/synthesis.md, "The check step: a variant less intolerant
+    than the kept design").
+    """
+    if not any(float(kept.get(k, 0.0)) > 0.0 for k in TOLERANCE_KEYS):
+        return False
+    return all(math.isfinite(float(variant.get(k, math.inf)))
+               and float(variant.get(k, math.inf)) <= float(kept.get(k, 0.0))
+               for k in TOLERANCE_KEYS)
+
+
+def less_intolerant_variant(best: DevelopmentEvaluation, e: DevelopmentEvaluation,
+                            targets: DevelopmentTargets, setup: Mapping[str, Any],
+                            teeth: KeptTeeth | None, say: Callable[[str], None]) -> bool:
+    """Whether a check step's design ``e``, not tolerant (:func:`tolerant_variant`), may
+    still replace ``best``: ``best`` is not tolerant either and ``e`` misses no more at
+    any mounting excursion (:func:`no_more_intolerant` of their :func:`worst_shortfalls`).
+    Asked by the keep rule (:func:`~contact.optimize.development_keep.kept_why`) only
+    where ``e`` already ranks better on its nominal targets and gives up none ``best``
+    met.
+
+    Parameters
+    ----------
+    best : DevelopmentEvaluation
+        The design kept so far (its ``case`` and ``values`` [file units]).
+    e : DevelopmentEvaluation
+        The step's design, checked, not tolerant.
+    targets : DevelopmentTargets
+        The development's targets (``offset_tolerance``, ``mounting_tolerance`` [mm]).
+    setup : mapping
+        The development's state (``torques`` [N·m], ``centre_v`` [1], the memos).
+    teeth : KeptTeeth or None
+        The kept pinion teeth.
+    say : callable str → None
+        Where the comparison's line goes.
+
+    Returns
+    -------
+    bool
+        Whether ``e`` replaces ``best`` though not tolerant. Costs at most every
+        excursion of both designs not yet analysed (:func:`tolerance_checks` keeps them).
+
+    Notes
+    -----
+    Source: round 29 (docs/own_gear_set.md; the scratch rule measured there); issue 71,
+    branch tol89.
+    """
+    if best.case is None or e.case is None:
+        return False
+    kept = worst_shortfalls(tolerance_checks(best.case, targets, setup, teeth, best.values))
+    variant = worst_shortfalls(tolerance_checks(e.case, targets, setup, teeth, e.values))
+    if not no_more_intolerant(kept, variant):
+        return False
+    say("  kept though not tolerant: at the mounting excursions it misses no more than "
+        "the design it replaces (worst shortfall "
+        + ", ".join(f"{k} {variant[k]:.3g} <= {kept[k]:.3g}" for k in TOLERANCE_KEYS) + ")")
+    return True
+
+
 #: the tolerance step's reliefs (:func:`checked_tolerance`): the chosen design's tip, then
 #: root relief raised by this factor, at least by :data:`TOLERANCE_RELIEF_STEP` µm
 TOLERANCE_RELIEF = 1.5
