@@ -712,8 +712,9 @@ def _feasible_edge(grid_cost, x: np.ndarray, found: np.ndarray, step: float) -> 
         j = np.where(ok.any(axis=1), np.argmax(ok, axis=1), n - 1)
         hit = ok.any(axis=1)
         new_in = np.where(hit, x_mid[np.arange(r.size), np.minimum(j, n - 2)], inside)
+        # (no hit: j = n - 1, so the new outside is the last place, x_mid[:, -1])
         new_out = np.where(j > 0, x_mid[np.arange(r.size), np.maximum(j - 1, 0)], outside)
-        inside, outside = new_in, np.where(hit, new_out, x_mid[:, -1])
+        inside, outside = new_in, new_out
     better = grid_cost(r, inside[:, None])[:, 0] <= c[edge, 1]
     x = x.copy()
     x[r[better]] = inside[better]
