@@ -472,15 +472,20 @@ def _edge_contact_points(eo: EaseOff, bd: FlankBoundary, q: np.ndarray, ee: np.n
     q = q[:, None]  # (n, 1) roll value of the candidate's pair
     phi = eo.roll_zero + eo.drive_sense * q[:, 0]  # (n,) pinion rotation
     psi = eo.gear_phase - phi / eo.ratio
-    pts = gear_to_pair(kin, psi[:, None], bd.position[ee])  # (n, 3, 3)
     g = bd.gear_edge[ee]
-    if np.any(~g):
-        q_m = bd.roll_angle[ee[~g]]  # (np, 3) mate instants
-        phi_m = eo.roll_zero + eo.drive_sense * q_m
-        mate = gear_to_pair(kin, eo.gear_phase - phi_m / eo.ratio, bd.position[ee[~g]])
-        turn = eo.drive_sense * (q[~g] - q_m)
-        pts[~g] = rotate_about_axis(kin.pinion_axis, turn, mate - kin.pinion_origin) + \
-            kin.pinion_origin
+    pts = np.empty((ee.size, 3, 3))  # (n, 3, 3)
+    if np.any(g):
+        pts[g] = gear_to_pair(kin, psi[g, None], bd.position[ee[g]])
+    if not np.all(g):
+        pe = ~g
+        # a pinion edge's mate depends on its boundary segment alone: each distinct
+        # segment's once (the candidates repeat them over rolls and pairs, issue 75)
+        seg, back = np.unique(ee[pe], return_inverse=True)
+        phi_m = eo.roll_zero + eo.drive_sense * bd.roll_angle[seg]  # (m, 3) mate instants
+        mate = gear_to_pair(kin, eo.gear_phase - phi_m / eo.ratio, bd.position[seg])
+        turn = eo.drive_sense * (q[pe] - bd.roll_angle[ee[pe]])
+        pts[pe] = rotate_about_axis(kin.pinion_axis, turn,
+                                    mate[back.ravel()] - kin.pinion_origin) + kin.pinion_origin
     return pts, phi, psi, g
 
 
