@@ -1,6 +1,6 @@
 """The gear flank point under pair-frame points (:func:`contact.ltca.edges.gear_flank_under`,
 issue 75 item 4, helper study90: its Gauss–Newton steps' 2 × 2 normal equations solved in
-closed form instead of a batched LAPACK solve).
+closed form instead of a batched LAPACK solve), and the edge candidates' contact points.
 
 Independent checks, on the default case's ease-off (its real gear flank splines):
 - points built off the flank along its normal at known places: the foot found is a
@@ -12,7 +12,9 @@ Independent checks, on the default case's ease-off (its real gear flank splines)
   out here, the function's arithmetic before study90) to 1e-12 of the grid in (u, v) and
   1e-10 mm in position: the closed form differs from LU with pivoting by round-off per step,
   and both stop within one step of 1e-13;
-- a degenerate flank place (x_u ∥ x_v) raises numpy's LinAlgError, as the LAPACK solve did.
+- a degenerate flank place (x_u ∥ x_v) raises numpy's LinAlgError, as the LAPACK solve did;
+- ``_edge_contact_points`` (each pinion edge's mate once per boundary segment) gives every
+  candidate's points as the formula applied to that candidate alone, bit for bit.
 """
 
 from __future__ import annotations
@@ -136,3 +138,37 @@ def test_degenerate_place_raises_as_lapack_did():
     with pytest.raises(np.linalg.LinAlgError):
         gear_flank_under(Flat(), kin, np.zeros(2), np.array([[0.5, 0.1, 0.0]] * 2),
                          np.array([0.3, 0.4]), np.array([0.3, 0.4]))
+
+
+def test_edge_contact_points_as_each_candidate_alone():
+    """``_edge_contact_points`` (each gear edge turned alone, each distinct pinion-edge
+    mate once, study90) gives, for every candidate, the points of the formula applied to
+    that candidate alone — the boundary point in the pair frame at the candidate's roll (a
+    gear edge), or its mate at Q turned on with the pinion by s_p (q − Q) (a pinion
+    edge) — bit for bit: the same element-wise arithmetic."""
+    from contact.ltca.edges import _edge_contact_points, flank_boundary
+
+    eo, f = _setup()
+    bd = flank_boundary(f, 0.25)
+    kin = eo.kinematics
+    rng = np.random.default_rng(7)
+    ee = rng.integers(0, bd.kind.size, 400)
+    ee[200:] = ee[:200]  # candidates repeat their boundary segments
+    q = rng.uniform(-0.5, 0.5, ee.size) * eo.pitch
+    assert np.any(bd.gear_edge[ee]) and not np.all(bd.gear_edge[ee])
+    pts, phi, psi, g = _edge_contact_points(eo, bd, q, ee)
+    for i in range(ee.size):
+        e = ee[i:i + 1]
+        phi_i = eo.roll_zero + eo.drive_sense * q[i:i + 1]
+        psi_i = eo.gear_phase - phi_i / eo.ratio
+        if bd.gear_edge[e[0]]:
+            want = gear_to_pair(kin, psi_i[:, None], bd.position[e])
+        else:
+            q_m = bd.roll_angle[e]
+            mate = gear_to_pair(kin, eo.gear_phase - (eo.roll_zero + eo.drive_sense * q_m)
+                                / eo.ratio, bd.position[e])
+            want = rotate_about_axis(kin.pinion_axis, eo.drive_sense * (q[i] - q_m),
+                                     mate - kin.pinion_origin) + kin.pinion_origin
+        np.testing.assert_array_equal(pts[i:i + 1], want)
+        assert phi[i] == phi_i[0] and psi[i] == psi_i[0]
+    np.testing.assert_array_equal(g, bd.gear_edge[ee])
