@@ -387,8 +387,10 @@ def gear_flank_under(fields, kin, psi: np.ndarray, points: np.ndarray, u: np.nda
     Gauss–Newton on (x(u, v) − p)·x_u = (x(u, v) − p)·x_v = 0, p the point in the gear
     frame (turned back by ψ); the splines' own derivatives. A point beyond the grid (a
     pinion edge past the gear flank's computed part, far from contact) gets the nearest
-    grid edge's place. Checked in tests/test_plastic_edges.py: the force along the normal
-    at g through the pinion edge point balances the gear torque with the others. These
+    grid edge's place. Each step's 2 × 2 normal equations are solved in closed form
+    (Cramer's rule; where JᵀJ is singular LAPACK's solve raises, as it did for all).
+    Checked in tests/test_plastic_edges.py: the force along the normal at g through the
+    pinion edge point balances the gear torque with the others. These
     are the normal equations of min ‖x(u, v) − p‖² over the flank's parameters, a
     nonlinear least-squares problem (Gauss–Newton: Nocedal & Wright, Numerical
     Optimization, 2nd ed., Springer 2006, ch. 10).
@@ -396,26 +398,37 @@ def gear_flank_under(fields, kin, psi: np.ndarray, points: np.ndarray, u: np.nda
     f = fields
     p = rotate_about_axis(kin.gear_axis, -psi, points - kin.gear_origin) \
         @ kin.gear_place[:3, :3]
-    lo = np.array([f.u[0], f.v[0]])
-    hi = np.array([f.u[-1], f.v[-1]])
-    uv = np.stack([u, v], axis=-1)
-    act = np.arange(uv.shape[0])
+    uu = np.array(u, dtype=float)  # (the iterates: copies, written in place)
+    vv = np.array(v, dtype=float)
+    act = np.arange(uu.size)
     for _ in range(iterations):
         if act.size == 0:
             break
-        ua, va = uv[act, 0], uv[act, 1]
-        x = f.values(("pos",), ua, va)
-        jac = np.stack([f.values(("pos",), ua, va, dx=1),
-                        f.values(("pos",), ua, va, dy=1)], axis=-1)  # (m, 3, 2)
-        jtj = np.einsum("nia,nib->nab", jac, jac)
-        jtr = np.einsum("nia,ni->na", jac, p[act] - x)
-        new = np.clip(uv[act] + np.linalg.solve(jtj, jtr[..., None])[..., 0], lo, hi)
-        step = np.abs(new - uv[act]).max(axis=-1)
-        uv[act] = new
+        ua, va = uu[act], vv[act]
+        r = p[act] - f.values(("pos",), ua, va)  # (m, 3)
+        xu = f.values(("pos",), ua, va, dx=1)
+        xv = f.values(("pos",), ua, va, dy=1)
+        # the normal equations JᵀJ Δ = Jᵀr (J = [x_u x_v], 2 × 2 symmetric) solved in
+        # closed form, each entry one dot product over the three components (issue 75:
+        # ≈ 2 ms of a study point in the batched einsum and LAPACK solve of 2 × 2 systems
+        # it replaces; the same step to round-off, the converged places to ≈ 1e-15)
+        a = np.einsum("ni,ni->n", xu, xu)
+        b = np.einsum("ni,ni->n", xu, xv)
+        c = np.einsum("ni,ni->n", xv, xv)
+        det = a * c - b * b
+        if not np.all(det > 0.0):  # a degenerate flank place: LAPACK's solve says so
+            np.linalg.solve(np.stack([np.stack([a, b], -1), np.stack([b, c], -1)], -1),
+                            np.zeros((a.size, 2, 1)))
+        gu = np.einsum("ni,ni->n", xu, r)
+        gv = np.einsum("ni,ni->n", xv, r)
+        new_u = np.clip(ua + (c * gu - b * gv) / det, f.u[0], f.u[-1])
+        new_v = np.clip(va + (a * gv - b * gu) / det, f.v[0], f.v[-1])
+        step = np.maximum(np.abs(new_u - ua), np.abs(new_v - va))
+        uu[act] = new_u
+        vv[act] = new_v
         # a point whose step fell to _FOOT_STEP leaves the batch (the steps shrink ~100×
         # each: the rest would move it by ~1e-15)
         act = act[step > _FOOT_STEP]
-    uu, vv = uv[:, 0], uv[:, 1]
     both = f.values(("pos", "nrm"), uu, vv)
     pos, nrm = both[:, :3], both[:, 3:]
     nrm /= np.linalg.norm(nrm, axis=-1, keepdims=True)
@@ -459,15 +472,20 @@ def _edge_contact_points(eo: EaseOff, bd: FlankBoundary, q: np.ndarray, ee: np.n
     q = q[:, None]  # (n, 1) roll value of the candidate's pair
     phi = eo.roll_zero + eo.drive_sense * q[:, 0]  # (n,) pinion rotation
     psi = eo.gear_phase - phi / eo.ratio
-    pts = gear_to_pair(kin, psi[:, None], bd.position[ee])  # (n, 3, 3)
     g = bd.gear_edge[ee]
-    if np.any(~g):
-        q_m = bd.roll_angle[ee[~g]]  # (np, 3) mate instants
-        phi_m = eo.roll_zero + eo.drive_sense * q_m
-        mate = gear_to_pair(kin, eo.gear_phase - phi_m / eo.ratio, bd.position[ee[~g]])
-        turn = eo.drive_sense * (q[~g] - q_m)
-        pts[~g] = rotate_about_axis(kin.pinion_axis, turn, mate - kin.pinion_origin) + \
-            kin.pinion_origin
+    pts = np.empty((ee.size, 3, 3))  # (n, 3, 3)
+    if np.any(g):
+        pts[g] = gear_to_pair(kin, psi[g, None], bd.position[ee[g]])
+    if not np.all(g):
+        pe = ~g
+        # a pinion edge's mate depends on its boundary segment alone: each distinct
+        # segment's once (the candidates repeat them over rolls and pairs, issue 75)
+        seg, back = np.unique(ee[pe], return_inverse=True)
+        phi_m = eo.roll_zero + eo.drive_sense * bd.roll_angle[seg]  # (m, 3) mate instants
+        mate = gear_to_pair(kin, eo.gear_phase - phi_m / eo.ratio, bd.position[seg])
+        turn = eo.drive_sense * (q[pe] - bd.roll_angle[ee[pe]])
+        pts[pe] = rotate_about_axis(kin.pinion_axis, turn,
+                                    mate[back.ravel()] - kin.pinion_origin) + kin.pinion_origin
     return pts, phi, psi, g
 
 
