@@ -95,7 +95,7 @@ def main(argv=None) -> int:
     rows = []
     for module_name in KERNEL_MODULES:
         module = sys.modules.get(module_name)
-        for name, f in vars(module or {}).items():
+        for name, f in (vars(module) if module is not None else {}).items():
             if isinstance(f, CPUDispatcher) and f.signatures:
                 rows.append((f"{module_name.rsplit('.', 1)[-1]}.{name}",
                              exclusive.get(f.py_func.__qualname__, 0.0),
