@@ -12,6 +12,17 @@ callees inside its own event). Run it with an empty cache of its own, e.g.::
 
     NUMBA_CACHE_DIR=/tmp/n1 python benchmarks/numba_signatures.py
 
+``--command WORDS…``: run ``ltca WORDS…`` as its own process would (``contact.cli.main``
+without arguments: the command's own kernel choice, e.g. ``ltca synthesize``'s envelope
+only on a fresh cache and ``ltca run``'s NumPy path until the cache holds the kernels;
+``LTCA_KERNELS`` left as the environment sets it), e.g. on one fresh cache (issue 75,
+docs/performance.md "A new design on a fresh numba cache: what is left to compile")::
+
+    export NUMBA_CACHE_DIR=/tmp/n2 HYPOID_LTCA_CACHE=/tmp/fe2
+    python benchmarks/numba_signatures.py --command synthesize \
+        tests/data/designs/pc_hypoid_10x43.toml -o /tmp/case.toml -q
+    python benchmarks/numba_signatures.py --command run /tmp/case.toml -o /tmp/c.nc -q
+
 ``--brief``: the totals and the eight dearest dispatchers only. CPU is this process's
 ``time.process_time``.
 """
@@ -31,8 +42,11 @@ def main(argv=None) -> int:
     parser.add_argument("--synthesize", metavar="FILE",
                         help="run ltca synthesize FILE instead of the default case's analysis")
     parser.add_argument("--brief", action="store_true", help="totals and the dearest only")
+    parser.add_argument("--command", nargs=argparse.REMAINDER, metavar="WORDS",
+                        help="run `ltca WORDS...` as its own process (its own kernel choice)")
     args = parser.parse_args(argv)
-    os.environ["LTCA_KERNELS"] = "numba"
+    if not args.command:
+        os.environ["LTCA_KERNELS"] = "numba"
 
     import numba
     from numba.core import event
@@ -57,7 +71,14 @@ def main(argv=None) -> int:
 
     event.register("numba:compile", Exclusive())
     start = time.process_time()
-    if args.synthesize:
+    if args.command:
+        from contact.cli import main as ltca
+
+        sys.argv = ["ltca", *args.command]
+        status = ltca()  # no arguments: the command is the process (contact.cli.main)
+        if status:
+            print(f"ltca {' '.join(args.command)} returned {status}", file=sys.stderr)
+    elif args.synthesize:
         from contact.cli import main as ltca
 
         with tempfile.TemporaryDirectory() as tmp:
@@ -74,7 +95,7 @@ def main(argv=None) -> int:
     rows = []
     for module_name in KERNEL_MODULES:
         module = sys.modules.get(module_name)
-        for name, f in vars(module or {}).items():
+        for name, f in (vars(module) if module is not None else {}).items():
             if isinstance(f, CPUDispatcher) and f.signatures:
                 rows.append((f"{module_name.rsplit('.', 1)[-1]}.{name}",
                              exclusive.get(f.py_func.__qualname__, 0.0),

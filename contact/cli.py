@@ -325,12 +325,13 @@ def main(argv: Sequence[str] | None = None) -> int:
             stack.enter_context(compile_note_when_compiling(
                 None if args.quiet else compile_note()))
         elif as_process and getattr(args, "one_analysis", False):
-            # one analysis never earns the compile back: the NumPy path until numba's
-            # cache holds the kernels (geometry.core.kernels.prefer_cached, issue 75)
+            # one analysis never earns the compile back, nor on a full cache numba's
+            # import and kernel loading: the NumPy path (geometry.core.kernels.
+            # prefer_numpy, issue 75), the same numbers whatever numba's cache holds
             from geometry.core.heap import keep_heap_pages
-            from geometry.core.kernels import prefer_cached
+            from geometry.core.kernels import prefer_numpy
 
-            prefer_cached()
+            prefer_numpy()
             # its large arrays (the FE build's assembly, loads and solutions) reuse the
             # process's pages: the cold first run's system time 4.2 -> 1.8 s (issue 75)
             keep_heap_pages()

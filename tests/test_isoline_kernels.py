@@ -408,10 +408,11 @@ def test_commands_of_many_analyses_ask_for_the_compiled_kernels():
         assert bool(sub.choices[name].get_default("many_analyses")) is (name in many), name
 
 
-def test_ltca_run_as_its_own_process_takes_auto(monkeypatch):
+def test_ltca_run_as_its_own_process_takes_numpy(monkeypatch):
     """``ltca run`` as the process (the console script, ``python -m contact``: ``main()``
-    without arguments) runs with ``LTCA_KERNELS=auto`` where the user set nothing — one
-    analysis never earns numba's first-use compile back (issue 75) — while the same
+    without arguments) runs with ``LTCA_KERNELS=numpy`` where the user set nothing — one
+    analysis never earns numba's first-use compile back, nor on a full cache its import
+    and kernel loading (issue 75, compile90: docs/performance.md) — while the same
     command called from Python (``main([...])``) leaves the process's default alone (a
     test session or a script keeps one path for all its analyses), and a user's
     ``LTCA_KERNELS`` wins. The command's work is replaced by a probe."""
@@ -434,4 +435,4 @@ def test_ltca_run_as_its_own_process_takes_auto(monkeypatch):
     assert main() == 0
     monkeypatch.setenv("LTCA_KERNELS", "numba")
     assert main() == 0
-    assert seen == [None, "auto", "numba"]
+    assert seen == [None, "numpy", "numba"]

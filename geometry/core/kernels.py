@@ -12,9 +12,14 @@ extra) that runs the same iterations point by point. This module chooses between
 the same way for all: an explicit ``kernels`` argument where a function takes one, else
 the environment variable ``LTCA_KERNELS``, else numba where it is installed.
 
-``auto`` (``LTCA_KERNELS=auto``; the default of ``ltca run`` run as its own process,
-:func:`prefer_cached`) runs the compiled kernels only where numba's cache already holds
-them for this machine (:func:`cache_ready`), and the NumPy path otherwise. Numba
+``auto`` (``LTCA_KERNELS=auto``, opt-in, :func:`prefer_cached`) runs the compiled
+kernels only where numba's cache already holds them for this machine
+(:func:`cache_ready`), and the NumPy path otherwise. ``ltca run`` run as its own process
+takes the NumPy path (:func:`prefer_numpy`): importing numba and loading its cached
+kernels cost more than they save in one run (the 10x43's written case, numba's cache
+full: 4.2 s of CPU on NumPy against 4.9 s compiled at its two torques, 6.0 against 7.1 s
+at nine; docs/performance.md, "A new design on a fresh numba cache: what is left to
+compile"), and the same run gives the same numbers whatever the cache holds. Numba
 compiles the four modules in ≈ 22 s of CPU on their first use (the envelope's Newton
 solve 6.3 s, the iso-line seeds 4.5 s, the block pivoting 4.3 s, measured on the 2-core
 machine with ``numba.core.event``), while a warm ``ltca run`` of the default case costs
@@ -44,7 +49,8 @@ process_choice    ``numpy`` or ``numba``: what this process runs (``auto`` resol
 prefer_compiled   make ``auto`` mean ``numba`` in this process (commands of many analyses),
                   or numba for the modules that pay (``ltca synthesize`` on a fresh cache)
 compiled_modules  the kernel modules this process runs compiled
-prefer_cached     make ``auto`` the default in this process (a command of one analysis)
+prefer_cached     make ``auto`` the default in this process
+prefer_numpy      make ``numpy`` the default in this process (a command of one analysis)
 announce_compiling  log (once per module and process, :data:`COMPILING_LOGGER`) that numba
                   is about to compile a module's kernels
 """
@@ -62,7 +68,7 @@ from geometry.core.errors import InputError
 
 __all__ = ["COMPILING_LOGGER", "KERNELS", "KERNEL_MODULES", "announce_compiling", "cache_ready",
            "compiled_module", "compiled_modules", "kernels_module", "prefer_cached",
-           "prefer_compiled", "process_choice"]
+           "prefer_compiled", "prefer_numpy", "process_choice"]
 
 #: the implementations: ``numpy`` (the reference), ``numba`` (compiled; the ``fast``
 #: extra) and ``auto`` (numba where its cache holds the kernels, :func:`cache_ready`)
@@ -293,14 +299,32 @@ def _handed(module: ModuleType | None, name: str) -> ModuleType | None:
 def prefer_cached() -> None:
     """Make ``auto`` the choice of this process (and the processes it starts): the
     compiled kernels where numba's cache holds them (:func:`cache_ready`), the NumPy path
-    otherwise — for a command of one analysis run as its own process (``ltca run``),
-    which never earns numba's ≈ 22 s of first-use compiling back (docs/performance.md,
-    "Compiled kernels"). Sets ``LTCA_KERNELS=auto`` where it is unset; a user's
-    ``LTCA_KERNELS`` wins. Called by the command-line layer only, and only where the
-    command is the process (not for ``contact.cli.main`` called with arguments from
-    Python, whose process keeps one path for all its analyses)."""
+    otherwise (opt-in; ``ltca run`` took it as its own process's default until issue 75's
+    compile90 measured the NumPy path cheaper even on a full cache, :func:`prefer_numpy`).
+    Sets ``LTCA_KERNELS=auto`` where it is unset; a user's ``LTCA_KERNELS`` wins. For
+    a command layer only, where the command is the process (not for ``contact.cli.main``
+    called with arguments from Python, whose process keeps one path for all its
+    analyses)."""
     if not os.environ.get("LTCA_KERNELS"):
         os.environ["LTCA_KERNELS"] = "auto"
+
+
+def prefer_numpy() -> None:
+    """Make the NumPy path the choice of this process (and the processes it starts) where
+    the user set no ``LTCA_KERNELS``: for a command of one analysis run as its own
+    process (``ltca run``). One analysis never earns numba's first-use compile back (≈ 20 s
+    of CPU, docs/performance.md "Compiled kernels"), and on a full cache importing numba
+    and loading the kernels cost more than they save: the 10x43 new design's ``ltca run``
+    4.2 s of CPU on NumPy against 4.9 s compiled (two torques, four alternated pairs), 6.0
+    against 7.1 s at nine torques (two pairs) (docs/performance.md, "A new design on a fresh numba
+    cache: what is left to compile", issue 75). The run's numbers then do not depend on
+    what numba's cache holds (issue 71; the paths agree to round-off, ≤ 4.2e-10 of each
+    variable's largest value there). Sets ``LTCA_KERNELS=numpy`` where it is unset; a
+    user's ``LTCA_KERNELS`` wins. Called by the command-line layer only, and only where the
+    command is the process (``contact.cli.main([...])`` called from Python leaves the
+    process's default alone)."""
+    if not os.environ.get("LTCA_KERNELS"):
+        os.environ["LTCA_KERNELS"] = "numpy"
 
 
 def kernels_module(name: str, kernels: str | None = None) -> ModuleType | None:
