@@ -869,6 +869,7 @@ def _lte(lt: xr.Dataset, rating: xr.Dataset | None, limit: float) -> list[Findin
                            "their limits, set it; docs/verdicts.md)"
                            + (f"; {ratios}" if ratios else "")
                            + (_deflection_share(lt, t, pp, limit) if mine else "")
+                           + (_unloaded_clause(lt, limit) if mine else "")
                            + (_within_clause(lt, limit, design, float(t))
                               if float(t) == max(above_at) else "")))
     return out
@@ -923,6 +924,32 @@ def _deflection_share(lt: xr.Dataset, torque: float, pp: float, limit: float) ->
     return (f"; the teeth's mean deflection there {deflection:.0f} µrad (the mean loaded "
             f"TE less the unloaded), the LTE {100 * pp / deflection:.1f} % of it, "
             f"{100 * limit / deflection:.1f} % within the limit")
+
+
+def _unloaded_clause(lt: xr.Dataset, limit: float) -> str:
+    """The ``lte`` finding's clause on the flank's unloaded TE where its peak-to-peak
+    [µrad] (of ``unloaded_transmission_error`` over the mesh cycle's rolls) exceeds
+    ``limit`` already: the written bearing's unloaded motion, not the teeth's deflection
+    or the load sharing, then sets the LTE at light load; empty where the tree has no
+    unloaded TE or it keeps the limit. Issue 71, round 30 (the spiral bevel 14x21 at
+    Σ 125°, ε_vβ 0.86): ``ltca synthesize``'s note said "the written drive flank's
+    unloaded TE p-p is 129 urad ... that, not the contact ratios, sets its LTE p-p
+    107/114 urad", while ``ltca run``'s finding at 22.5 N·m named the contact ratios and
+    the deflection (233 µrad, "the LTE 45.9 % of it") alone: the same design, two
+    diagnoses. Source: the unloaded TE p-p ``ltca synthesize``'s note checks
+    (:mod:`contact.optimize.development_remedy`; the same variable: 129 µrad both)."""
+    if "unloaded_transmission_error" not in lt:
+        return ""
+    ute = np.asarray(lt["unloaded_transmission_error"].values, float)
+    if not np.isfinite(ute).any():
+        return ""
+    spread = float(np.nanmax(ute) - np.nanmin(ute))
+    if not spread > limit:
+        return ""
+    return (f"; the flank's unloaded TE p-p is {spread:.0f} µrad, above the {limit:g} µrad "
+            "before any load: the written bearing's unloaded motion (its [synthesis] "
+            "prescriptions' TE level, path angle and ellipse length) exceeds the limit "
+            "before the teeth deflect (ltca synthesize's note checks what lowers it)")
 
 
 def _contact_ratios(lt: xr.Dataset, rating: xr.Dataset | None, torque: float) -> str:
