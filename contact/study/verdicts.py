@@ -929,15 +929,19 @@ def _deflection_share(lt: xr.Dataset, torque: float, pp: float, limit: float) ->
 def _unloaded_clause(lt: xr.Dataset, limit: float) -> str:
     """The ``lte`` finding's clause on the flank's unloaded TE where its peak-to-peak
     [µrad] (of ``unloaded_transmission_error`` over the mesh cycle's rolls) exceeds
-    ``limit`` already: the written bearing's unloaded motion, not the teeth's deflection
-    or the load sharing, then sets the LTE at light load; empty where the tree has no
-    unloaded TE or it keeps the limit. Issue 71, round 30 (the spiral bevel 14x21 at
-    Σ 125°, ε_vβ 0.86): ``ltca synthesize``'s note said "the written drive flank's
-    unloaded TE p-p is 129 urad ... that, not the contact ratios, sets its LTE p-p
-    107/114 urad", while ``ltca run``'s finding at 22.5 N·m named the contact ratios and
-    the deflection (233 µrad, "the LTE 45.9 % of it") alone: the same design, two
-    diagnoses. Source: the unloaded TE p-p ``ltca synthesize``'s note checks
-    (:mod:`contact.optimize.development_remedy`; the same variable: 129 µrad both)."""
+    ``limit`` already: the pair's unloaded motion, not the teeth's deflection, then sets
+    the LTE at light load; empty where the tree has no unloaded TE or it keeps the limit.
+
+    Issue 71, round 30 (the spiral bevel 14x21 at Σ 125°, ε_vβ 0.86): ``ltca
+    synthesize``'s note said "the written drive flank's unloaded TE p-p is 129 urad ...
+    that, not the contact ratios, sets its LTE p-p 107/114 urad", while ``ltca run``'s
+    finding at 22.5 N·m named the contact ratios and the deflection (233 µrad, "the LTE
+    45.9 % of it") alone: the same design, two diagnoses. Which of the blank and the
+    prescriptions sets the unloaded TE the clause does not say: on that 14x21 it is 130
+    µrad unrelieved at the written prescriptions (path angle -73.75°, ellipse 0.75) and
+    131 µrad at the defaults (-45°, 0.275), 85 µrad on the face b2 23.2 mm (ε_vβ 1.25):
+    there the blank's. Source: the unloaded TE p-p ``ltca synthesize``'s note checks
+    (:mod:`contact.optimize.remedy_check`; the same variable: 129 µrad both)."""
     if "unloaded_transmission_error" not in lt:
         return ""
     ute = np.asarray(lt["unloaded_transmission_error"].values, float)
@@ -947,9 +951,9 @@ def _unloaded_clause(lt: xr.Dataset, limit: float) -> str:
     if not spread > limit:
         return ""
     return (f"; the flank's unloaded TE p-p is {spread:.0f} µrad, above the {limit:g} µrad "
-            "before any load: the written bearing's unloaded motion (its [synthesis] "
-            "prescriptions' TE level, path angle and ellipse length) exceeds the limit "
-            "before the teeth deflect (ltca synthesize's note checks what lowers it)")
+            "before any load: the pair's unloaded motion exceeds the limit before the "
+            "teeth deflect (the blank's contact ratios or the bearing's prescriptions set "
+            "it; ltca synthesize's note checks which change lowers it)")
 
 
 def _contact_ratios(lt: xr.Dataset, rating: xr.Dataset | None, torque: float) -> str:
