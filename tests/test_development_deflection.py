@@ -112,6 +112,31 @@ def test_the_verdicts_lte_finding_states_the_deflection_share():
     assert "the LTE 10.8 % of it, 6.5 % within the limit" in finding.reason
 
 
+def test_the_verdicts_lte_finding_names_an_unloaded_te_above_the_limit():
+    """Round 30 (the spiral bevel 14x21 at Sigma 125 deg): its written drive flank's
+    unloaded TE p-p 129 urad exceeds the limit before any load; ltca synthesize's note said
+    so, ltca run's lte finding named the deflection alone. The clause's number is the
+    unloaded TE's max less min over the rolls (exact: no tolerance)."""
+    from contact.study.verdicts import _lte
+
+    ute = [0.0, 129.0, 40.0, 10.0]  # p-p 129 urad
+    ds = _ltca([22.5], [[300.0, 420.0, 330.0, 310.0]], ute)  # LTE p-p 120 urad
+    (finding,) = _lte(ds, None, 60.0)
+    assert "the flank's unloaded TE p-p is 129 µrad, above the 60 µrad before any load" \
+        in finding.reason
+    # the deflection clause stays beside it
+    assert "the teeth's mean deflection there" in finding.reason
+    # an unloaded TE within the limit: no clause (the finding as before)
+    ds = _ltca([22.5], [[300.0, 420.0, 330.0, 310.0]], [0.0, 45.0, 20.0, 10.0])
+    (finding,) = _lte(ds, None, 60.0)
+    assert "unloaded TE p-p" not in finding.reason
+    # no unloaded TE in the tree: no clause, no error
+    ds = _ltca([22.5], [[300.0, 420.0, 330.0, 310.0]], ute).drop_vars(
+        "unloaded_transmission_error")
+    (finding,) = _lte(ds, None, 60.0)
+    assert "unloaded TE" not in finding.reason
+
+
 def test_synthesize_note_only_where_the_check_did_not_judge_the_range_within(monkeypatch):
     """The lock changed (issue 71, "LTE p-p <= 60 urad at every torque"): the note was made
     only where the design torque's LTE was above 60 urad, so that the truck hypoid 8x41

@@ -132,3 +132,27 @@ def test_no_development_gives_the_commands_case(tmp_path, capsys, monkeypatch):
     assert RECORD_TABLE in api.case.extra
     assert api.lines(out) == printed
     assert api.development is None
+
+
+def test_progress_reaches_the_development(monkeypatch):
+    """Round 30 (issue 71): a script of docs/api.md's example sat silent through its whole
+    synthesis; ``progress=print`` (docs/api.md, the docstring) is the command's printing of
+    the development's lines. The callable given is the one the development calls, and the
+    default None leaves the development its logger (no line dropped)."""
+    given = []
+
+    class Stop(Exception):
+        pass
+
+    def develop(basic, *, targets=None, progress=None, synthesis_progress=None,
+                apply_remedy=False):
+        given.append(progress)
+        raise Stop
+
+    monkeypatch.setattr(dev, "develop", develop)
+    lines: list[str] = []
+    with pytest.raises(Stop):
+        contact.synthesize_case(FIFTEEN, progress=lines.append)
+    with pytest.raises(Stop):
+        contact.synthesize_case(FIFTEEN)
+    assert given == [lines.append, None]

@@ -129,7 +129,11 @@ def synthesize_case(basic, *, fe_level: str | None = None, development: bool = T
         ``--apply-remedy``: where a contact ratio is below its limit, develop and write
         the checked remedy's design (contact.optimize.development_remedy).
     progress : callable, optional
-        Called with each development progress line (the command's ``--progress``).
+        Called with each development progress line (``ltca synthesize`` prints them on
+        stderr). Default: logged at INFO by :func:`contact.optimize.development.develop`,
+        shown by ``logging.basicConfig(level=logging.INFO)``; ``progress=print`` prints
+        them. Without either the call is silent for its whole run (a new design's
+        development takes 30-120 s of CPU; round 30 of docs/own_gear_set.md).
     synthesis_progress : optional
         The synthesis' step progress (the command's step lines).
     shown : str, optional

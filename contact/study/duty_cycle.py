@@ -731,7 +731,12 @@ def run_duty_cycle(case: Case | str | os.PathLike[str] | None, duty: DutyCycle,
         LTCA options, flank, output (streaming to ``OUTPUT.parts/`` and resume; a chunk
         of the parts that is not this cycle's is set aside and its bin analysed again),
         scheduler and workers. ``operating`` is not used (each bin sets its own speed and
-        temperature; the case's lubricant, roughness, friction model).
+        temperature; the case's lubricant, roughness, friction model). The default
+        scheduler, a local cluster, spawns worker processes that import the calling
+        script again: a script calls this under ``if __name__ == "__main__":`` (else each
+        worker re-runs the script's top before the start fails with an InputError that
+        says so; round 30 of docs/own_gear_set.md: a synthesis of 98 s CPU re-run, 21 min
+        of wall time to the error), or passes ``StudyRun(scheduler="synchronous")``.
     root_stress : bool or contact.compliance.fe.FEOptions, optional
         Also the tooth-root stress of each bin (FE influence coefficients of the
         generated teeth, built once per design and cached; docs/fe.md) and with it the

@@ -869,6 +869,7 @@ def _lte(lt: xr.Dataset, rating: xr.Dataset | None, limit: float) -> list[Findin
                            "their limits, set it; docs/verdicts.md)"
                            + (f"; {ratios}" if ratios else "")
                            + (_deflection_share(lt, t, pp, limit) if mine else "")
+                           + (_unloaded_clause(lt, limit) if mine else "")
                            + (_within_clause(lt, limit, design, float(t))
                               if float(t) == max(above_at) else "")))
     return out
@@ -923,6 +924,36 @@ def _deflection_share(lt: xr.Dataset, torque: float, pp: float, limit: float) ->
     return (f"; the teeth's mean deflection there {deflection:.0f} µrad (the mean loaded "
             f"TE less the unloaded), the LTE {100 * pp / deflection:.1f} % of it, "
             f"{100 * limit / deflection:.1f} % within the limit")
+
+
+def _unloaded_clause(lt: xr.Dataset, limit: float) -> str:
+    """The ``lte`` finding's clause on the flank's unloaded TE where its peak-to-peak
+    [µrad] (of ``unloaded_transmission_error`` over the mesh cycle's rolls) exceeds
+    ``limit`` already: the pair's unloaded motion, not the teeth's deflection, then sets
+    the LTE at light load; empty where the tree has no unloaded TE or it keeps the limit.
+
+    Issue 71, round 30 (the spiral bevel 14x21 at Σ 125°, ε_vβ 0.86): ``ltca
+    synthesize``'s note said "the written drive flank's unloaded TE p-p is 129 urad ...
+    that, not the contact ratios, sets its LTE p-p 107/114 urad", while ``ltca run``'s
+    finding at 22.5 N·m named the contact ratios and the deflection (233 µrad, "the LTE
+    45.9 % of it") alone: the same design, two diagnoses. Which of the blank and the
+    prescriptions sets the unloaded TE the clause does not say: on that 14x21 it is 130
+    µrad unrelieved at the written prescriptions (path angle -73.75°, ellipse 0.75) and
+    131 µrad at the defaults (-45°, 0.275), 85 µrad on the face b2 23.2 mm (ε_vβ 1.25):
+    there the blank's. Source: the unloaded TE p-p ``ltca synthesize``'s note checks
+    (:mod:`contact.optimize.remedy_check`; the same variable: 129 µrad both)."""
+    if "unloaded_transmission_error" not in lt:
+        return ""
+    ute = np.asarray(lt["unloaded_transmission_error"].values, float)
+    if not np.isfinite(ute).any():
+        return ""
+    spread = float(np.nanmax(ute) - np.nanmin(ute))
+    if not spread > limit:
+        return ""
+    return (f"; the flank's unloaded TE p-p is {spread:.0f} µrad, above the {limit:g} µrad "
+            "before any load: the pair's unloaded motion exceeds the limit before the "
+            "teeth deflect (the blank's contact ratios or the bearing's prescriptions set "
+            "it; ltca synthesize's note checks which change lowers it)")
 
 
 def _contact_ratios(lt: xr.Dataset, rating: xr.Dataset | None, torque: float) -> str:
