@@ -44,7 +44,8 @@ log = logging.getLogger("contact.optimize.development")
 
 def tolerance_checks(case: Case, targets: DevelopmentTargets, setup: Mapping[str, Any],
                      teeth: KeptTeeth | None, values: Mapping[str, float], *,
-                     until_missed: bool = False, first: tuple[str, ...] = ()
+                     until_missed: bool = False, first: tuple[str, ...] = (),
+                     until_over: Mapping[str, float] | None = None
                      ) -> dict[str, tuple[dict[str, np.ndarray], dict[str, float]]]:
     """The drive flank of ``case`` at each mounting excursion (:func:`_excursions`,
     :data:`COARSE_LTCA` at the development's torques): per excursion label, its metrics
@@ -54,7 +55,10 @@ def tolerance_checks(case: Case, targets: DevelopmentTargets, setup: Mapping[str
     the design is tolerant; the excursions after it are not in the result). ``first``:
     excursion labels analysed before the others (those a related design missed: with
     ``until_missed``, a design that misses them too costs one analysis); the result is in
-    :func:`_excursions`' order either way.
+    :func:`_excursions`' order either way. ``until_over``: stop after the first excursion
+    whose shortfall of a key of :data:`TOLERANCE_KEYS` is above this mapping's (or not
+    finite): the caller asks only whether the design misses no more than these bounds
+    (:func:`less_intolerant_variant`), which that excursion already answers.
 
     The excursions of every design are kept in ``setup`` (key ``"tolerance_memo"``, by
     the case object, the torques, the kept pinion tooth's key, the targets and the kept
@@ -72,6 +76,8 @@ def tolerance_checks(case: Case, targets: DevelopmentTargets, setup: Mapping[str
         if lab not in tolerance:
             tolerance[lab] = _excursion(case, targets, setup, teeth, values, lab, mis)
         if until_missed and any(tolerance[lab][1][k] > 0.0 for k in TOLERANCE_KEYS):
+            break
+        if until_over is not None and exceeds(tolerance[lab][1], until_over):
             break
     memo[key] = (case, tolerance)  # the case held: its id is not reused while kept
     return {lab: tolerance[lab] for lab, _ in _excursions(targets) if lab in tolerance}
@@ -183,6 +189,34 @@ def worst_shortfalls(tolerance: Mapping[str, tuple[Mapping, Mapping[str, float]]
             for k in TOLERANCE_KEYS}
 
 
+def exceeds(shortfalls: Mapping[str, float], bounds: Mapping[str, float]) -> bool:
+    """Whether one excursion's shortfalls miss more than ``bounds`` on a key of
+    :data:`TOLERANCE_KEYS`: a shortfall above its bound, or not finite (a failed analysis).
+
+    Parameters
+    ----------
+    shortfalls : mapping str → float
+        One excursion's shortfalls [1] (:func:`~contact.optimize.development_targets.
+        development_score`'s; a key left out counts as inf).
+    bounds : mapping str → float
+        Per key the largest shortfall allowed [1] (a key left out allows 0).
+
+    Returns
+    -------
+    bool
+        True where :func:`no_more_intolerant` of ``bounds`` against any worst shortfalls
+        that include this excursion's must be False (the worst is at least this one's).
+
+    Notes
+    -----
+    Source: :func:`no_more_intolerant`'s comparison taken one excursion at a time (issue
+    71, branch cpu90a: a check step's variant stops being analysed at its excursions once
+    one of them decides that it is not less intolerant).
+    """
+    return any(not (math.isfinite(v := float(shortfalls.get(k, math.inf)))
+                    and v <= float(bounds.get(k, 0.0))) for k in TOLERANCE_KEYS)
+
+
 def no_more_intolerant(kept: Mapping[str, float], variant: Mapping[str, float]) -> bool:
     """Whether a variant not tolerant misses no more at the mounting excursions than the
     design kept, which is not tolerant either: the keep rule's second preference
@@ -247,7 +281,11 @@ def less_intolerant_variant(best: DevelopmentEvaluation, e: DevelopmentEvaluatio
     -------
     bool
         Whether ``e`` replaces ``best`` though not tolerant. Costs at most every
-        excursion of both designs not yet analysed (:func:`tolerance_checks` keeps them).
+        excursion of both designs not yet analysed (:func:`tolerance_checks` keeps them):
+        none of ``e``'s where ``best`` is tolerant (only a tolerant variant replaces it),
+        and ``e``'s only up to the first that misses more than ``best``'s worst
+        (:func:`exceeds`; ``until_over``), which decides as all of them would: the same
+        answer at fewer analyses (issue 71, branch cpu90a).
 
     Notes
     -----
@@ -257,7 +295,10 @@ def less_intolerant_variant(best: DevelopmentEvaluation, e: DevelopmentEvaluatio
     if best.case is None or e.case is None:
         return False
     kept = worst_shortfalls(tolerance_checks(best.case, targets, setup, teeth, best.values))
-    variant = worst_shortfalls(tolerance_checks(e.case, targets, setup, teeth, e.values))
+    if not any(kept[k] > 0.0 for k in TOLERANCE_KEYS):
+        return False  # a tolerant kept design: no_more_intolerant is False whatever e's
+    variant = worst_shortfalls(tolerance_checks(e.case, targets, setup, teeth, e.values,
+                                                until_over=kept))
     if not no_more_intolerant(kept, variant):
         return False
     say("  kept though not tolerant: at the mounting excursions it misses no more than "
