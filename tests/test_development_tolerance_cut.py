@@ -22,8 +22,10 @@ from development_stand_ins import checked as _checked
 from development_stand_ins import metrics as _metrics
 
 from contact.optimize.development import DevelopmentTargets
+from contact.optimize.development_keep import kept_why, lost_targets
 from contact.optimize.development_tolerance import (
     exceeds,
+    known_missed,
     less_intolerant_variant,
     no_more_intolerant,
     tolerance_checks,
@@ -63,10 +65,12 @@ def shares(monkeypatch):
     return table, asked
 
 
-def _design(x: float) -> object:
-    """A checked design of stand-in value ``x`` (its case the values themselves)."""
+def _design(x: float, metrics=None) -> object:
+    """A checked design of stand-in value ``x`` (its case the values themselves; its
+    nominal ``metrics`` default every target met)."""
     values = {"x": x}
-    e = _checked(values, _metrics(), DevelopmentTargets(), CENTRE_V)
+    e = _checked(values, _metrics() if metrics is None else metrics, DevelopmentTargets(),
+                 CENTRE_V)
     return dataclasses.replace(e, case=dict(values))
 
 
@@ -156,3 +160,33 @@ def test_the_answer_is_the_full_comparisons_on_every_combination(shares):
         decided.append(answer)
     assert set(decided) == {True, False}  # both answers occur among the pairs
     assert cut_count < full_count
+
+
+def test_the_keep_rule_asks_first_where_the_kept_design_misses(shares):
+    """The kept design (its nominal LTE missed) is known to miss plastic at ΔP − (its
+    excursions analysed before); a better variant missing there too is refused after that
+    one excursion (:func:`known_missed` handed to :func:`tolerant_variant` as ``first``), where
+    the order of :func:`_excursions` asked ΔE +, ΔE −, ΔP + and ΔP − first. The reason is
+    the same: not tolerant, and not less intolerant (more plastic at ΔP −)."""
+    table, asked = shares
+    table[0.0] = {"dE+": (0.01, 0.0), "dE-": (0.01, 0.0), "dP+": (0.01, 0.0),
+                  "dP-": (0.01, 0.007)}
+    table[1.0] = {"dE+": (0.01, 0.0), "dE-": (0.01, 0.0), "dP+": (0.01, 0.0),
+                  "dP-": (0.01, 0.009)}
+    targets, setup = DevelopmentTargets(), _setup()
+    best = _design(0.0, _metrics(lte_peak_to_peak=[45.0, 50.0]))
+    assert known_missed(best, targets, setup, None) == ()  # nothing analysed yet
+    tolerance_checks(best.case, targets, setup, None, best.values)
+    assert known_missed(best, targets, setup, None) == ("dP-0.05",)
+    asked.clear()
+    lines: list[str] = []
+    why = kept_why(best, _design(1.0), targets, setup, None, lines.append, "the step",
+                   lost=lost_targets)
+    assert why.startswith("not tolerant") and asked == [(1.0, "dP-")]
+    assert lines == ["  not kept: at the mounting excursion dP-0.05 it misses plastic"]
+    # the same reason in _excursions' order, at four analyses
+    fresh = _setup()
+    tolerance_checks(best.case, targets, fresh, None, best.values)
+    asked.clear()
+    assert not tolerant_variant(_design(1.0), targets, fresh, None, lambda s: None)
+    assert len(asked) == 4

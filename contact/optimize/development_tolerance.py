@@ -54,7 +54,8 @@ def tolerance_checks(case: Case, targets: DevelopmentTargets, setup: Mapping[str
     excursion that misses one of :data:`TOLERANCE_KEYS` (the caller asks only whether
     the design is tolerant; the excursions after it are not in the result). ``first``:
     excursion labels analysed before the others (those a related design missed: with
-    ``until_missed``, a design that misses them too costs one analysis); the result is in
+    ``until_missed``, a design that misses them too costs one analysis; with
+    ``until_over`` those already analysed are asked before them); the result is in
     :func:`_excursions`' order either way. ``until_over``: stop after the first excursion
     whose shortfall of a key of :data:`TOLERANCE_KEYS` is above this mapping's (or not
     finite): the caller asks only whether the design misses no more than these bounds
@@ -67,11 +68,15 @@ def tolerance_checks(case: Case, targets: DevelopmentTargets, setup: Mapping[str
     :func:`checked_tolerance`) is not analysed again — the same analyses, the same
     numbers."""
     memo = setup.setdefault("tolerance_memo", {}) if isinstance(setup, dict) else {}
-    key = (id(case), tuple(float(t) for t in setup["torques"]), bearing_key(values),
-           repr(targets), id(teeth))
+    key = _memo_key(case, targets, setup, teeth, values)
     kept = memo.get(key)
     tolerance = dict(kept[1]) if kept is not None and kept[0] is case else {}
-    order = sorted(_excursions(targets), key=lambda x: x[0] not in first)  # stable
+    # ``first`` first; with ``until_over`` those already analysed before them (free): its
+    # answer does not depend on the order, only how many are analysed (``until_missed``'s
+    # excursions missed steer the tolerance height search: its order kept)
+    order = sorted(_excursions(targets),
+                   key=lambda x: (until_over is not None and x[0] not in tolerance,
+                                  x[0] not in first))  # stable
     for lab, mis in order:
         if lab not in tolerance:
             tolerance[lab] = _excursion(case, targets, setup, teeth, values, lab, mis)
@@ -81,6 +86,15 @@ def tolerance_checks(case: Case, targets: DevelopmentTargets, setup: Mapping[str
             break
     memo[key] = (case, tolerance)  # the case held: its id is not reused while kept
     return {lab: tolerance[lab] for lab, _ in _excursions(targets) if lab in tolerance}
+
+
+def _memo_key(case: Case, targets: DevelopmentTargets, setup: Mapping[str, Any],
+              teeth: KeptTeeth | None, values: Mapping[str, float]) -> tuple:
+    """A design's key in ``setup["tolerance_memo"]`` (:func:`tolerance_checks`): the case
+    object, the torques [N·m], the kept pinion tooth's key, the targets and the kept
+    teeth."""
+    return (id(case), tuple(float(t) for t in setup["torques"]), bearing_key(values),
+            repr(targets), id(teeth))
 
 
 def _excursion(case: Case, targets: DevelopmentTargets, setup: Mapping[str, Any],
@@ -113,19 +127,22 @@ def _excursion(case: Case, targets: DevelopmentTargets, setup: Mapping[str, Any]
 def _missed_excursion(tolerance: Mapping[str, tuple[dict, dict[str, float]]],
                       say: Callable[[str], None]) -> list[str]:
     """The :data:`TOLERANCE_KEYS` missed at the excursions of ``tolerance``
-    (:func:`tolerance_checks` with ``until_missed``: the last excursion is the one that
-    missed), sorted; said as "not kept" where any."""
+    (:func:`tolerance_checks` with ``until_missed``), sorted; said as "not kept" at the
+    first excursion (in :func:`_excursions`' order) that misses, where any."""
     missed = sorted({k for _, short in tolerance.values() for k in TOLERANCE_KEYS
                      if short[k] > 0.0})
-    if missed:
-        say(f"  not kept: at the mounting excursion {list(tolerance)[-1]} it misses "
+    if missed:  # named: the first that misses (the last analysed in _excursions' order
+        # where they were asked in that order; the one asked first may be another)
+        where = next(lab for lab, (_, short) in tolerance.items()
+                     if any(short[k] > 0.0 for k in TOLERANCE_KEYS))
+        say(f"  not kept: at the mounting excursion {where} it misses "
             f"{', '.join(missed)}")
     return missed
 
 
 def tolerant_variant(e: DevelopmentEvaluation, targets: DevelopmentTargets,
                      setup: Mapping[str, Any], teeth: KeptTeeth | None,
-                     say: Callable[[str], None]) -> bool:
+                     say: Callable[[str], None], *, first: tuple[str, ...] = ()) -> bool:
     """Whether a check step's design is tolerant (:func:`tolerance_checks`: clear of toe and
     heel, its edges elastic within their share at every mounting excursion); where not,
     says which it misses. A check step keeps a design only so: a bearing turned or
@@ -145,6 +162,10 @@ def tolerant_variant(e: DevelopmentEvaluation, targets: DevelopmentTargets,
         The kept pinion teeth.
     say : callable str → None
         Where the "not kept" line goes.
+    first : tuple of str, optional
+        Excursion labels asked first (:func:`known_missed` of the design ``e`` varies,
+        the keep rule's): the answer is the same in any order, a variant that misses
+        where its design does costs one analysis (issue 71, branch cpu90a).
 
     Returns
     -------
@@ -158,8 +179,49 @@ def tolerant_variant(e: DevelopmentEvaluation, targets: DevelopmentTargets,
     bearing"; ΔE, ΔP ± the targets' tolerances, as the V-H check of
     :mod:`contact.study.vh_check`).
     """
-    tolerance = tolerance_checks(e.case, targets, setup, teeth, e.values, until_missed=True)
+    tolerance = tolerance_checks(e.case, targets, setup, teeth, e.values, until_missed=True,
+                                 first=first)
     return not _missed_excursion(tolerance, say)
+
+
+def known_missed(d: DevelopmentEvaluation, targets: DevelopmentTargets,
+                 setup: Mapping[str, Any], teeth: KeptTeeth | None) -> tuple[str, ...]:
+    """The mounting excursions at which a design is already known to miss a key of
+    :data:`TOLERANCE_KEYS`: those :func:`tolerance_checks` analysed for it (kept in
+    ``setup["tolerance_memo"]``), none analysed here.
+
+    Parameters
+    ----------
+    d : DevelopmentEvaluation
+        A design (its ``case`` and ``values`` [file units]).
+    targets : DevelopmentTargets
+        The development's targets (the excursions, ``offset_tolerance``,
+        ``mounting_tolerance`` [mm]).
+    setup : mapping
+        The development's state (``torques`` [N·m], the memos).
+    teeth : KeptTeeth or None
+        The kept pinion teeth.
+
+    Returns
+    -------
+    tuple of str
+        The excursion labels (:func:`_excursions`' ``"dE+0.05"`` …) at which ``d`` misses
+        a key, in their order; empty where none is known (not analysed, or tolerant).
+
+    Notes
+    -----
+    Source: issue 71, branch cpu90a: a check step's variant misses where the design it
+    varies misses, so the keep rule asks those excursions first (:func:`tolerant_variant`'s
+    ``first``); whether it is tolerant does not depend on the order.
+    """
+    memo = setup.get("tolerance_memo", {}) if isinstance(setup, Mapping) else {}
+    if d.case is None:
+        return ()
+    kept = memo.get(_memo_key(d.case, targets, setup, teeth, d.values))
+    if kept is None or kept[0] is not d.case:
+        return ()
+    return tuple(lab for lab, _ in _excursions(targets) if lab in kept[1]
+                 and any(kept[1][lab][1][k] > 0.0 for k in TOLERANCE_KEYS))
 
 
 def worst_shortfalls(tolerance: Mapping[str, tuple[Mapping, Mapping[str, float]]]
