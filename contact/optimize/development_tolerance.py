@@ -5,9 +5,12 @@ tolerant (:func:`tolerant_variant`), the chosen design made tolerant
 it tolerant, :func:`checked_tolerance_height`: a search on the pattern's height), the
 written case's tolerance (:func:`final_tolerance`, reusing the step's excursions) and,
 where the design written is still not tolerant, the torque up to which it is
-(:func:`tolerant_torque`). Split out of :mod:`contact.optimize.development_check`
-(issue 71, Deliver 5), which re-exports every public name; the bodies moved unchanged
-(the helper they share imported under the private name they call).
+(:func:`tolerant_torque`). The keep rule's questions are answered at as few excursions as
+decide them (:func:`known_missed` asked first, :func:`exceeds` stopping
+:func:`less_intolerant_variant`; issue 71, branch cpu90a). Split out of
+:mod:`contact.optimize.development_check` (issue 71, Deliver 5), which re-exports every
+public name; the bodies moved unchanged (the helper they share imported under the private
+name they call).
 """
 
 from __future__ import annotations
