@@ -30,7 +30,7 @@ def test_the_keep_rule_asks_better_then_lost_then_tolerant(monkeypatch):
     is no better."""
     asked = []
 
-    def tolerant(e, targets, setup, teeth, say):
+    def tolerant(e, targets, setup, teeth, say, *, first=()):
         asked.append(e.values["x"])
         return e.values["x"] != 9.0
 
@@ -123,7 +123,7 @@ def test_a_fail_level_lte_ranks_below_any_softer_miss(monkeypatch):
 
     asked = []
     monkeypatch.setattr("contact.optimize.development_keep._tolerant_variant",
-                        lambda e, *a: asked.append(e.values["x"]) or False)
+                        lambda e, *a, **kw: asked.append(e.values["x"]) or False)
     loud = _design({"x": 0.0}, _metrics(lte_peak_to_peak=[605.0, 600.0]))
     # a pattern 0.2-0.9 long (0.5 +/- 0.1 missed) and an LTE above the development's
     # 40 urad target but within the verdict's FAIL level (120 urad) at both torques

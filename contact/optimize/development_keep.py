@@ -16,6 +16,7 @@ from typing import Any
 from contact.optimize.development_evaluate import KeptTeeth
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import DevelopmentTargets
+from contact.optimize.development_tolerance import known_missed as _known_missed
 from contact.optimize.development_tolerance import (
     less_intolerant_variant as _less_intolerant_variant,
 )
@@ -263,7 +264,8 @@ def kept_why(best: DevelopmentEvaluation, e: DevelopmentEvaluation | None,
         return "it scores no better"
     if not lost_first and (why := missed()):
         return why
-    if (tolerant and not _tolerant_variant(e, targets, setup, teeth, say)
+    if (tolerant and not _tolerant_variant(e, targets, setup, teeth, say,
+                                           first=_known_missed(best, targets, setup, teeth))
             and not _less_intolerant_variant(best, e, targets, setup, teeth, say)):
         return "not tolerant at dE/dP +/-0.05 mm"
     return ""

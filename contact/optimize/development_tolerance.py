@@ -5,9 +5,12 @@ tolerant (:func:`tolerant_variant`), the chosen design made tolerant
 it tolerant, :func:`checked_tolerance_height`: a search on the pattern's height), the
 written case's tolerance (:func:`final_tolerance`, reusing the step's excursions) and,
 where the design written is still not tolerant, the torque up to which it is
-(:func:`tolerant_torque`). Split out of :mod:`contact.optimize.development_check`
-(issue 71, Deliver 5), which re-exports every public name; the bodies moved unchanged
-(the helper they share imported under the private name they call).
+(:func:`tolerant_torque`). The keep rule's questions are answered at as few excursions as
+decide them (:func:`known_missed` asked first, :func:`exceeds` stopping
+:func:`less_intolerant_variant`; issue 71, branch cpu90a). Split out of
+:mod:`contact.optimize.development_check` (issue 71, Deliver 5), which re-exports every
+public name; the bodies moved unchanged (the helper they share imported under the private
+name they call).
 """
 
 from __future__ import annotations
@@ -44,7 +47,8 @@ log = logging.getLogger("contact.optimize.development")
 
 def tolerance_checks(case: Case, targets: DevelopmentTargets, setup: Mapping[str, Any],
                      teeth: KeptTeeth | None, values: Mapping[str, float], *,
-                     until_missed: bool = False, first: tuple[str, ...] = ()
+                     until_missed: bool = False, first: tuple[str, ...] = (),
+                     until_over: Mapping[str, float] | None = None
                      ) -> dict[str, tuple[dict[str, np.ndarray], dict[str, float]]]:
     """The drive flank of ``case`` at each mounting excursion (:func:`_excursions`,
     :data:`COARSE_LTCA` at the development's torques): per excursion label, its metrics
@@ -53,8 +57,12 @@ def tolerance_checks(case: Case, targets: DevelopmentTargets, setup: Mapping[str
     excursion that misses one of :data:`TOLERANCE_KEYS` (the caller asks only whether
     the design is tolerant; the excursions after it are not in the result). ``first``:
     excursion labels analysed before the others (those a related design missed: with
-    ``until_missed``, a design that misses them too costs one analysis); the result is in
-    :func:`_excursions`' order either way.
+    ``until_missed``, a design that misses them too costs one analysis; with
+    ``until_over`` those already analysed are asked before them); the result is in
+    :func:`_excursions`' order either way. ``until_over``: stop after the first excursion
+    whose shortfall of a key of :data:`TOLERANCE_KEYS` is above this mapping's (or not
+    finite): the caller asks only whether the design misses no more than these bounds
+    (:func:`less_intolerant_variant`), which that excursion already answers.
 
     The excursions of every design are kept in ``setup`` (key ``"tolerance_memo"``, by
     the case object, the torques, the kept pinion tooth's key, the targets and the kept
@@ -63,18 +71,33 @@ def tolerance_checks(case: Case, targets: DevelopmentTargets, setup: Mapping[str
     :func:`checked_tolerance`) is not analysed again — the same analyses, the same
     numbers."""
     memo = setup.setdefault("tolerance_memo", {}) if isinstance(setup, dict) else {}
-    key = (id(case), tuple(float(t) for t in setup["torques"]), bearing_key(values),
-           repr(targets), id(teeth))
+    key = _memo_key(case, targets, setup, teeth, values)
     kept = memo.get(key)
     tolerance = dict(kept[1]) if kept is not None and kept[0] is case else {}
-    order = sorted(_excursions(targets), key=lambda x: x[0] not in first)  # stable
+    # ``first`` first; with ``until_over`` those already analysed before them (free): its
+    # answer does not depend on the order, only how many are analysed (``until_missed``'s
+    # excursions missed steer the tolerance height search: its order kept)
+    order = sorted(_excursions(targets),
+                   key=lambda x: (until_over is not None and x[0] not in tolerance,
+                                  x[0] not in first))  # stable
     for lab, mis in order:
         if lab not in tolerance:
             tolerance[lab] = _excursion(case, targets, setup, teeth, values, lab, mis)
         if until_missed and any(tolerance[lab][1][k] > 0.0 for k in TOLERANCE_KEYS):
             break
+        if until_over is not None and exceeds(tolerance[lab][1], until_over):
+            break
     memo[key] = (case, tolerance)  # the case held: its id is not reused while kept
     return {lab: tolerance[lab] for lab, _ in _excursions(targets) if lab in tolerance}
+
+
+def _memo_key(case: Case, targets: DevelopmentTargets, setup: Mapping[str, Any],
+              teeth: KeptTeeth | None, values: Mapping[str, float]) -> tuple:
+    """A design's key in ``setup["tolerance_memo"]`` (:func:`tolerance_checks`): the case
+    object, the torques [N·m], the kept pinion tooth's key, the targets and the kept
+    teeth."""
+    return (id(case), tuple(float(t) for t in setup["torques"]), bearing_key(values),
+            repr(targets), id(teeth))
 
 
 def _excursion(case: Case, targets: DevelopmentTargets, setup: Mapping[str, Any],
@@ -107,19 +130,22 @@ def _excursion(case: Case, targets: DevelopmentTargets, setup: Mapping[str, Any]
 def _missed_excursion(tolerance: Mapping[str, tuple[dict, dict[str, float]]],
                       say: Callable[[str], None]) -> list[str]:
     """The :data:`TOLERANCE_KEYS` missed at the excursions of ``tolerance``
-    (:func:`tolerance_checks` with ``until_missed``: the last excursion is the one that
-    missed), sorted; said as "not kept" where any."""
+    (:func:`tolerance_checks` with ``until_missed``), sorted; said as "not kept" at the
+    first excursion (in :func:`_excursions`' order) that misses, where any."""
     missed = sorted({k for _, short in tolerance.values() for k in TOLERANCE_KEYS
                      if short[k] > 0.0})
-    if missed:
-        say(f"  not kept: at the mounting excursion {list(tolerance)[-1]} it misses "
+    if missed:  # named: the first that misses (the last analysed in _excursions' order
+        # where they were asked in that order; the one asked first may be another)
+        where = next(lab for lab, (_, short) in tolerance.items()
+                     if any(short[k] > 0.0 for k in TOLERANCE_KEYS))
+        say(f"  not kept: at the mounting excursion {where} it misses "
             f"{', '.join(missed)}")
     return missed
 
 
 def tolerant_variant(e: DevelopmentEvaluation, targets: DevelopmentTargets,
                      setup: Mapping[str, Any], teeth: KeptTeeth | None,
-                     say: Callable[[str], None]) -> bool:
+                     say: Callable[[str], None], *, first: tuple[str, ...] = ()) -> bool:
     """Whether a check step's design is tolerant (:func:`tolerance_checks`: clear of toe and
     heel, its edges elastic within their share at every mounting excursion); where not,
     says which it misses. A check step keeps a design only so: a bearing turned or
@@ -139,6 +165,10 @@ def tolerant_variant(e: DevelopmentEvaluation, targets: DevelopmentTargets,
         The kept pinion teeth.
     say : callable str → None
         Where the "not kept" line goes.
+    first : tuple of str, optional
+        Excursion labels asked first (:func:`known_missed` of the design ``e`` varies,
+        the keep rule's): the answer is the same in any order, a variant that misses
+        where its design does costs one analysis (issue 71, branch cpu90a).
 
     Returns
     -------
@@ -152,8 +182,49 @@ def tolerant_variant(e: DevelopmentEvaluation, targets: DevelopmentTargets,
     bearing"; ΔE, ΔP ± the targets' tolerances, as the V-H check of
     :mod:`contact.study.vh_check`).
     """
-    tolerance = tolerance_checks(e.case, targets, setup, teeth, e.values, until_missed=True)
+    tolerance = tolerance_checks(e.case, targets, setup, teeth, e.values, until_missed=True,
+                                 first=first)
     return not _missed_excursion(tolerance, say)
+
+
+def known_missed(d: DevelopmentEvaluation, targets: DevelopmentTargets,
+                 setup: Mapping[str, Any], teeth: KeptTeeth | None) -> tuple[str, ...]:
+    """The mounting excursions at which a design is already known to miss a key of
+    :data:`TOLERANCE_KEYS`: those :func:`tolerance_checks` analysed for it (kept in
+    ``setup["tolerance_memo"]``), none analysed here.
+
+    Parameters
+    ----------
+    d : DevelopmentEvaluation
+        A design (its ``case`` and ``values`` [file units]).
+    targets : DevelopmentTargets
+        The development's targets (the excursions, ``offset_tolerance``,
+        ``mounting_tolerance`` [mm]).
+    setup : mapping
+        The development's state (``torques`` [N·m], the memos).
+    teeth : KeptTeeth or None
+        The kept pinion teeth.
+
+    Returns
+    -------
+    tuple of str
+        The excursion labels (:func:`_excursions`' ``"dE+0.05"`` …) at which ``d`` misses
+        a key, in their order; empty where none is known (not analysed, or tolerant).
+
+    Notes
+    -----
+    Source: issue 71, branch cpu90a: a check step's variant misses where the design it
+    varies misses, so the keep rule asks those excursions first (:func:`tolerant_variant`'s
+    ``first``); whether it is tolerant does not depend on the order.
+    """
+    memo = setup.get("tolerance_memo", {}) if isinstance(setup, Mapping) else {}
+    if d.case is None:
+        return ()
+    kept = memo.get(_memo_key(d.case, targets, setup, teeth, d.values))
+    if kept is None or kept[0] is not d.case:
+        return ()
+    return tuple(lab for lab, _ in _excursions(targets) if lab in kept[1]
+                 and any(kept[1][lab][1][k] > 0.0 for k in TOLERANCE_KEYS))
 
 
 def worst_shortfalls(tolerance: Mapping[str, tuple[Mapping, Mapping[str, float]]]
@@ -181,6 +252,34 @@ def worst_shortfalls(tolerance: Mapping[str, tuple[Mapping, Mapping[str, float]]
     """
     return {k: max((float(short[k]) for _, short in tolerance.values()), default=0.0)
             for k in TOLERANCE_KEYS}
+
+
+def exceeds(shortfalls: Mapping[str, float], bounds: Mapping[str, float]) -> bool:
+    """Whether one excursion's shortfalls miss more than ``bounds`` on a key of
+    :data:`TOLERANCE_KEYS`: a shortfall above its bound, or not finite (a failed analysis).
+
+    Parameters
+    ----------
+    shortfalls : mapping str → float
+        One excursion's shortfalls [1] (:func:`~contact.optimize.development_targets.
+        development_score`'s; a key left out counts as inf).
+    bounds : mapping str → float
+        Per key the largest shortfall allowed [1] (a key left out allows 0).
+
+    Returns
+    -------
+    bool
+        True where :func:`no_more_intolerant` of ``bounds`` against any worst shortfalls
+        that include this excursion's must be False (the worst is at least this one's).
+
+    Notes
+    -----
+    Source: :func:`no_more_intolerant`'s comparison taken one excursion at a time (issue
+    71, branch cpu90a: a check step's variant stops being analysed at its excursions once
+    one of them decides that it is not less intolerant).
+    """
+    return any(not (math.isfinite(v := float(shortfalls.get(k, math.inf)))
+                    and v <= float(bounds.get(k, 0.0))) for k in TOLERANCE_KEYS)
 
 
 def no_more_intolerant(kept: Mapping[str, float], variant: Mapping[str, float]) -> bool:
@@ -247,7 +346,11 @@ def less_intolerant_variant(best: DevelopmentEvaluation, e: DevelopmentEvaluatio
     -------
     bool
         Whether ``e`` replaces ``best`` though not tolerant. Costs at most every
-        excursion of both designs not yet analysed (:func:`tolerance_checks` keeps them).
+        excursion of both designs not yet analysed (:func:`tolerance_checks` keeps them):
+        none of ``e``'s where ``best`` is tolerant (only a tolerant variant replaces it),
+        and ``e``'s only up to the first that misses more than ``best``'s worst
+        (:func:`exceeds`; ``until_over``), which decides as all of them would: the same
+        answer at fewer analyses (issue 71, branch cpu90a).
 
     Notes
     -----
@@ -257,7 +360,10 @@ def less_intolerant_variant(best: DevelopmentEvaluation, e: DevelopmentEvaluatio
     if best.case is None or e.case is None:
         return False
     kept = worst_shortfalls(tolerance_checks(best.case, targets, setup, teeth, best.values))
-    variant = worst_shortfalls(tolerance_checks(e.case, targets, setup, teeth, e.values))
+    if not any(kept[k] > 0.0 for k in TOLERANCE_KEYS):
+        return False  # a tolerant kept design: no_more_intolerant is False whatever e's
+    variant = worst_shortfalls(tolerance_checks(e.case, targets, setup, teeth, e.values,
+                                                until_over=kept))
     if not no_more_intolerant(kept, variant):
         return False
     say("  kept though not tolerant: at the mounting excursions it misses no more than "
