@@ -8,8 +8,8 @@ that differs only in its relief re-makes nothing but the relief, a design with a
 flank synthesises that flank alone (the coast flank's steps 3–6 kept, and its tip plane,
 step 8, where its blade and settings recur), and the case is the same as a synthesis
 without the memo: bit for bit but the tip plane, which the memo starts from the blade
-side's last placement (the same placement within its 1e-9 mm tolerance). A new flank of
-the series continues step 5 from the flank's last synthesis (issue 75, ``WarmTools``):
+side's first placement (the same placement within its 1e-9 mm tolerance). A new flank of
+the series continues step 5 from the flank's first synthesis (issue 75, ``WarmTools``):
 the same tools as a fresh synthesis to 1e-12 relative. ``WarmRoll`` (step 6 from the last
 tune, not used by the synthesis) within its tolerance of a cold tune.
 """
@@ -89,7 +89,7 @@ def test_the_memo_keeps_steps_3_to_6_and_changes_nothing():
     assert len(flanks()) == 2  # its drive (concave) and coast (convex) flank
     assert len(reliefs()) == 2  # and their reliefs
     assert len(entries) - len(reliefs()) == 11  # their tip planes (step 8), the gear
-    # flanks' design points, the blanks, each blade side's last placement (the next
+    # flanks' design points, the blanks, each blade side's first placement (the next
     # placement's start) and each flank's warm start of step 5
     relieved = with_flank_options(basic, "concave", {"path_angle": -60.0, "tip_relief": 25.0,
                                                       "relief_start": 0.4})
@@ -108,7 +108,7 @@ def test_the_memo_keeps_steps_3_to_6_and_changes_nothing():
     _assert_warm_flank_as_cold(warm, synthesize(other, tip_planes=False)[0])
     fresh, _ = synthesize(relieved)
     # the same case as a fresh synthesis, to the tip plane's placement tolerance: the memo
-    # starts a placement from the last one of the blade side (1e-9 mm, measured 1e-14 to
+    # starts a placement from the first one of the blade side (1e-9 mm, measured 1e-14 to
     # 3e-12 relative on the settings), so bit for bit no more
     _assert_same_case(tomllib.loads(kept.to_toml()), tomllib.loads(fresh.to_toml()))
     assert kept.pinion.concave.blade.toprem_angle != 0.0
@@ -120,7 +120,7 @@ def test_a_design_synthesised_again_from_the_memo_is_the_same_bit_for_bit(monkey
     is the first synthesis bit for bit; a design whose drive flank's relief alone changes
     re-makes that relief alone, and its case (the coast flank's relief from the memo) is a
     synthesis without a memo bit for bit (step 8 left out: the memo starts a placement from
-    the last one, the same placement to its 1e-9 mm tolerance only)."""
+    the first one, the same placement to its 1e-9 mm tolerance only)."""
     import geometry.synthesis.case_synthesis as cs
     from geometry.synthesis.basic_design import load_basic, with_flank_options
 

@@ -451,8 +451,10 @@ def synthesize(basic: BasicDesign, *, conjugate: bool = False,
         flank depends on the drive flank only through the mean point's gear rotation,
         which the prescriptions do not move), so a development that varies the drive
         flank synthesises the coast flank once. A flank whose steps 3–6 are new continues
-        step 5 from the same flank's last synthesis in the memo (issue 75:
-        :class:`~geometry.synthesis.pinion.WarmTools`): the same tools to 1e-12 relative.
+        step 5 from the same flank's first synthesis in the memo (issue 75:
+        :class:`~geometry.synthesis.pinion.WarmTools`): the same tools to 1e-12 relative;
+        the first, not the last, so that a synthesis is a function of its own inputs and
+        the memo's first synthesis alone, whichever others ran between (issue 71).
         Default None: nothing kept.
     tip_planes : bool
         Step 8, each pinion cut's tip plane moved onto the root cone (default True).
@@ -975,14 +977,19 @@ def _unrelieved_flank(pair: _PairData, pf: str, fo: FlankOptions,
                          path_direction=path, curvature_gap=2.0 * fo.approach / semi**2)
     say(f"pinion {pf}: generating tools (point radius, blade profile, ratio of roll)")
     # a series of syntheses (the memo's: a development's trials) continues step 5 from the
-    # flank's last synthesis (issue 75; the same tools to the least squares' noise floor).
+    # flank's first synthesis (issue 75; the same tools to the least squares' noise floor),
+    # not from its last: from the last, a design's tools depended on the syntheses before
+    # it to ~1e-13, its tuned modified roll to ~1e-7 (issue 71, WarmTools.anchor)
     # Step 6 is tuned cold: a warm tune (WarmRoll) lands elsewhere within the tune's
     # tolerance (6D, 24E ~1e-5 relative), and on the default case's coast flank, plastic at
     # its design torque, that moved the coarse trial's peak flank pressure 2577 -> 2045 MPa
     # and the coast design torque the development prints 69.5 -> 109.7 N m (the warm
     # tools alone, 1e-13, move it too: 112.2 N m; docs/performance.md)
-    warm_tools = None if memo is None else memo.setdefault(("warm starts", pf), WarmTools())
+    series = None if memo is None else memo.setdefault(("warm starts", pf), WarmTools())
+    warm_tools = None if series is None else series.fork()
     tools = _generating_tools(pair, pf, gblade, gp, mp, ls, tp, tg, warm=warm_tools)
+    if series is not None and warm_tools is not None:
+        series.anchor(warm_tools)
     if conjugate:
         return FlankSynthesis(pf, fo, a21, mp, ls, tools)
     # higher-order roll (6D, 24E): the TE at ±pitch/4 on the prescribed parabola (the
@@ -1061,8 +1068,8 @@ def _generating_tools(pair: _PairData, pf: str, gblade: Blade, gp: FlankPoint,
     """Step 5 of the module docstring: the pinion blade and Generate settings that realise
     the local synthesis's shape operator at M, with the Formate gear as generating gear
     (``gp`` the gear flank at M in its own frame, ``tp``, ``tg`` the members' transforms at
-    M; ``warm`` the flank's last synthesis in a series, :class:`~geometry.synthesis.pinion.
-    WarmTools`)."""
+    M; ``warm`` the start of a series, its first synthesis forked,
+    :class:`~geometry.synthesis.pinion.WarmTools`)."""
     geom = pair.geom
     rot = tp[:3, :3]
     mir = _MIRROR if pair.pinion_hand == "left" else np.eye(3)
@@ -1236,16 +1243,19 @@ def _tip_on_root_cone(fs: FlankSynthesis, pair: _PairData,
     root cone from below (:func:`tip_plane_on_root_cone`; the flank is unchanged).
     ``memo`` (the design's entries of :func:`synthesize`'s memo): the placement kept under
     its inputs (the blade and settings), so a flank the development does not vary is
-    placed once, and a new placement starts from the last of the same blade side
-    (:func:`tip_plane_on_root_cone`'s ``start``); a cut it refuses is kept with its
-    error and that start, and raised again from the same start."""
+    placed once, and a new placement starts from the first of the same blade side
+    (:func:`tip_plane_on_root_cone`'s ``start``; the first, not the last, so that a
+    placement depends on its inputs and that first one alone); a cut it refuses is kept
+    with its error and that start, and raised again from the same start."""
     t = fs.tools
     key = ("tip plane", repr(t.blade), repr(t.settings))
     placed = None if memo is None else memo.get(key)
     if placed is None:
-        # the secant from the last placement of this flank's blade (a development's
-        # variants: the same tip plane within its tolerance, fewer root lines)
-        last = ("tip plane last", t.blade.side)
+        # the secant from the first placement of this flank's blade (a development's
+        # variants: the same tip plane within its tolerance, fewer root lines); the first,
+        # not the last, so that a placement does not depend on the ones made before it
+        # (issue 71: from the last, a step that kept nothing moved the written case)
+        last = ("tip plane first", t.blade.side)
         start = None if memo is None else memo.get(last)
         refused = ("tip plane refused", *key[1:], start)
         if memo is not None and refused in memo:  # tried from this start: the same error
@@ -1272,7 +1282,7 @@ def _tip_on_root_cone(fs: FlankSynthesis, pair: _PairData,
             raise
         if memo is not None:
             memo[key] = placed
-            memo[last] = (placed.moved, placed.u_touch)
+            memo.setdefault(last, (placed.moved, placed.u_touch))
     return replace(fs, tools=t._replace(blade=placed.blade, settings=placed.settings),
                    tip_moved=placed.moved)
 

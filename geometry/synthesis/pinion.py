@@ -14,7 +14,7 @@ Public functions
 PinionTools            the pinion's blade and settings of one flank
 pinion_generate_tools  pinion blade and settings that realise a shape operator at M
 shift_roll_origin      the same generated flank, turned about the work axis
-WarmTools              a series of nearby tool syntheses, each continued from the last
+WarmTools              a series of nearby tool syntheses, each continued from the first
 solve_tool_unknowns    the tool unknowns that give the generated flank its shape at M
 keep_last              an evaluation that returns its last result again
 """
@@ -85,9 +85,12 @@ _WARM_EVALUATIONS = 16
 
 
 class WarmTools:
-    """The last solution of a series of nearby pinion tool syntheses (issue 75: a
+    """The solution of a series of nearby pinion tool syntheses (issue 75: a
     development's trials of one flank, whose prescriptions move the target shape a
-    little), continued by the next one.
+    little) that the next one continues from: the last one, given to
+    :func:`solve_tool_unknowns` again; the first one, kept by :meth:`anchor` and handed
+    to each synthesis as a :meth:`fork` (the synthesis memo's, issue 71: a synthesis
+    independent of which others ran before it).
 
     :func:`solve_tool_unknowns` given an instance with a solution starts there: Newton's
     method on the square system (three unknowns, three shape components) with the last
@@ -124,6 +127,48 @@ class WarmTools:
         self.inner: np.ndarray | None = None
         self.used = 0
         self.cold = 0
+
+    def fork(self) -> WarmTools:
+        """A copy of this series' start for one synthesis to continue from and update
+        (:func:`solve_tool_unknowns` changes the instance it is given); this instance is
+        left as it is, its counts zero in the copy.
+
+        Returns
+        -------
+        WarmTools
+            The solution, Jacobian, envelope parameters and inner pose copied (None where
+            this instance has none).
+        """
+        out = WarmTools()
+        out.x, out.jac, out.params, out.inner = (
+            None if v is None else np.array(v, float, copy=True)
+            for v in (self.x, self.jac, self.params, self.inner))
+        return out
+
+    def anchor(self, solved: WarmTools) -> None:
+        """Keep ``solved`` (a :meth:`fork` after its synthesis) as the series' start where
+        the series has none yet, and add its counts: later syntheses continue from the
+        series' first solution, not from the last one.
+
+        Why: a continued synthesis lands on its root only to the warm iteration's
+        tolerance (:data:`WARM_TOLERANCE`, ~1e-13 relative on the unknowns), and the
+        modified roll tuned from those tools moves ~1e-7 relative with them
+        (tests/test_synthesis_memo.py); continued from the last synthesis, a design's
+        written settings depended on which syntheses ran before it (the miter 12x12 of
+        branch miter89: a check step that kept nothing moved them in the 9th digit, issue
+        71). From the first, a design's tools are a function of its own inputs and the
+        series' first synthesis (a development's search start) alone.
+
+        Parameters
+        ----------
+        solved : WarmTools
+            The fork a synthesis continued from, as that synthesis left it.
+        """
+        if self.x is None and solved.x is not None:
+            self.x, self.jac, self.params, self.inner = (
+                solved.x, solved.jac, solved.params, solved.inner)
+        self.used += solved.used
+        self.cold += solved.cold
 
 
 def _broyden(residual, x0: np.ndarray, jac: np.ndarray, scale: np.ndarray,
