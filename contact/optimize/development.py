@@ -225,7 +225,9 @@ from contact.optimize.development_targets import (
 from contact.optimize.development_written import with_synthesis_fe_level
 from contact.optimize.development_written_drive import written_drive_check
 from contact.optimize.development_written_lte import (
+    WindowMissed,
     redeveloped_in_window,
+    window_missed,
     window_name,
     written_lte_capacity,
 )
@@ -280,7 +282,8 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
             gear_fallback: bool = True, outclassed_below: float = math.nan,
             foresee_cut: bool = False, apply_remedy: bool = False,
             torque_name: str = "",
-            shared: SharedDevelopments | None = None) -> DevelopmentResult:
+            shared: SharedDevelopments | None = None,
+            stop_over_lte: bool = False) -> DevelopmentResult:
     """Develop the drive flank, then the coast flank, of a basic design to the bearing of
     ``targets``.
 
@@ -354,6 +357,14 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
         computed with the same inputs. Default: new ones (the ``gear_fallback`` wrapper
         makes one for the developments it runs: the Formate gear developed in full after a
         foreseen cut's stop repeats the stopped development's search and check).
+    stop_over_lte : bool, optional
+        Default False. True (the drive developed again in its LTE window,
+        :func:`~contact.optimize.development_written_lte.redeveloped_in_window`, which
+        keeps it only where its LTE keeps ``ltca run``'s limit): stop after the drive
+        steps where the check's LTE record over the range already exceeds the limit
+        (:class:`~contact.optimize.development_written_lte.WindowMissed`,
+        :func:`~contact.optimize.development_written_lte.window_missed`): no coast flank,
+        FE root check or case for a result that would not be kept.
 
     Returns
     -------
@@ -377,6 +388,9 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
     CutForeseen
         ``foresee_cut`` and the Formate bearing's local pitting bound below the share of
         the rated torque :func:`~contact.optimize.development_process.cut_foreseen` names.
+    WindowMissed
+        ``stop_over_lte`` and the drive design's LTE over the range above the limit after
+        the drive steps.
 
     Notes
     -----
@@ -566,6 +580,9 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
                                                     outclassed_below=outclassed_below))
     if again is not None:
         return again
+    # a re-development in the LTE window, kept only where its LTE keeps the limit: stopped
+    # where that is known to fail already (development_written_lte.window_missed)
+    _stop_where_missed(setup, best, stop_over_lte, say)
     developed = with_flank_options(basic, flank, best.values)
     # the coast flank, after the drive flank is chosen (which it does not change): checked
     # at the default sampling as synthesised, developed where it misses a target
@@ -1181,8 +1198,24 @@ def _at_written_lte(best: DevelopmentEvaluation, basic: BasicDesign,
     best = written_lte_capacity(best, targets, setup, teeth, say)
     _outclassed(setup, outclassed_below)
     # the re-development's torque named as what it is (not the basic file's)
-    rerun = functools.partial(rerun, torque_name=window_name(setup))
+    # (stopped after its drive steps where its LTE already breaks the limit it is kept by)
+    rerun = functools.partial(rerun, torque_name=window_name(setup), stop_over_lte=True)
     return best, redeveloped_in_window(rerun, setup, basic, say)
+
+
+def _stop_where_missed(setup: dict[str, Any], best: DevelopmentEvaluation, stop: bool,
+                       say: Callable[[str], None]) -> None:
+    """Where ``stop`` (:func:`develop`'s ``stop_over_lte``), raise
+    :class:`~contact.optimize.development_written_lte.WindowMissed` where the check's LTE
+    record over the range of the drive design ``best`` exceeds the verdict's limit after
+    the drive steps (:func:`~contact.optimize.development_written_lte.window_missed`),
+    said through ``say``."""
+    missed = window_missed(setup, best) if stop else None
+    if missed is not None:
+        say(f"  its drive LTE p-p at most {missed['peak']:.1f} urad over the range after the "
+            "drive steps: stopped (a re-development in the LTE window is not kept above "
+            "the limit)")
+        raise WindowMissed(missed)
 
 
 def _at_given_torque(basic: BasicDesign, torque: float, **kw: Any) -> DevelopmentResult:

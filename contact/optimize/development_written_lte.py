@@ -24,11 +24,16 @@ the LTE once more). Where no lowered torque keeps it with that bearing (its LTE 
 the unloaded TE at light load, and a lower design torque's light torque is lower too), the
 window it keeps the limit in is recorded and :func:`redeveloped_in_window` develops the
 drive again at its upper end, kept where that development keeps the limit (the 14x36:
-211.7 N m, 46.8 / 50.1 µrad). A design torque the basic file gives is kept.
+211.7 N m, 46.8 / 50.1 µrad). A design torque the basic file gives is kept. That
+re-development is stopped after its drive steps where its check's own LTE record over
+``ltca run``'s range exceeds the limit already (:class:`WindowMissed`,
+:func:`window_missed`): it could not be kept, so its coast flank, FE root checks and
+case are not made (issue 71, branch cpu90b).
 
 Public names
 ------------
-written_lte_capacity, lowered_torque, lte_window, redeveloped_in_window, window_name
+written_lte_capacity, lowered_torque, lte_window, redeveloped_in_window, window_name,
+window_missed, WindowMissed
 """
 
 from __future__ import annotations
@@ -55,8 +60,8 @@ from contact.study.lte_within import within_torque
 from geometry.core.errors import raise_if_interrupted
 from geometry.core.text import plain_number
 
-__all__ = ["lowered_torque", "lte_window", "redeveloped_in_window", "window_name",
-           "written_lte_capacity"]
+__all__ = ["WindowMissed", "lowered_torque", "lte_window", "redeveloped_in_window",
+           "window_missed", "window_name", "written_lte_capacity"]
 
 log = logging.getLogger("contact.optimize.development")
 
@@ -255,7 +260,9 @@ def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], ba
 
     Raises
     ------
-    Nothing the run raises but an interrupt (a failed run keeps the first development).
+    Nothing the run raises but an interrupt (a failed run keeps the first development; a
+    run stopped by :class:`WindowMissed` after its drive steps is one whose LTE does not
+    keep the limit).
 
     Notes
     -----
@@ -277,6 +284,14 @@ def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], ba
         f"developed again at {plain_number(torque)} N m")
     try:
         again = run(torque)
+    except WindowMissed as missed:  # stopped after its drive steps: it would not be kept
+        found = missed.record
+        say(f"development: at {plain_number(torque)} N m its drive LTE p-p "
+            f"{_curve((found['torques'], found['lte']))}, at most {found['peak']:.1f} over "
+            f"the range after its drive steps (the check's reading): above {limit:g} urad, "
+            "so not kept (its coast flank, FE root checks and case not made); the design "
+            f"torque kept at {plain_number(design)} N m")
+        return None
     except Exception as exc:  # the first development stands
         raise_if_interrupted(exc)
         log.info("development: the development at %.4g N m failed: %s", torque, exc)
@@ -303,6 +318,64 @@ def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], ba
     say(f"  design torque {plain_number(design)} -> {plain_number(torque)} N m: {source}")
     return dataclasses.replace(again, basic=basic, torque_source=source, torque_lowered=True,
                                lte_torque=float(again.torque[1]))
+
+
+class WindowMissed(Exception):
+    """A drive development run again in its LTE window
+    (:func:`redeveloped_in_window`) stopped after its drive steps, where its check's LTE
+    record over ``ltca run``'s range exceeds the verdict's limit (:func:`window_missed`):
+    ``record`` is that record (``torques`` [N·m], ``lte`` [µrad], ``peak`` [µrad], ``at``
+    [N·m], ``values``)."""
+
+    def __init__(self, record: dict[str, Any]) -> None:
+        self.record = record
+        super().__init__(f"drive LTE p-p {float(record['peak']):.1f} urad over the range")
+
+
+def window_missed(setup: dict[str, Any], best: DevelopmentEvaluation) -> dict[str, Any] | None:
+    """The check's LTE record over ``ltca run``'s range of the drive design ``best`` at the
+    development's torques where it exceeds the verdict's limit: the outcome that makes
+    :func:`redeveloped_in_window` not keep a development of a given design torque, known
+    after its drive steps.
+
+    Parameters
+    ----------
+    setup : dict
+        The development's state: its ``torques`` [N·m] (light, design) and the check's
+        record (:func:`~contact.optimize.development_range_lte.range_record`).
+    best : DevelopmentEvaluation
+        The drive design after the development's drive steps (its ``values`` [file
+        units]).
+
+    Returns
+    -------
+    dict or None
+        The record (``torques`` [N·m], ``lte`` [µrad], ``peak`` [µrad], ``at`` [N·m],
+        ``values``) where it is of ``best``'s values and its ``peak`` is above
+        :func:`~contact.optimize.development_range_lte.verdict_lte_limit` (60 µrad); None
+        where no record is of ``best`` at these torques or its peak keeps the limit (or is
+        not finite).
+
+    Notes
+    -----
+    Why the outcome is known there: a development of a given design torque keeps its
+    torques, and after its drive steps nothing records the drive LTE over the range again
+    (the coast flank's steps judge their own range on a copy of the setup; the gear-root
+    bearing step and the written drive check do not judge it). Its result's ``lte_range``
+    (:func:`contact.optimize.development._judged`) is then this record, or None where a
+    later step changed the drive design; :func:`redeveloped_in_window` keeps neither a
+    peak above the limit nor an unjudged range. So stopping there writes the same case
+    and saves the development's coast flank, FE root checks and final synthesis. Source:
+    issue 71 ("a new design ... within 2 min CPU"); the FM 16x16 at Σ 60°'s re-development
+    at 534.3 N·m wrote 116 / 108 µrad and was not kept (docs/synthesis.md, branch regain89).
+    """
+    from contact.optimize.development_range_lte import range_record
+
+    found = range_record(setup)
+    if found is None or found.get("values") != dict(best.values):
+        return None
+    peak = float(found.get("peak", math.nan))
+    return found if math.isfinite(peak) and peak > verdict_lte_limit() else None
 
 
 def window_name(setup: dict[str, Any]) -> str:
