@@ -565,8 +565,9 @@ def _ease_off(case: Case, flank: str | None, misalignment: Misalignment | None,
     pu, pv = np.where(mate, gm.u, np.nan), np.where(mate, gm.v, np.nan)
     kn = np.where(mate & gs.valid, kn / arm, np.nan)
     corner = _corner_nodes(reason, smooth, mt.section, pinion_working)
-    eps_raw, q_raw, kn, pu, pv = _fill_corner_nodes(corner, gs.grid.v, eps_raw, q_raw, kn,
-                                                    pu, pv)
+    eps_raw, q_raw, kn, pu, pv = _fill_corner_nodes(
+        corner, gs.grid.v, eps_raw, q_raw, kn, pu, pv, section=mt.section,
+        sheet=(reason == 0) | smooth)
     smooth |= corner
     return EaseOff(
         pinion_flank=pf, gear_flank=gf, u=gs.grid.u, v=gs.grid.v, axial=zt, radius=rt,
@@ -585,51 +586,89 @@ def _ease_off(case: Case, flank: str | None, misalignment: Misalignment | None,
         gear_parameters=np.stack([gs.s, gs.theta, gs.q], -1), gear_section=gs.section)
 
 
+#: the most gear nodes in a row (along the profile) that a pinion blade corner's strip holds
+#: (:func:`_corner_nodes`): two on the FM 16×16 at Σ 60° on 81 × 81, one on 41 × 21
+MAX_CORNER_RUN = 3
+
+
 def _corner_nodes(reason: np.ndarray, smooth: np.ndarray, pinion_section: np.ndarray,
                   working: list[int]) -> np.ndarray:
     """Gear nodes (nu, nv) without a mate whose conjugate lies on a corner of the pinion
-    blade (the toprem or flankrem junction): ``no_conjugate_mate`` between two nodes of
-    the smooth sheet, along the profile direction, whose mates lie on two different
-    working sections, each with a second sheet node beyond it.
+    blade (the toprem or flankrem junction): runs of up to :data:`MAX_CORNER_RUN`
+    ``no_conjugate_mate`` nodes along the profile direction between two nodes of the
+    smooth sheet whose mates lie on two different working sections, with a second sheet
+    node on the same section beyond at least one of them (:func:`_fill_corner_nodes`
+    continues that side into the run).
 
     The corner's normal turns by the relief angle, so the gear points it touches (a strip
-    under one grid step wide, along the corner line) have no mate on either section;
-    which nodes fall in the strip depends on where the strip crosses the grid, so along
-    the lengthwise direction a corner column alternates between mapped nodes and holes.
+    along the corner line) have no mate on either section; which nodes fall in the strip
+    depends on where the strip crosses the grid, so along the lengthwise direction a
+    corner column alternates between mapped nodes and holes, and a fine grid holds more
+    than one node of it in a row. A relief narrower than two profile steps holds a
+    single sheet node between the corner and the pinion's tip (the FM 16×16 at Σ 60° on
+    41 × 21: the tip relief's 10 % of the pinion profile between gear nodes 7 and 9).
+    A hole left unfilled cut the contact region at the grid line beyond it (on that
+    16×16 41 × 21 19 % of the pinion's profile short of its tip, 81 × 81 the relief's
+    strip; issue 71).
     """
     out = np.zeros(reason.shape, dtype=bool)
     sheet = (reason == 0) | smooth
     sec = np.where(sheet, pinion_section, -1)
-    hole = reason[:, 2:-2] == 2
-    lo_ok = sheet[:, 1:-3] & sheet[:, :-4]
-    hi_ok = sheet[:, 3:-1] & sheet[:, 4:]
-    lo, hi = sec[:, 1:-3], sec[:, 3:-1]
-    differ = (lo != hi) & np.isin(lo, working) & np.isin(hi, working)
-    out[:, 2:-2] = hole & lo_ok & hi_ok & differ
+    nv = reason.shape[1]
+    hole = reason == 2
+    first = hole & ~np.pad(hole, ((0, 0), (1, 0)))[:, :-1]  # a run's first node
+    for i, j0 in np.argwhere(first):
+        j1 = j0
+        while j1 + 1 < nv and hole[i, j1 + 1]:
+            j1 += 1
+        lo, hi = j0 - 1, j1 + 1
+        if j1 - j0 + 1 > MAX_CORNER_RUN or lo < 0 or hi >= nv:
+            continue
+        if not (sheet[i, lo] and sheet[i, hi] and sec[i, lo] != sec[i, hi]
+                and sec[i, lo] in working and sec[i, hi] in working):
+            continue
+        far_lo = lo >= 1 and sheet[i, lo - 1] and sec[i, lo - 1] == sec[i, lo]
+        far_hi = hi + 1 < nv and sheet[i, hi + 1] and sec[i, hi + 1] == sec[i, hi]
+        if far_lo or far_hi:
+            out[i, j0:j1 + 1] = True
     return out
 
 
 def _fill_corner_nodes(corner: np.ndarray, v: np.ndarray, eps: np.ndarray, q: np.ndarray,
-                       *fields: np.ndarray) -> tuple[np.ndarray, ...]:
+                       *fields: np.ndarray, section: np.ndarray,
+                       sheet: np.ndarray) -> tuple[np.ndarray, ...]:
     """The angular ease-off ε [rad], roll Q [rad] and ``fields`` at the corner nodes of
-    :func:`_corner_nodes`, from their neighbours along the profile direction.
+    :func:`_corner_nodes`, from the sheet nodes bounding each run along the profile
+    direction.
 
     ε: the larger of the two sections' ε continued linearly from their two nodes — the
     separation from a convex corner is the larger of the separations from its faces'
-    tangent planes (first order in the grid step); the other fields (Q, the gap
-    curvature, the pinion fractions), continuous across the corner, are interpolated
-    linearly between the two neighbours. Without this the spline of ε filled the hole
-    from the sheet's far side (up to 65 µrad above the corner's ε on the default case at
-    ΔE = ΔP = −0.12 mm) next to mapped corner nodes, and the UTE zig-zagged.
+    tangent planes (first order in the grid step); where one side holds a single sheet
+    node (``sheet``, ``section``, (nu, nv): the nodes of the smooth sheet and their mates'
+    pinion sections), the other side's continuation alone (a lower bound of the two
+    faces' larger separation, first order in the grid step as well). The other fields (Q,
+    the gap curvature, the pinion fractions), continuous across the corner, are
+    interpolated linearly between the two bounding nodes. Without this the spline of ε
+    filled the hole from the sheet's far side (up to 65 µrad above the corner's ε on the
+    default case at ΔE = ΔP = −0.12 mm) next to mapped corner nodes, and the UTE
+    zig-zagged.
     """
     eps, q = eps.copy(), q.copy()
     fields = tuple(f.copy() for f in fields)
     for i, j in np.argwhere(corner):
+        lo, hi = j - 1, j + 1
+        while corner[i, lo]:
+            lo -= 1
+        while corner[i, hi]:
+            hi += 1
+
         def along(f, k0, k1, i=i, j=j):
             return f[i, k1] + (f[i, k1] - f[i, k0]) * (v[j] - v[k1]) / (v[k1] - v[k0])
-        eps[i, j] = max(along(eps, j - 2, j - 1), along(eps, j + 2, j + 1))
+        sides = [along(eps, k0, k1) for k0, k1 in ((lo - 1, lo), (hi + 1, hi))
+                 if 0 <= k0 < len(v) and sheet[i, k0] and section[i, k0] == section[i, k1]]
+        eps[i, j] = max(sides)
         for f in (q, *fields):
-            f[i, j] = along(f, j - 1, j + 1)
+            f[i, j] = along(f, lo, hi)
     return (eps, q, *fields)
 
 
