@@ -47,6 +47,13 @@ fill; the guard's coarse LTCA and the default one) spread over 15–46 µrad in 
 1048–1290 MPa in flank peak, with or without the fill: both the stored and the new values
 lie inside that spread (the LTE's grid convergence at these excursions is an open point of
 its own), and only the fill removes the holes, a defect of the region, not of the grid.
+Reviewed again on lte91 (docs/synthesis.md "The sweep guard's moved points reviewed"): the
+fill adds exactly one gear node at each of the 7 points (41 × 21 node (32, 19), u 0.80, v
+0.953) and none at the other 18; the 41 × 21 flank peak, old and new, lies in that node's
+cell (the old value was the hole's own pressure concentration), the finer grids' at
+mid-flank; the filled edge peak agrees with the filled 81 × 81's within 43 MPa where it
+moved (before: up to 233 MPa off the unfilled 81 × 81). The file's ``rewritten``
+attribute records the rewrite.
 
 Why it is cheap enough for CI: the coarse LTCA (8 rolls per cycle, 8 segments per curve)
 leaves the ease-off, UTCA and the tooth models as they are in a full analysis (so every
