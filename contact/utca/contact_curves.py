@@ -474,6 +474,7 @@ def _curves_second_order(f: EaseOffFields, t: np.ndarray, frac: np.ndarray, *,
     second = first
     if redo.size:
         second = _with_rows(first, redo, _seed_places(f, (t + shift)[redo], frac))
+        second, shift = _safeguarded_step(f, t, frac, first, base, second, shift, redo)
     ok2 = np.isfinite(second.ute)
     # keep the first-order curve where the shifted one leaves the contact region
     use = ok2 | ~have
@@ -489,6 +490,92 @@ def _curves_second_order(f: EaseOffFields, t: np.ndarray, frac: np.ndarray, *,
     gap = np.where(fin, 0.5 * f.gap_at(us, vs) * shift[:, None] ** 2, np.nan)
     ute = cc.ute + 0.5 * _gap_at_contact(f, cc) * shift ** 2
     return cc._replace(target=t, shift=shift, gap=gap, ute=ute)
+
+
+#: halvings of a second-order step that would raise the pair's UTE (_safeguarded_step)
+_STEP_HALVINGS = 4
+
+
+def _safeguarded_step(f: EaseOffFields, t: np.ndarray, frac: np.ndarray,
+                      first: ContactCurves, base: np.ndarray, second: ContactCurves,
+                      shift: np.ndarray, rows: np.ndarray):
+    """The second-order curves of ``rows`` with every step that raises the cost halved.
+
+    The step t₀ = −g/K of :func:`_curves_second_order` is one Newton step on
+    c(t) = UTE_seed(q + t) + ½ K t² from the first-order curve (shift ``base``), with g
+    the slope of UTE_seed at H. Where UTE_seed is not smooth — H at the start of a relief,
+    where ε's profile slope jumps — the quadratic model fails and the step may land where
+    c is higher than at its start: on the default case's 81 × 61 grid one leaving pair's
+    step went to t = −35 mrad, c 126 µrad, where c was 104 at t = 0 and ≈ 98 near
+    −6 mrad, a spike of 53 µrad in the 500 N·m LTE at one roll (issue 71, grid
+    convergence). The real first contact is the minimum of c, so a step that raises it
+    is no better estimate than its start: it is halved toward ``base`` (up to
+    :data:`_STEP_HALVINGS` times) until c is not above the start's, else the first-order
+    curve is kept (the step-halving safeguard of a Newton iteration; Nocedal & Wright,
+    *Numerical Optimization*, 2nd ed., §3.1, sufficient decrease with a zero constant).
+
+    Parameters
+    ----------
+    f : EaseOffFields
+    t : ndarray (nb,) — [rad]
+        The pairs' roll values.
+    frac : ndarray (n_point,)
+        Sample fractions along the curves.
+    first : ContactCurves
+        The first-order curves (iso-lines Q = t + ``base``).
+    base : ndarray (nb,) — [rad]
+        Their shifts.
+    second : ContactCurves
+        The curves of the full steps (iso-lines Q = t + ``shift``) at ``rows``.
+    shift : ndarray (nb,) — [rad]
+        The full steps' shifts.
+    rows : int array
+        The rows that have a first-order curve.
+
+    Returns
+    -------
+    second : ContactCurves
+        With the rows whose full step raised c replaced by a halved step's curve, or the
+        first-order curve where no halving lowers c to the start's.
+    shift : ndarray (nb,) — [rad]
+        The shifts of those curves.
+
+    Notes
+    -----
+    Rows whose full step does not raise c are returned unchanged (bit for bit).
+    """
+    def cost(cc, s):
+        return cc.ute + 0.5 * _gap_at_contact(f, cc) * s ** 2
+
+    c0 = cost(first, base)[rows]
+    c1 = cost(second, shift)[rows]
+    worse = rows[np.isfinite(c1) & (c1 > c0)]
+    if worse.size == 0:
+        return second, shift
+    shift = shift.copy()
+    step = shift[worse] - base[worse]
+    todo = worse
+    for _ in range(_STEP_HALVINGS):
+        step = 0.5 * step
+        trial_shift = base[todo] + step
+        trial = _seed_places(f, t[todo] + trial_shift, frac)
+        c = cost(trial, trial_shift)
+        ok = np.isfinite(c) & (c <= cost(first, base)[todo])
+        if ok.any():
+            second = _with_rows(second, todo[ok], _take(trial, np.flatnonzero(ok)))
+            shift[todo[ok]] = trial_shift[ok]
+        todo, step = todo[~ok], step[~ok]
+        if todo.size == 0:
+            break
+    if todo.size:
+        second = _with_rows(second, todo, _take(first, todo))
+        shift[todo] = base[todo]
+    return second, shift
+
+
+def _take(cc: ContactCurves, rows: np.ndarray) -> ContactCurves:
+    """The curves ``rows`` of the batch ``cc`` (every field's first axis)."""
+    return ContactCurves(*(None if a is None else np.asarray(a)[rows] for a in cc))
 
 
 def _near_miss_curves(f: EaseOffFields, t: np.ndarray, frac: np.ndarray,
