@@ -1287,7 +1287,8 @@ def _cut_foreseen_at_check(best: DevelopmentEvaluation, basic: BasicDesign,
     at its check"): the bound before the steps / at the stop after them, N·m, against the
     stop: 17x23 427.1 / 427.1 (652.1: 0.65, not stopped here with the margin); 13x41 at Σ
     62° 51.0 / 89.0 (97.9: 0.52, stopped here); 14x36 at Σ 70° 76.0 / 104.2 (162.8: 0.47,
-    stopped here); 9x31 191.4 / 120.4 (174.2); 13x39 at Σ 80° (a kept Formate design)
+    stopped here; base91 74.5 / 125.5); 9x31 191.4 / 120.4 (174.2; base91 95.0 / 82.85:
+    0.546, stopped here, the same case but the text); 13x39 at Σ 80° (a kept Formate design)
     204.7 / 204.2 (202.0); the 19x26 at Σ 80° 485.2 / inf (581.4: 0.83, not stopped here;
     main does not stop it: its LTE capacity lowers the torque to 282.9, where S_H,loc
     holds). Source: issue 71.
