@@ -308,3 +308,101 @@ def test_the_bound_s_exponent_measured_from_two_torques_is_the_power_law_s(monke
     _power_law_analysis(monkeypatch, b, 1.02 * rated ** b)
     assert development_root.pitting_capacity_bound(object(), [light, rated],
                                                    measured=True) == math.inf
+
+
+def _at_check(monkeypatch, *, bound: float, process="Formate", lowered=False, given=None):
+    """``development._cut_foreseen_at_check`` on a stand-in checked design of the 14x36
+    (rated 361.8 N m), its bound ``bound``; returns the bounds taken."""
+    calls: list[str] = []
+    case = types.SimpleNamespace(gear=types.SimpleNamespace(process=process))
+    chosen = DevelopmentEvaluation(0, {}, {}, 1.0, {}, False, "", 0.0, case=case,
+                                   full=(1.0, {}, False), checked=True)
+
+    def bound_at(case, torques, measured=False):
+        assert measured
+        calls.append(f"bound at {torques[1]:g}")
+        return bound
+
+    monkeypatch.setattr(development_root, "pitting_capacity_bound", bound_at)
+    basic = types.SimpleNamespace(gives_design_torque=given is not None)
+    setup = {"torques": [0.15 * RATED, RATED], "lowered": lowered}
+    return calls, lambda foresee: development._cut_foreseen_at_check(
+        chosen, basic, setup, foresee, lambda line: None)
+
+
+def test_a_formate_development_stops_at_its_check_where_the_cut_is_foreseen(monkeypatch):
+    """Branches cpu89/cpu91: the static-capacity step's test (cut_foreseen: below 0.9 x 0.5
+    x the rated torque, 162.81 N m of the 14x36's 361.8) with the margin AT_CHECK_MARGIN
+    0.55 (89.546 N m), taken on the checked design before the check's steps: 76.0 N m (the
+    14x36's measured bound there) stops it (CutForeseen, its stage AT_CHECK), 89.6 N m
+    and 156.6 N m (below the stop after the steps, but the steps may raise the bound
+    1.745 x: the 13x41's) go on. No test without foresee_cut, on a generated gear, where the
+    basic file gives the design torque, or where the torque is lowered already (no rated
+    torque to judge against: NaN, never foreseen). The torques are exact products, so the
+    edges are tested 0.01 N m apart."""
+    from contact.optimize.development_process import AT_CHECK, AT_CHECK_MARGIN
+
+    assert AT_CHECK_MARGIN * 0.9 * 0.5 * RATED == pytest.approx(89.5455, abs=1e-4)
+    calls, check = _at_check(monkeypatch, bound=76.0)
+    with pytest.raises(CutForeseen) as info:
+        check(True)
+    assert calls == [f"bound at {RATED:g}"]
+    assert info.value.stage == AT_CHECK and info.value.rated == RATED
+    assert info.value.torque == 76.0
+    calls, check = _at_check(monkeypatch, bound=89.54)
+    with pytest.raises(CutForeseen):
+        check(True)
+    for bound in (89.55, STATIC * SAFETY ** 2, 170.0):
+        calls, check = _at_check(monkeypatch, bound=bound)
+        check(True)
+        assert calls == [f"bound at {RATED:g}"]
+    for kw in ({"process": "Generate"}, {"given": 300.0}):
+        calls, check = _at_check(monkeypatch, bound=1.0, **kw)
+        check(True)
+        assert calls == []
+    calls, check = _at_check(monkeypatch, bound=1.0)
+    check(False)
+    assert calls == []
+    calls, check = _at_check(monkeypatch, bound=1.0, lowered=True)
+    check(True)  # the bound taken, no rated torque: not foreseen
+    assert calls == [f"bound at {RATED:g}"]
+
+
+def test_a_cut_foreseen_at_the_check_gives_the_same_choice(monkeypatch):
+    """A stand-in development whose Formate gear stops at its check (branch cpu89) in place
+    of its static capacity: with_generated_gear develops the generated gear with the same
+    bound to stop at and keeps the same design, the text naming where the Formate stopped;
+    where the generated gear fails too, the Formate gear is developed in full and ranked as
+    before."""
+    from contact.optimize.development_process import AT_CHECK
+
+    basic = load_basic(UNSEEN / "spiral_bevel_14x36_s70.toml")
+    kept_at = {}
+    for stage in ("its static capacity", AT_CHECK):
+        run, given, formate = _runs(monkeypatch, lambda kw: _outcome("Generate", torque=371.2,
+                                                                     lowered=False))
+
+        def staged(b, _run=run, _stage=stage, **kw):
+            try:
+                return _run(b, **kw)
+            except CutForeseen as stop:
+                raise CutForeseen(stop.torque, stop.rated, _stage) from None
+
+        kept_at[stage] = with_generated_gear(staged, basic)
+        assert given == [("auto", {"foresee_cut": True}), ("Generate", BOUND)]
+    first, second = kept_at.values()
+    assert (first.report.gear.settings.process, first.torque) == (
+        second.report.gear.settings.process, second.torque) == ("Generate", (55.68, 371.2))
+    assert second.gear_process_text == first.gear_process_text.replace(
+        "stopped at its static capacity", f"stopped at {AT_CHECK}")
+    run, given, formate = _runs(monkeypatch, lambda kw: _outcome("Generate", torque=90.0))
+
+    def failing(b, **kw):
+        try:
+            return run(b, **kw)
+        except CutForeseen as stop:
+            raise CutForeseen(stop.torque, stop.rated, AT_CHECK) from None
+
+    kept = with_generated_gear(failing, basic)
+    assert given == [("auto", {"foresee_cut": True}), ("Generate", BOUND), ("auto", {})]
+    assert kept is not formate and kept.torque[1] == 102.3

@@ -543,6 +543,9 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
         # 13x37 at Sigma 60 deg's generated gear, 59.76 N m at 279.2 N m against the
         # Formate design's 77.9 N m: ~50 s less CPU, the case written the same)
         _pitting_outclassed(best.case, setup, outclassed_below, say)
+    # a Formate gear "auto" could generate: its torque cut foreseen on the checked design
+    # already, before the check's steps, as after them (branch cpu89)
+    _cut_foreseen_at_check(best, basic, setup, foresee_cut and root_stress, say)
     best = steps_on_each(best, others, steps)
     if not basic.gives_design_torque:
         best = _at_capacity(best, targets, setup, teeth, say, steps, placed,
@@ -1265,8 +1268,40 @@ def _formate(case: Case | None) -> bool:
     return case is not None and getattr(case.gear, "process", None) == "Formate"
 
 
+def _cut_foreseen_at_check(best: DevelopmentEvaluation, basic: BasicDesign,
+                           setup: dict[str, Any], foresee: bool,
+                           say: Callable[[str], None]) -> None:
+    """:func:`_cut_foreseen` on the checked drive design before the check's steps (stage
+    :data:`~contact.optimize.development_process.AT_CHECK`) where ``foresee`` (a pair
+    ``gear_process = "auto"`` can generate, root stress checked), the basic file gives no
+    design torque and the gear is Formate; the same test as at the static-capacity step
+    after the steps, at the rated torque ``setup["torques"][1]`` [N·m] (NaN where already
+    lowered: no test).
+
+    The test here asks the bound below :data:`~contact.optimize.development_process.
+    AT_CHECK_MARGIN` (0.55) of that stop: the steps may raise the bound.
+
+    Why: the check's steps are most of a stopped Formate development's CPU (the FM spiral
+    bevel 14x36 at Σ 70°'s A on base91: about 60 % of its synthesize). Measured (branches
+    cpu89 and cpu91, docs/performance.md "The 14×36 at Σ 70°'s Formate development stopped
+    at its check"): the bound before the steps / at the stop after them, N·m, against the
+    stop: 17x23 427.1 / 427.1 (652.1: 0.65, not stopped here with the margin); 13x41 at Σ
+    62° 51.0 / 89.0 (97.9: 0.52, stopped here); 14x36 at Σ 70° 76.0 / 104.2 (162.8: 0.47,
+    stopped here; base91 74.5 / 125.5); 9x31 191.4 / 120.4 (174.2; base91 95.0 / 82.85:
+    0.546, stopped here, the same case but the text); 13x39 at Σ 80° (a kept Formate design)
+    204.7 / 204.2 (202.0); the 19x26 at Σ 80° 485.2 / inf (581.4: 0.83, not stopped here;
+    main does not stop it: its LTE capacity lowers the torque to 282.9, where S_H,loc
+    holds). Source: issue 71.
+    """
+    from contact.optimize.development_process import AT_CHECK, AT_CHECK_MARGIN
+
+    if foresee and not basic.gives_design_torque and _formate(best.case):
+        _cut_foreseen(best.case, setup, float(setup["torques"][1]) if not setup["lowered"]
+                      else math.nan, say, stage=AT_CHECK, margin=AT_CHECK_MARGIN)
+
+
 def _cut_foreseen(case: Case | None, setup: dict[str, Any], rated: float,
-                  say: Callable[[str], None]) -> None:
+                  say: Callable[[str], None], stage: str = "", margin: float = 1.0) -> None:
     """Raise :class:`~contact.optimize.development_process.CutForeseen` where the upper
     estimate of the chosen drive design's local pitting capacity
     (:func:`contact.optimize.development_root.pitting_capacity_bound`, one analysis at
@@ -1274,7 +1309,10 @@ def _cut_foreseen(case: Case | None, setup: dict[str, Any], rated: float,
     between those two torques, branch cut85) foresees its design torque cut below half of
     ``rated`` [N·m] (:func:`contact.optimize.development_process.cut_foreseen`); the bound
     logged either way (issue 71/75: the spiral bevel 14x36 at Σ 70°'s Formate gear,
-    docs/synthesis.md; the 13x41 at Σ 62°'s, docs/own_gear_set.md)."""
+    docs/synthesis.md; the 13x41 at Σ 62°'s, docs/own_gear_set.md). ``stage``: where it
+    stops (:attr:`~contact.optimize.development_process.CutForeseen.stage`; default ""
+    the static-capacity step's); ``margin``: the share of the stop asked (default 1,
+    :func:`~contact.optimize.development_process.cut_foreseen`)."""
     from contact.optimize.development_process import CutForeseen, cut_foreseen
     from contact.optimize.development_root import pitting_capacity_bound
 
@@ -1284,11 +1322,12 @@ def _cut_foreseen(case: Case | None, setup: dict[str, Any], rated: float,
     bound = pitting_capacity_bound(case, setup["torques"], measured=True)
     log.info("development: Formate local pitting bound %.1f N m at %.1f N m (rated %.1f N m)",
              bound, torque, rated)
-    if cut_foreseen(bound, rated):
+    if cut_foreseen(bound, rated, margin):
         say(f"  local pitting capacity about {plain_number(bound)} N m (S_H,loc at "
             f"{plain_number(torque)} N m and its exponent measured), below half the rated "
-            f"{plain_number(rated)} N m with the margin: a design torque cut foreseen, stopped")
-        raise CutForeseen(bound, rated)
+            f"{plain_number(rated)} N m with the margin: a design torque cut foreseen, stopped"
+            + (f" at {stage}" if stage else ""))
+        raise CutForeseen(bound, rated, *((stage,) if stage else ()))
 
 
 def step_after_cut(before: DevelopmentEvaluation, cut: DevelopmentEvaluation,

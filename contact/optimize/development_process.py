@@ -58,9 +58,10 @@ from contact.ltca.plausibility import LTE_SPREAD_LIMIT, PLASTIC_SHARE_LIMIT
 from geometry.core.errors import InputError
 from geometry.core.text import plain_number
 
-__all__ = ["FORESEEN_CUT_MARGIN", "TORQUE_CUT_FRACTION", "CutForeseen", "Outclassed",
-           "better_outcome", "cut_below", "cut_foreseen", "cut_reference", "failed_outcome",
-           "lte_over", "outclassing_torque", "with_generated_gear"]
+__all__ = ["AT_CHECK", "AT_CHECK_MARGIN", "FORESEEN_CUT_MARGIN", "TORQUE_CUT_FRACTION",
+           "CutForeseen", "Outclassed", "better_outcome", "cut_below", "cut_foreseen",
+           "cut_reference", "failed_outcome", "lte_over", "outclassing_torque",
+           "with_generated_gear"]
 
 log = logging.getLogger(__name__)
 
@@ -316,9 +317,9 @@ class Outclassed(Exception):
 
 
 class CutForeseen(Exception):
-    """A Formate development stopped at its static-capacity step where its local pitting
-    bound foresees a design torque cut below :data:`TORQUE_CUT_FRACTION` × the rated torque
-    (``develop(..., foresee_cut=True)``, :func:`cut_foreseen`).
+    """A Formate development stopped at its check or its static-capacity step where its
+    local pitting bound foresees a design torque cut below :data:`TORQUE_CUT_FRACTION` × the
+    rated torque (``develop(..., foresee_cut=True)``, :func:`cut_foreseen`).
 
     Attributes
     ----------
@@ -326,15 +327,34 @@ class CutForeseen(Exception):
         The estimate of the design torque the development would end at.
     rated : float — [N·m]
         The rated torque (the ISO 10300 capacity) the development started at.
+    stage : str
+        Where it stopped, as the case's ``gear_process_text`` says it: ``"its static
+        capacity"`` (after the check's steps) or ``"its check, before the check's steps"``
+        (:data:`AT_CHECK`, branch cpu89).
     """
 
-    def __init__(self, torque: float, rated: float) -> None:
+    def __init__(self, torque: float, rated: float, stage: str = "its static capacity"
+                 ) -> None:
         super().__init__(f"local pitting capacity about {plain_number(torque)} of "
                          f"{plain_number(rated)} N m")
-        self.torque, self.rated = float(torque), float(rated)
+        self.torque, self.rated, self.stage = float(torque), float(rated), str(stage)
 
 
-def cut_foreseen(bound: float, rated: float) -> bool:
+#: :attr:`CutForeseen.stage` of a Formate development stopped on its checked design, before
+#: the check's steps (:func:`contact.optimize.development.develop`, branch cpu89)
+AT_CHECK = "its check, before the check's steps"
+
+#: The share of :func:`cut_foreseen`'s stop below which the bound taken on the checked
+#: design, before the check's steps, stops a Formate development there (branch cpu91).
+#: Measured (docs/performance.md, cpu89 and cpu91): the steps moved the bound by 0.63 …
+#: 1.745 × on the designs whose bound stayed finite (the 13x41 at Σ 62° 51.0 → 89.0 N·m
+#: the most), so a bound below 1 / 1.745 = 0.573 of the stop was below it after the steps
+#: on each; the 19x26 at Σ 80° (0.83 of its stop before the steps, inf after: its LTE
+#: capacity lowered the torque), which main does not stop, is above 0.55.
+AT_CHECK_MARGIN = 0.55
+
+
+def cut_foreseen(bound: float, rated: float, margin: float = 1.0) -> bool:
     """Whether a Formate bearing's local pitting bound foresees its design torque cut below
     :data:`TORQUE_CUT_FRACTION` × ``rated`` (a failed outcome, :func:`failed_outcome`).
 
@@ -347,11 +367,14 @@ def cut_foreseen(bound: float, rated: float) -> bool:
         light and design torque in [0.2, 0.5]; inf where S_H,loc ≥ S_Hmin).
     rated : float — [N·m]
         The rated torque (NaN: none known, never foreseen).
+    margin : float, optional
+        A share of the stop (default 1): :data:`AT_CHECK_MARGIN` where the bound is taken
+        on the checked design before the check's steps (branch cpu91).
 
     Returns
     -------
     bool
-        ``bound < FORESEEN_CUT_MARGIN × TORQUE_CUT_FRACTION × rated``.
+        ``bound < margin × FORESEEN_CUT_MARGIN × TORQUE_CUT_FRACTION × rated``.
 
     Notes
     -----
@@ -364,7 +387,7 @@ def cut_foreseen(bound: float, rated: float) -> bool:
     lowering the bearing's peak.
     """
     return (math.isfinite(rated) and rated > 0.0 and not math.isnan(bound)
-            and bound < FORESEEN_CUT_MARGIN * TORQUE_CUT_FRACTION * rated)
+            and bound < margin * FORESEEN_CUT_MARGIN * TORQUE_CUT_FRACTION * rated)
 
 
 def outclassing_torque(first: Any, rated: float) -> float:
@@ -603,7 +626,7 @@ def _generated_after_foreseen(run: Callable[..., Any], basic: Any, foreseen: Cut
             "Formate gear in full")
         return second, None
     text = (f"Gear process (auto): generated. The Formate gear's development was stopped at "
-            f"its static capacity, its local pitting capacity about "
+            f"{foreseen.stage}, its local pitting capacity about "
             f"{plain_number(foreseen.torque)} N m, below {FORESEEN_CUT_MARGIN:g} of "
             f"{TORQUE_CUT_FRACTION:g} of its rated {plain_number(foreseen.rated)} N m (a design "
             f"torque cut, a failed outcome: contact.optimize.development_process.cut_foreseen); "
