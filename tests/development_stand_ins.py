@@ -15,6 +15,7 @@ tests/test_development_pitting_step.py) hand their step and its stand-in returns
 
 from __future__ import annotations
 
+import dataclasses
 import types
 from collections.abc import Callable, Iterable, Mapping
 from typing import Any
@@ -179,3 +180,17 @@ def lte_law_start(monkeypatch, law, torques: Iterable[float], values: Mapping[st
     best = dataclasses.replace(best, case=dict(values))
     seen.clear()
     return targets, setup, best, seen
+
+
+@dataclasses.dataclass(frozen=True)
+class WindowResult:
+    """The fields of a DevelopmentResult that
+    ``development_written_lte.redeveloped_in_window`` reads and replaces (tests/
+    test_development_written_lte.py, tests/test_development_window_missed.py)."""
+    best: object
+    lte_range: dict | None
+    torque: tuple[float, float]
+    basic: object = "given"
+    torque_source: str = "[synthesis] design_torque of the basic file"
+    torque_lowered: bool = False
+    lte_torque: float = float("nan")

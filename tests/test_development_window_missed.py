@@ -11,11 +11,10 @@ limit, not numbers of a gear, so they compare exactly.
 
 from __future__ import annotations
 
-import dataclasses
 import math
 
 import pytest
-from development_stand_ins import checked
+from development_stand_ins import WindowResult, checked
 from development_stand_ins import metrics as _metrics
 
 from contact.optimize import development as dev
@@ -71,18 +70,6 @@ def test_the_stop_is_asked_for_alone():
     assert "at most 116.0 urad over the range" in lines[-1]
 
 
-@dataclasses.dataclass(frozen=True)
-class _Result:
-    """The fields of a DevelopmentResult that redeveloped_in_window reads."""
-    best: object
-    lte_range: dict | None
-    torque: tuple[float, float]
-    basic: object = "given"
-    torque_source: str = ""
-    torque_lowered: bool = False
-    lte_torque: float = float("nan")
-
-
 def _window():
     """The setup written_lte_capacity leaves where no lower torque keeps the limit (the
     16x16's window 375.7-534.4 N m)."""
@@ -97,7 +84,7 @@ def test_a_stopped_re_development_is_not_kept_as_one_run_in_full_is_not():
     record = _setup(116.0)[RANGE_KEY][tuple(_TORQUES)]
 
     def in_full(torque):
-        return _Result(_best(), record, (80.1, torque))
+        return WindowResult(_best(), record, (80.1, torque))
 
     def stopped(torque):
         raise WindowMissed(record)

@@ -10,12 +10,11 @@ linear between: the tests are the rule's choices, not numbers of a gear.
 
 from __future__ import annotations
 
-import dataclasses
 import math
 
 import numpy as np
 import pytest
-from development_stand_ins import checked, lte_law_start
+from development_stand_ins import WindowResult, checked, lte_law_start
 from development_stand_ins import metrics as _metrics
 
 from contact.optimize.development_written_lte import lowered_torque, written_lte_capacity
@@ -121,18 +120,6 @@ def test_a_lowered_light_torque_above_the_limit_keeps_the_design(monkeypatch):
     assert 31.8 < low < 40.0 and 187.1 < high < 213.4
 
 
-@dataclasses.dataclass(frozen=True)
-class _Result:
-    """The fields of a DevelopmentResult that redeveloped_in_window reads and replaces."""
-    best: object
-    lte_range: dict | None
-    torque: tuple[float, float]
-    basic: object = "given"
-    torque_source: str = "[synthesis] design_torque of the basic file"
-    torque_lowered: bool = False
-    lte_torque: float = float("nan")
-
-
 def _window_setup():
     """The setup written_lte_capacity leaves on the measured 14x36 (window 36.4-212.1)."""
     return {"torques": [55.6, 371.2], "source": "the ISO 10300 capacity, the pinion ...",
@@ -152,7 +139,7 @@ def test_the_drive_developed_again_at_the_window_s_upper_end_is_kept_where_it_ke
 
     def run(torque):
         asked.append(torque)
-        return _Result(best, {"peak": 28.4, "at": 91.9}, (31.8, torque))
+        return WindowResult(best, {"peak": 28.4, "at": 91.9}, (31.8, torque))
 
     lines: list[str] = []
     got = redeveloped_in_window(run, _window_setup(), "as given", lines.append)
@@ -178,9 +165,9 @@ def test_no_redevelopment_without_a_window_and_none_kept_above_the_limit():
                                  lambda s: None) is None
     best = checked(dict(_VALUES), _metrics(lte_peak_to_peak=[47.0, 50.4]),
                    DevelopmentTargets(), 0.6)
-    between = lambda t: _Result(best, {"peak": 61.0, "at": 91.9}, (31.8, t))  # noqa: E731
+    between = lambda t: WindowResult(best, {"peak": 61.0, "at": 91.9}, (31.8, t))  # noqa: E731
     assert redeveloped_in_window(between, _window_setup(), None, lambda s: None) is None
-    unjudged = lambda t: _Result(best, None, (31.8, t))  # noqa: E731
+    unjudged = lambda t: WindowResult(best, None, (31.8, t))  # noqa: E731
     assert redeveloped_in_window(unjudged, _window_setup(), None, lambda s: None) is None
 
     def fails(torque):

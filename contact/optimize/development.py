@@ -1242,7 +1242,7 @@ def _at_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     # a Formate gear "auto" could generate: its design torque cut foreseen from the
     # bearing's local pitting bound at its static capacity (development_process)
     foresee = foresee_cut and _formate(best.case)
-    rated = float(setup["torques"][1]) if not setup["lowered"] else math.nan
+    rated = _rated(setup)
     best = static_capacity(best, targets, setup, teeth, say)
     # where the chosen design's LTE still FAILs ltca run's verdict (no design checked
     # passed it: the 16x16 at Sigma 60 deg, 122 urad at its ISO capacity), the torque
@@ -1266,6 +1266,13 @@ def _at_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
 def _formate(case: Case | None) -> bool:
     """Whether ``case``'s gear is cut Formate (no case: False)."""
     return case is not None and getattr(case.gear, "process", None) == "Formate"
+
+
+def _rated(setup: dict[str, Any]) -> float:
+    """The rated torque [N·m] a foreseen cut is judged against: the development's design
+    torque ``setup["torques"][1]`` while it is the one it started at, NaN once lowered
+    (:func:`_cut_foreseen`: no test then)."""
+    return float(setup["torques"][1]) if not setup["lowered"] else math.nan
 
 
 def _cut_foreseen_at_check(best: DevelopmentEvaluation, basic: BasicDesign,
@@ -1296,8 +1303,8 @@ def _cut_foreseen_at_check(best: DevelopmentEvaluation, basic: BasicDesign,
     from contact.optimize.development_process import AT_CHECK, AT_CHECK_MARGIN
 
     if foresee and not basic.gives_design_torque and _formate(best.case):
-        _cut_foreseen(best.case, setup, float(setup["torques"][1]) if not setup["lowered"]
-                      else math.nan, say, stage=AT_CHECK, margin=AT_CHECK_MARGIN)
+        _cut_foreseen(best.case, setup, _rated(setup), say, stage=AT_CHECK,
+                      margin=AT_CHECK_MARGIN)
 
 
 def _cut_foreseen(case: Case | None, setup: dict[str, Any], rated: float,

@@ -488,8 +488,7 @@ def _curves_second_order(f: EaseOffFields, t: np.ndarray, frac: np.ndarray, *,
     us = np.where(fin, cc.u, f.u[0])
     vs = np.where(fin, cc.v, f.v[0])
     gap = np.where(fin, 0.5 * f.gap_at(us, vs) * shift[:, None] ** 2, np.nan)
-    ute = cc.ute + 0.5 * _gap_at_contact(f, cc) * shift ** 2
-    return cc._replace(target=t, shift=shift, gap=gap, ute=ute)
+    return cc._replace(target=t, shift=shift, gap=gap, ute=_second_order_ute(f, cc, shift))
 
 
 #: halvings of a second-order step that would raise the pair's UTE (_safeguarded_step)
@@ -544,12 +543,9 @@ def _safeguarded_step(f: EaseOffFields, t: np.ndarray, frac: np.ndarray,
     -----
     Rows whose full step does not raise c are returned unchanged (bit for bit).
     """
-    def cost(cc, s):
-        return cc.ute + 0.5 * _gap_at_contact(f, cc) * s ** 2
-
-    c0 = cost(first, base)[rows]
-    c1 = cost(second, shift)[rows]
-    worse = rows[np.isfinite(c1) & (c1 > c0)]
+    c_first = _second_order_ute(f, first, base)
+    c1 = _second_order_ute(f, second, shift)[rows]
+    worse = rows[np.isfinite(c1) & (c1 > c_first[rows])]
     if worse.size == 0:
         return second, shift
     shift = shift.copy()
@@ -559,8 +555,8 @@ def _safeguarded_step(f: EaseOffFields, t: np.ndarray, frac: np.ndarray,
         step = 0.5 * step
         trial_shift = base[todo] + step
         trial = _seed_places(f, t[todo] + trial_shift, frac)
-        c = cost(trial, trial_shift)
-        ok = np.isfinite(c) & (c <= cost(first, base)[todo])
+        c = _second_order_ute(f, trial, trial_shift)
+        ok = np.isfinite(c) & (c <= c_first[todo])
         if ok.any():
             second = _with_rows(second, todo[ok], _take(trial, np.flatnonzero(ok)))
             shift[todo[ok]] = trial_shift[ok]
@@ -571,6 +567,13 @@ def _safeguarded_step(f: EaseOffFields, t: np.ndarray, frac: np.ndarray,
         second = _with_rows(second, todo, _take(first, todo))
         shift[todo] = base[todo]
     return second, shift
+
+
+def _second_order_ute(f: EaseOffFields, cc: ContactCurves, shift: np.ndarray) -> np.ndarray:
+    """c(t) = UTE_seed(q + t) + ½ K t² [rad] of the curves ``cc`` drawn at the shifts
+    ``shift`` (nb,) [rad]: the pair's second-order UTE (K at each curve's contact point,
+    :func:`_gap_at_contact`), the cost :func:`_safeguarded_step` compares."""
+    return cc.ute + 0.5 * _gap_at_contact(f, cc) * shift ** 2
 
 
 def _take(cc: ContactCurves, rows: np.ndarray) -> ContactCurves:
