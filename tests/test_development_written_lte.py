@@ -11,6 +11,7 @@ linear between: the tests are the rule's choices, not numbers of a gear.
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -22,6 +23,9 @@ from contact.optimize.development_written_lte import lowered_torque, written_lte
 #: (torque [N m], LTE p-p [µrad]) of the 14x36's written bearing
 _LAW = ((20.0, 45.0), (55.6, 49.1), (161.0, 60.3), (266.0, 71.2), (371.2, 83.5))
 _VALUES = {"path_angle": -45.0, "ellipse_length": 0.7}
+#: a basic file of the repository (the stand-in development's basic data)
+_BASIC = (Path(__file__).resolve().parent.parent / "benchmarks" / "data" / "unseen_designs"
+          / "spiral_bevel_15x28_s110.toml")
 
 
 def _start(monkeypatch, law=_LAW, torques=(55.6, 371.2)):
@@ -128,23 +132,37 @@ def _window_setup():
 
 def test_the_drive_developed_again_at_the_window_s_upper_end_is_kept_where_it_keeps_60():
     """The 14x36 given 212.1 N m (measured: 47 / 50 µrad at 31.8 / 212.1 N m, 28.4 between):
-    the run asked at floor_torque(212.147) = 212.1, its result kept with the basic data as
-    given, the torque the development's own and its source in numbers."""
+    the run asked at floor_torque(212.147) = 212.1, its result kept with its written
+    prescriptions at the design torque as given (given_torque_of), the torque the
+    development's own and its source in numbers."""
+    import dataclasses
+
     from contact.optimize.development import DevelopmentTargets
     from contact.optimize.development_written_lte import redeveloped_in_window
+    from geometry.synthesis.basic_design import load_basic, with_flank_options
 
+    given = load_basic(_BASIC)
     asked: list[float] = []
     best = checked(dict(_VALUES), _metrics(lte_peak_to_peak=[47.0, 50.4]),
                    DevelopmentTargets(), 0.6)
+    drive = given.options.drive_flank
 
     def run(torque):
         asked.append(torque)
-        return WindowResult(best, {"peak": 28.4, "at": 91.9}, (31.8, torque))
+        at = dataclasses.replace(given, options=dataclasses.replace(
+            given.options, design_torque=torque))
+        return WindowResult(best, {"peak": 28.4, "at": 91.9}, (31.8, torque),
+                            basic=with_flank_options(at, drive, _VALUES))
 
     lines: list[str] = []
-    got = redeveloped_in_window(run, _window_setup(), "as given", lines.append)
+    got = redeveloped_in_window(run, _window_setup(), given, lines.append)
     assert asked == [pytest.approx(212.1, abs=1e-9)]
-    assert got.basic == "as given" and got.torque_lowered is True
+    assert got.torque_lowered is True
+    # the written prescriptions kept (the remedies are checked at them), the design torque
+    # the file's (ltca synthesize's case reads it as given: written_case)
+    assert got.basic.options.design_torque == given.options.design_torque
+    assert got.basic.options.flank(drive) == with_flank_options(
+        given, drive, _VALUES).options.flank(drive) != given.options.flank(drive)
     # the torque the LTE window set: a cut to it is no failed outcome (development_process)
     assert got.lte_torque == pytest.approx(212.1, abs=1e-9)
     assert "371.2 N m" in got.torque_source and "47.0 / 50.4 urad at 31.8 / 212.1 N m" in (

@@ -60,7 +60,8 @@ from contact.study.lte_within import within_torque
 from geometry.core.errors import raise_if_interrupted
 from geometry.core.text import plain_number
 
-__all__ = ["WindowMissed", "lowered_torque", "lte_window", "redeveloped_in_window",
+__all__ = ["WindowMissed", "given_torque_of", "lowered_torque", "lte_window",
+           "redeveloped_in_window",
            "window_missed", "window_name", "written_lte_capacity"]
 
 log = logging.getLogger("contact.optimize.development")
@@ -253,7 +254,8 @@ def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], ba
     DevelopmentResult or None
         The development at ``floor_torque(high)``, its design torque the development's own
         (``torque_lowered``, ``lte_torque`` that torque, ``torque_source`` saying why,
-        ``basic`` as given), where its
+        ``basic`` its written prescriptions at the design torque as given,
+        :func:`given_torque_of`), where its
         drive LTE p-p at the light and design torque and between them (its
         ``lte_range``) keeps the limit; None where no window was recorded, the run fails
         or its LTE does not keep the limit.
@@ -316,8 +318,44 @@ def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], ba
               f"{plain_number(torque)} N m: {_curve((again.torque, ends))}, "
               f"at most {peak:.1f} urad over ltca run's range (the check's reading)")
     say(f"  design torque {plain_number(design)} -> {plain_number(torque)} N m: {source}")
-    return dataclasses.replace(again, basic=basic, torque_source=source, torque_lowered=True,
+    return dataclasses.replace(again, basic=given_torque_of(again.basic, basic),
+                               torque_source=source, torque_lowered=True,
                                lte_torque=float(again.torque[1]))
+
+
+def given_torque_of(developed: Any, basic: Any) -> Any:
+    """The re-development's basic design ``developed`` (its written prescriptions, both
+    flanks) with the design torque ``basic``, the basic data as given, names
+    (``[synthesis] design_torque``, None where it names none).
+
+    Parameters
+    ----------
+    developed : geometry.synthesis.basic_design.BasicDesign
+        The basic design the development at the window's torque wrote (that torque its
+        ``design_torque``).
+    basic : geometry.synthesis.basic_design.BasicDesign
+        The basic data as given.
+
+    Returns
+    -------
+    BasicDesign
+        ``developed`` with ``options.design_torque`` of ``basic``.
+
+    Notes
+    -----
+    Why both: ``ltca synthesize``'s case reads the design torque the file gave from the
+    result's ``basic`` (:func:`contact.optimize.development_written.written_case`; the
+    lowered torque is the result's own, ``torque_lowered``), while the contact-ratio
+    remedies' checks and the LTE diagnosis synthesise at the result's ``basic`` as the
+    written prescriptions (:func:`contact.optimize.development_remedy.prescribed_basic`).
+    The basic data as given there checked the remedies at the *start* prescriptions: the
+    spiral bevel 15x28 at Σ 110° (benchmarks/data/unseen_designs), re-developed at
+    234.6 N·m, had its b2 36.5 mm remedy checked at 116 µrad against the written case's
+    45 (its start prescriptions' own unloaded TE 141.6 µrad) and refused
+    (docs/synthesis.md, "The remedies checked at the start prescriptions").
+    """
+    return dataclasses.replace(developed, options=dataclasses.replace(
+        developed.options, design_torque=basic.options.design_torque))
 
 
 class WindowMissed(Exception):
