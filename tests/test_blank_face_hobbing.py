@@ -548,8 +548,20 @@ def test_synthesis_takes_a_face_hobbed_design_and_refuses_a_cutter_that_does_not
     raw["design"] = {**raw["design"], "z0": 5}
     assert basic_from_dict(raw, fit=False).design.process == "face hobbing"
     raw["design"] = {**raw["design"], "z0": 7}
-    with pytest.raises(InputError, match=r"^design\.z0: 7 blade groups share the factor 7"):
+    with pytest.raises(InputError, match=r"^design\.z0: 7 blade groups share the factor 7"
+                       r".*; the nearest that hunt both: z0 5 or 11$"):
         basic_from_dict(raw, fit=False)
+
+
+def test_the_nearest_hunting_numbers_of_blade_groups():
+    """Round 31's FH 12x50 given z0 5 (which shares 5 with 50): 4, 3 and 2 share a factor
+    with 12, 6 with 12 too, so 1 below and 7 above (by hand). No number below 1; none above
+    the largest offered."""
+    from geometry.synthesis.basic_design import hunting_z0
+
+    assert hunting_z0(5, 12, 50) == (1, 7)
+    assert hunting_z0(2, 12, 50) == (1, 7)
+    assert hunting_z0(19, 30, 49, largest=19) == (17,)
 
 
 @pytest.mark.parametrize("sample", SAMPLES)

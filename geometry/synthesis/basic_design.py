@@ -637,6 +637,41 @@ def flank_option_values(options: FlankOptions) -> dict[str, float]:
     return out
 
 
+def hunting_z0(z0: int, z1: int, z2: int, largest: int = 19) -> tuple[int, ...]:
+    """The numbers of blade groups nearest ``z0`` that hunt both members.
+
+    Parameters
+    ----------
+    z0 : int
+        The number of blade groups given [1].
+    z1, z2 : int
+        The pinion's and the gear's numbers of teeth [1].
+    largest : int, optional
+        The largest number of blade groups offered (face-hobbing cutters carry 1 to about
+        19 groups; Stadtfeld, *Gleason Bevel Gear Technology*, 2014, ch. on face hobbing).
+        Default 19.
+
+    Returns
+    -------
+    tuple of int
+        The nearest number below ``z0`` and the nearest above (each where one exists in
+        1 … ``largest``) with no common factor with ``z1`` and ``z2``, below first.
+    """
+    def hunts(n: int) -> bool:
+        return math.gcd(n, z1) == 1 and math.gcd(n, z2) == 1
+
+    below = next((n for n in range(z0 - 1, 0, -1) if hunts(n)), None)
+    above = next((n for n in range(z0 + 1, largest + 1) if hunts(n)), None)
+    return tuple(n for n in (below, above) if n is not None)
+
+
+def _hunting_z0_text(z0: int, z1: int, z2: int) -> str:
+    """"; the nearest that hunt both: z0 3 or 7" (:func:`hunting_z0`), "" where none."""
+    near = hunting_z0(z0, z1, z2)
+    return ("; the nearest that hunt both: z0 " + " or ".join(str(n) for n in near)
+            if near else "")
+
+
 def with_flank_options(basic: BasicDesign, flank: str,
                        values: Mapping[str, float]) -> BasicDesign:
     """The basic design with some prescriptions of one pinion flank replaced.
@@ -726,7 +761,8 @@ def basic_from_dict(raw: Mapping[str, Any], *, fit: bool = True) -> BasicDesign:
             raise InputError(
                 f"design.z0: {design.z0} blade groups share the factor "
                 f"{math.gcd(design.z0, z)} with {z} teeth; a face-hobbing cutter must hunt "
-                "both members (no common factor with z1 and z2)")
+                "both members (no common factor with z1 and z2)"
+                + _hunting_z0_text(design.z0, design.z1, design.z2))
     tg = dict(raw.get("targets", {}))
     adjust = tg.pop("adjust", [])
     if not isinstance(adjust, list) or not all(isinstance(a, str) for a in adjust):
