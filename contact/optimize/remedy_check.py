@@ -46,7 +46,8 @@ and ``ltca run``'s next step offers the remedies from there (:func:`read_record`
 
 Public names
 ------------
-UTE_GROWTH_MAX, UTE_KEPT_SHARE, ChangeCheck, check_change, unloaded_te_pp, refusal,
+UTE_GROWTH_MAX, UTE_KEPT_SHARE, BLANK_SHARE, ChangeCheck, check_change, blank_lowers,
+blank_ute_text, unloaded_te_pp, refusal,
 no_better, ranked_changes, checked_remedy_text, ute_sets_lte, ute_lte_text, unrelieved_te_pp,
 relief_lte_text, RECORD_TABLE,
 RemedyRecord, remedy_record, read_record, recorded_judge, LteDiagnosis, RATIO_TRIAL_TEXT,
@@ -64,8 +65,9 @@ from typing import Any, NamedTuple
 
 from contact.optimize.development_conjugacy import VALID_NODE_FRACTION_MIN
 
-__all__ = ["RATIO_TRIAL_TEXT", "RECORD_TABLE", "UTE_GROWTH_MAX", "UTE_KEPT_SHARE",
-           "ChangeCheck", "LteDiagnosis", "RemedyRecord", "check_change",
+__all__ = ["BLANK_SHARE", "RATIO_TRIAL_TEXT", "RECORD_TABLE", "UTE_GROWTH_MAX",
+           "UTE_KEPT_SHARE", "ChangeCheck", "LteDiagnosis", "RemedyRecord", "blank_lowers",
+           "blank_ute_text", "check_change",
            "checked_remedy_text", "lowest_checked", "lte_diagnosis", "no_better", "ranked_changes",
            "read_record", "recorded_judge", "refusal", "relief_lte_text", "remedy_record",
            "unloaded_te_pp", "unrelieved_te_pp", "ute_lowered_text", "ute_lte_text",
@@ -511,6 +513,87 @@ def ute_lowered_text(ute: float, span: float, low: ChangeCheck, limit: float) ->
             f"higher contact ratio lowers it; {RATIO_TRIAL_TEXT}")
 
 
+#: [1] the least share of the written drive flank's unloaded TE p-p that a checked
+#: contact-ratio remedy must remove, at the same prescriptions, for :func:`lte_diagnosis` to
+#: name the blank's contact ratio as part of what sets the LTE where that remedy does not
+#: take the unloaded TE within the verdict's limit (:func:`blank_lowers`). Measured (one
+#: synthesis of the changed basic data each, docs/own_gear_set.md rounds 21 and 30,
+#: docs/synthesis.md "Contact-ratio remedies checked before they are offered"): the spiral
+#: bevel 14x21 at Σ 125° 130 -> 85 µrad with b2 (35 % removed), the 21x21 97 -> 51 (47 %),
+#: against the face-hobbed 8x35 at k_d 2.16, 666 -> 609 µrad (9 %), whose unloaded TE is its
+#: prescriptions'. A quarter lies between the two groups with room on each side.
+BLANK_SHARE = 0.25
+
+
+def blank_lowers(ute: float, check_ute: float) -> bool:
+    """Whether a checked remedy removes at least :data:`BLANK_SHARE` of the written drive
+    flank's unloaded TE.
+
+    Parameters
+    ----------
+    ute : float — [µrad]
+        The written drive flank's unloaded TE p-p.
+    check_ute : float — [µrad]
+        The remedy's check: the unloaded TE p-p of the changed basic data at the same
+        prescriptions (:func:`check_change`).
+
+    Returns
+    -------
+    bool
+        ``check_ute <= (1 - BLANK_SHARE) * ute``; False where either is not finite or
+        ``ute`` is not positive.
+    """
+    if not (math.isfinite(ute) and math.isfinite(check_ute)) or ute <= 0.0:
+        return False
+    return check_ute <= (1.0 - BLANK_SHARE) * ute
+
+
+def blank_ute_text(ute: float, span: float, low: ChangeCheck, limit: float,
+                   prescriptions: str = "") -> str:
+    """The LTE diagnosis where the written drive flank's unloaded TE sets its LTE and a
+    checked contact-ratio remedy removes a large share of it (:func:`blank_lowers`), not
+    enough to take it within ``limit`` (:func:`lte_diagnosis`, cause ``"contact_ratios"``).
+
+    Parameters
+    ----------
+    ute : float — [µrad]
+        The written drive flank's unloaded TE p-p.
+    span : float — [µm]
+        Its ease-off's extent (NaN: not said).
+    low : ChangeCheck
+        The remedy's check (:func:`lowest_checked`).
+    limit : float — [µrad]
+        The verdict's LTE limit.
+    prescriptions : str, optional
+        The written drive prescriptions as said ("path_angle -58.8, ellipse_length 0.25,
+        te_level 10"); empty: not named.
+
+    Returns
+    -------
+    str
+        E.g. "the written drive flank's unloaded TE p-p is 130 urad (ease-off 160 um), above
+        the verdict's 60 urad before any load, and the remedy b2 = 39.3 takes it to 85 urad
+        at the same prescriptions (checked by a synthesis: 35 % of it is the blank's
+        contact ratio); the rest follows the drive prescriptions the development wrote
+        (…): a higher contact ratio is the lever left, …", ending in
+        :data:`RATIO_TRIAL_TEXT`.
+
+    Notes
+    -----
+    Why (issue 71, round 30, docs/own_gear_set.md "Round 30"): the spiral bevel 14x21 at
+    Σ 125° (ε_vβ 0.86) wrote a drive flank of unloaded TE p-p 130 µrad that its b2 remedy's
+    check took to 85 µrad; both commands said "that, not the contact ratios, sets its LTE".
+    """
+    span_said = f" (ease-off {span:.0f} um)" if math.isfinite(span) else ""
+    named = f" ({prescriptions})" if prescriptions else ""
+    share = 100.0 * (1.0 - low.ute / ute)
+    return (f"the written drive flank's unloaded TE p-p is {ute:.0f} urad{span_said}, above "
+            f"the verdict's {limit:g} urad before any load, and {_change_said(low)} takes it "
+            f"to {low.ute:.0f} urad at the same prescriptions (checked by a synthesis: "
+            f"{share:.0f} % of it is the blank's contact ratio); the rest follows the drive "
+            f"prescriptions the development wrote{named}: {RATIO_TRIAL_TEXT}")
+
+
 def ute_lte_text(ute: float, span: float, lte: Sequence[float], limit: float,
                  prescriptions: str = "", low: ChangeCheck | None = None) -> str:
     """The LTE diagnosis where :func:`ute_sets_lte`: the written case's unloaded TE sets it.
@@ -832,7 +915,10 @@ def lte_diagnosis(lte: Sequence[float], limit: float,
         ``cause`` "unloaded_te" with :func:`ute_lte_text`'s statement, "relief" with
         :func:`relief_lte_text`'s, or
         "contact_ratios" with :data:`RATIO_TRIAL_TEXT` (after :func:`ute_lowered_text`'s
-        numbers where a check lowered the unloaded TE within ``limit``).
+        numbers where a check lowered the unloaded TE within ``limit``, after
+        :func:`blank_ute_text`'s where a check removed at least :data:`BLANK_SHARE` of it
+        but not within ``limit``, :func:`blank_lowers`; the relief's statement comes
+        before the latter).
     """
     values = prescriptions if hasattr(prescriptions, "get") else {}
     try:
@@ -849,6 +935,9 @@ def lte_diagnosis(lte: Sequence[float], limit: float,
                 written[0], written[1], unrelieved, lte, limit, _relief_said(values)))
         named = ", ".join(f"{k} {float(values[k]):.3g}" for k in
                           ("path_angle", "ellipse_length", "te_level") if k in values)
+        if low is not None and blank_lowers(written[0], low.ute):
+            return LteDiagnosis("contact_ratios", blank_ute_text(
+                written[0], written[1], low, limit, named))
         return LteDiagnosis("unloaded_te", ute_lte_text(written[0], written[1], lte, limit,
                                                         named, low))
     return LteDiagnosis("contact_ratios", RATIO_TRIAL_TEXT)
