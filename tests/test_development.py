@@ -369,7 +369,9 @@ def test_a_failed_coast_check_says_why(monkeypatch):
     monkeypatch.setattr(coast_flank.evaluation, "analyse_design", refuse)
     case = load_case(DESIGNS / "pc_hypoid_10x43_unrelieved.toml")
     basic = load_basic(DESIGNS / "pc_hypoid_10x43.toml")
-    t = DevelopmentTargets()
+    # the coast development off: nothing to search with (a failure with it on is developed
+    # all the same: test_a_coast_flank_that_cannot_be_analysed_as_synthesised_is_developed)
+    t = DevelopmentTargets(coast_max_evaluations=0)
     m = _metrics()
     full = development_score(m, t, centre_v=0.6)
     drive = DevelopmentEvaluation(0, {"tip_relief": 20.0}, m, full[0], full[1], full[2], "",
@@ -762,7 +764,7 @@ def test_the_coast_search_runs_where_the_coast_misses_a_target(short_development
     assert set(table["prescriptions"]) == {"tip_relief", "root_relief"}
 
 
-def _coast_outcome(monkeypatch, meets, n_max=12):
+def _coast_outcome(monkeypatch, meets, n_max=12, fails=lambda case: False):
     """``coast_development`` of the passenger-car hypoid (drive concave, coast convex)
     with stand-ins for the synthesis (a design's case is its basic design) and the
     analysis (every target met where ``meets(case)``, else 5 % of the torque on plastic
@@ -777,6 +779,11 @@ def _coast_outcome(monkeypatch, meets, n_max=12):
     def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
              flank="drive"):
         flanks.append(flank)
+        if fails(case):
+            from geometry.core.errors import InputError
+
+            raise InputError("no tooth pair is in contact at some roll position (check the "
+                             "case)")
         m = (_metrics() if meets(case) else
              _metrics(plastic_share=[0.0, 0.05], edge_load_share=[0.0, 0.05]))
         return m, (0.0, 1.0, 0.0, 1.0, 2400.0)
@@ -792,6 +799,34 @@ def _coast_outcome(monkeypatch, meets, n_max=12):
     out = dcoast.coast_development(basic, drive, DevelopmentTargets(coast_max_evaluations=n_max),
                                    setup, None, {}, lines.append, lambda b: b)
     return out, basic, flanks, lines
+
+
+def test_a_coast_flank_that_cannot_be_analysed_as_synthesised_is_developed(monkeypatch):
+    """Round 31's spiral bevel 13x17 at Σ 50° (ε_vβ 0.70): its coast flank as synthesised
+    (the default ellipse 0.275) lost contact over the mesh cycle, and the development left
+    it "not checked", so ``ltca run --flank coast`` of the written case stopped with "no tooth
+    pair in contact". Now the search runs from the same start: the first design that can
+    be analysed and meets every target (root relief >= 30 um, stand-in) is chosen; where no
+    design of the search can be analysed either, "not checked" as before, said."""
+    def relieved(case):
+        return case != "as synthesised" and case.options.convex.root_relief >= 0.030
+
+    out, basic, flanks, lines = _coast_outcome(
+        monkeypatch, relieved, fails=lambda case: case == "as synthesised")
+    assert lines[0] == (
+        "development: coast flank convex as synthesised: its analysis at 50/330 N m failed: "
+        "InputError: no tooth pair is in contact at some roll position (check the case); "
+        "developing it at 50/330 N m (light/design) on the same targets: varying "
+        + ", ".join(DevelopmentTargets().variables) + " (at most 12 designs, coarse LTCA)")
+    assert out.status == "developed" and out.best.checked and out.best.full[2]
+    assert out.best.values["root_relief"] >= 30.0 and out.before is None
+    assert set(flanks) == {"coast"}  # the coast flank analysed, never the drive
+    assert out.basic.options.concave == basic.options.concave  # the drive flank as given
+    # nothing of the search analysed either: not checked, as before, and said
+    out, basic, _, lines = _coast_outcome(monkeypatch, relieved, fails=lambda case: True)
+    assert out.status == "not checked" and out.best is None and out.basic is basic
+    assert lines[-1] == ("development: coast flank convex: no design of its search could be "
+                         "analysed either; not checked")
 
 
 def test_the_coast_search_is_skipped_where_the_coast_meets_every_target(monkeypatch):
