@@ -44,17 +44,29 @@ def _setup(peak: float, values=_VALUES, torques=_TORQUES):
 
 
 def test_the_record_of_the_design_above_the_limit_is_the_miss():
-    """Above 60 µrad on the design's own record: the record; at or below it, NaN, another
-    design's record, another torque's or none: None (nothing known yet)."""
+    """Above 60 µrad on the design's own record: the record; at or below it: None. Where
+    no record of the design has a finite peak (NaN, another design's, another torque's,
+    none), its result's range will not be judged, which is not kept either: the miss is its
+    LTE at its own torques where that breaks the limit too (116 / 108 µrad: the record of
+    those, ``judged`` False), else None (the 17x23's re-development: 72.1 / 77.6 µrad)."""
     best = _best()
     assert window_missed(_setup(116.0), best)["peak"] == 116.0
     assert window_missed(_setup(60.0), best) is None  # the limit itself is kept
-    assert window_missed(_setup(math.nan), best) is None
-    assert window_missed(_setup(116.0, values={**_VALUES, "path_angle": -50.0}), best) is None
     other = _setup(116.0)
     other["torques"] = [80.0, 533.0]  # the record of other torques is not this design's
-    assert window_missed(other, best) is None
-    assert window_missed({"torques": list(_TORQUES)}, best) is None
+    for setup in (_setup(math.nan), _setup(116.0, values={**_VALUES, "path_angle": -50.0}),
+                  other, {"torques": list(_TORQUES)}):
+        got = window_missed(setup, best)
+        assert got["judged"] is False and got["lte"] == (116.0, 108.0)
+        assert got["peak"] == 116.0 and got["values"] == _VALUES
+    # the ends within the limit, or not known: nothing known yet
+    within = checked(dict(_VALUES), _metrics(lte_peak_to_peak=[47.0, 60.0]),
+                     DevelopmentTargets(), 0.6)
+    unknown = checked(dict(_VALUES), _metrics(lte_peak_to_peak=[math.nan, 108.0]),
+                      DevelopmentTargets(), 0.6)
+    for design in (within, unknown):
+        assert window_missed(_setup(math.nan), design) is None
+        assert window_missed({"torques": list(_TORQUES)}, design) is None
 
 
 def test_the_stop_is_asked_for_alone():
@@ -68,6 +80,9 @@ def test_the_stop_is_asked_for_alone():
         dev._stop_where_missed(_setup(116.0), _best(), True, lines.append)
     assert stop.value.record["peak"] == 116.0
     assert "at most 116.0 urad over the range" in lines[-1]
+    with pytest.raises(WindowMissed):  # no range judged, its ends above the limit
+        dev._stop_where_missed({"torques": list(_TORQUES)}, _best(), True, lines.append)
+    assert "at most 116.0 urad at its torques (the range not judged) after" in lines[-1]
 
 
 def _window():

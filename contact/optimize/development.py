@@ -1215,7 +1215,9 @@ def _stop_where_missed(setup: dict[str, Any], best: DevelopmentEvaluation, stop:
     said through ``say``."""
     missed = window_missed(setup, best) if stop else None
     if missed is not None:
-        say(f"  its drive LTE p-p at most {missed['peak']:.1f} urad over the range after the "
+        where = ("over the range" if missed.get("judged", True) else
+                 "at its torques (the range not judged)")
+        say(f"  its drive LTE p-p at most {missed['peak']:.1f} urad {where} after the "
             "drive steps: stopped (a re-development in the LTE window is not kept above "
             "the limit)")
         raise WindowMissed(missed)

@@ -288,9 +288,11 @@ def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], ba
         again = run(torque)
     except WindowMissed as missed:  # stopped after its drive steps: it would not be kept
         found = missed.record
+        where = ("over the range" if found.get("judged", True) else
+                 "at its torques, the range not judged,")
         say(f"development: at {plain_number(torque)} N m its drive LTE p-p "
-            f"{_curve((found['torques'], found['lte']))}, at most {found['peak']:.1f} over "
-            f"the range after its drive steps (the check's reading): above {limit:g} urad, "
+            f"{_curve((found['torques'], found['lte']))}, at most {found['peak']:.1f} "
+            f"{where} after its drive steps (the check's reading): above {limit:g} urad, "
             "so not kept (its coast flank, FE root checks and case not made); the design "
             f"torque kept at {plain_number(design)} N m")
         return None
@@ -390,9 +392,11 @@ def window_missed(setup: dict[str, Any], best: DevelopmentEvaluation) -> dict[st
     dict or None
         The record (``torques`` [N·m], ``lte`` [µrad], ``peak`` [µrad], ``at`` [N·m],
         ``values``) where it is of ``best``'s values and its ``peak`` is above
-        :func:`~contact.optimize.development_range_lte.verdict_lte_limit` (60 µrad); None
-        where no record is of ``best`` at these torques or its peak keeps the limit (or is
-        not finite).
+        :func:`~contact.optimize.development_range_lte.verdict_lte_limit` (60 µrad); where
+        no record of ``best`` at these torques has a finite peak, ``best``'s LTE p-p at
+        the development's torques as such a record (``judged`` False) where one exceeds
+        the limit (:func:`_unjudged_miss`); None otherwise (its peak keeps the limit, or
+        neither is known to break it).
 
     Notes
     -----
@@ -409,11 +413,40 @@ def window_missed(setup: dict[str, Any], best: DevelopmentEvaluation) -> dict[st
     """
     from contact.optimize.development_range_lte import range_record
 
+    limit = verdict_lte_limit()
     found = range_record(setup)
     if found is None or found.get("values") != dict(best.values):
-        return None
+        return _unjudged_miss(setup, best, limit)
     peak = float(found.get("peak", math.nan))
-    return found if math.isfinite(peak) and peak > verdict_lte_limit() else None
+    if not math.isfinite(peak):
+        return _unjudged_miss(setup, best, limit)
+    return found if peak > limit else None
+
+
+def _unjudged_miss(setup: dict[str, Any], best: DevelopmentEvaluation,
+                   limit: float) -> dict[str, Any] | None:
+    """:func:`window_missed` where the check recorded no finite LTE over the range of
+    ``best``: a record of its LTE p-p at the development's own torques (``judged`` False,
+    ``peak`` the larger) where either exceeds ``limit`` [µrad], else None.
+
+    Why: nothing records the drive LTE over the range after the drive steps
+    (:func:`window_missed`), so the result's ``lte_range`` is then None or NaN, which
+    :func:`redeveloped_in_window` does not keep whatever the ends; a later step (the
+    gear-root bearing at the given torque) could in principle record one for another
+    design, so the stop is asked only where the ends already break the limit too: the
+    spiral bevel 17x23 of benchmarks/data/unseen_designs, re-developed at 926.9 N m, read
+    72.1 / 77.6 µrad at its torques after its drive steps, no range judged, and was not
+    kept after its coast flank, root checks and synthesis: stopped there, its synthesize
+    CPU 242.5 -> 223.5 s (-8 %, the two run side by side on the loaded 2-core machine; 124 s
+    idle), the case written the same (issue 71, "a new design ... within 2 min CPU")."""
+    ends = np.asarray(best.metrics.get("lte_peak_to_peak", (math.nan,)), float)
+    if not (ends.size and np.all(np.isfinite(ends)) and float(np.max(ends)) > limit):
+        return None
+    torques = tuple(float(t) for t in setup["torques"])
+    worst = int(np.argmax(ends))
+    return {"torques": torques, "lte": tuple(float(x) for x in ends),
+            "peak": float(ends[worst]), "at": torques[min(worst, len(torques) - 1)],
+            "values": dict(best.values), "judged": False}
 
 
 def window_name(setup: dict[str, Any]) -> str:
