@@ -528,3 +528,46 @@ def test_a_coast_lte_above_the_limit_between_its_torques_alone_is_acted_on(monke
                                                "root_relief": 2 * _RR / 3})
     assert cap.coast_range_peak(got, setup, None)[0] == pytest.approx(55.1)
     assert any("not kept: its LTE p-p 62 urad above 60" in s for s in lines)
+
+
+def test_the_nearest_coast_bearing_is_not_said_lowered_before_its_search(monkeypatch):
+    """Where no coast bearing keeps 60 µrad at the coast design torque, the nearest's line
+    says its torque is searched again, not that it was lowered: on the 14x21 of
+    docs/own_gear_set.md the nearest (123 µrad at 150.5 N m, 110 µrad at its light
+    torque already) was said "lowered, keeps the limit", yet no lower torque keeps 60 µrad
+    there and the design before the step was written. Stand-ins for the capacity search
+    (no LTCA): its three outcomes each say what was done after the nearest's line."""
+    from types import SimpleNamespace
+
+    from contact.optimize.development_coast import CoastCapacity, CoastCheck
+
+    text = cap.nearest_text(150.5, 123.2, 60.0)
+    assert text.startswith("development: coast flank: no bearing within 60 urad at "
+                           "150.5 N m; the nearest (LTE p-p 123 urad) written")
+    assert "lowered, keeps" not in text
+    assert "else the coast design before this step kept" in text
+    before = CoastCapacity(150.5, 150.5, (CoastCheck(150.5, 1500.0, _STATIC),), "", True)
+    kept = SimpleNamespace(torques=(22.6, 150.5), best=object())
+
+    def holds_at(lte, found):
+        monkeypatch.setattr(cap, "coast_flank_capacity", lambda *a: (SimpleNamespace(
+            torques=(22.6, found.torque), best=SimpleNamespace(
+                metrics={"lte_peak_to_peak": lte})), found))
+
+    # the 14x21: above the limit at the light torque, no lower torque keeps it: None
+    # (development.develop writes the coast design before the step), said so
+    holds_at([110.0, 123.2], before)
+    lines = []
+    assert cap.coast_torque_that_holds(None, None, kept, before, DevelopmentTargets(), {},
+                                       True, lines.append) is None
+    assert lines[-1].endswith("its LTE p-p 123 urad is above 60 urad; the coast design "
+                              "before the step written")
+    # within the limit at the torque it was checked at (re-read as written): kept, said so
+    holds_at([44.0, 58.0], before)
+    lines.clear()
+    outcome, written = cap.coast_torque_that_holds(None, None, kept, before,
+                                                   DevelopmentTargets(), {}, True,
+                                                   lines.append)
+    assert written is before and outcome.torques == (22.6, 150.5)
+    assert lines == ["development: coast design torque 150.5 N m kept on the bearing whose "
+                     "LTE p-p is 58 urad there (within 60 urad)"]

@@ -676,14 +676,50 @@ def coast_lte_within_capacity(developed: BasicDesign, drive: DevelopmentEvaluati
         # would cut it to 169.4, 28 % of the drive's). Nearest by its largest LTE over
         # the range (its own torques' where not analysed between them)
         got = min(near, key=lambda e: _largest(e, over(e)))
-        say(f"development: coast flank: no bearing within {LTE_LIMIT:g} urad at "
-            f"{plain_number(coast.torques[1])} N m; the nearest (LTE p-p "
-            f"{_largest(got, over(got)):.0f} urad) written where its "
-            "coast design torque, lowered, keeps the limit")
+        say(nearest_text(float(coast.torques[1]), _largest(got, over(got)), LTE_LIMIT))
     text = capacity_text(got, cap, float(coast.torques[1]), between=over(got))
     if text:
         say(f"development: coast flank {text}")
     return written.outcome(coast, got), text
+
+
+def nearest_text(torque: float, lte: float, limit: float) -> str:
+    """The line said where no coast bearing keeps the verdict's LTE limit at the coast
+    design torque and the nearest is written: what is done next, not its outcome.
+
+    Parameters
+    ----------
+    torque : float — [N·m]
+        The coast design torque the bearings were checked at.
+    lte : float — [µrad]
+        The nearest bearing's largest LTE p-p (its torques' and between them).
+    limit : float — [µrad]
+        The verdict's LTE limit.
+
+    Returns
+    -------
+    str
+        ``"development: coast flank: no bearing within …"``: the nearest written and its
+        coast design torque searched again on it (:func:`coast_torque_that_holds`), which
+        lowers it only where a lower torque keeps the limit; else the coast design before
+        the step is written (that search's own line says which).
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    The line said "written where its coast design torque, lowered, keeps the limit"
+    before the search ran; on the 14x21 of docs/own_gear_set.md the nearest (123 µrad)
+    was said so, yet no torque kept 60 µrad (its light torque's LTE 110 µrad already) and
+    the coast design torque stayed 150.5 N·m, the design before the step written.
+    Source: issue 71.
+    """
+    return (f"development: coast flank: no bearing within {limit:g} urad at "
+            f"{plain_number(torque)} N m; the nearest (LTE p-p {lte:.0f} urad) written "
+            "and its coast design torque searched again on it: lowered where a lower "
+            "torque keeps the limit, else the coast design before this step kept")
 
 
 def coast_largest(e: DevelopmentEvaluation, setup: Mapping[str, Any],
@@ -885,6 +921,8 @@ def coast_torque_that_holds(case: Case, basic: BasicDesign, coast: Any,
             "design before the step written")
         return None
     if not found.lowered:
+        say(f"development: coast design torque {plain_number(start)} N m kept on the bearing "
+            f"whose LTE p-p is {lte:.0f} urad there (within {LTE_LIMIT:g} urad)")
         return again, cap
     failed = [c for c in found.checks if c.failures]
     bound = ", ".join(BOUND_NAMES.get(k, k) for k in failed[-1].failures) if failed else ""

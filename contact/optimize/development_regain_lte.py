@@ -10,7 +10,9 @@ benchmarks/data/unseen_designs (ε_vβ 0.93) the bearing developed at the local 
 cut's 278.3 N·m keeps 53 / 51 µrad there and was raised back to 390.7 N·m, where it reads
 54 / 95 µrad (docs/synthesis.md, "The FM 16×16 at Σ 60°'s design torque raised back past
 its LTE window"). The LTE window rule (:mod:`~contact.optimize.development_written_lte`)
-runs before the cut and is not met again after it.
+runs before the cut; after it, ``development._lte_after_cut`` runs it again at the cut (or
+raised) torques (branch diag92: the 13×17 at Σ 50° remedied to b2 37 mm, 44/62 µrad at the
+local pitting cut's 333.4 N·m, written at 267.5 N·m, 49/60 µrad).
 
 :func:`lte_kept_raise` treats the LTE limit as one more thing the raise must not lose:
 where the range at the cut torques keeps it and the range at the raised torques does not,
