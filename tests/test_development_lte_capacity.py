@@ -71,3 +71,25 @@ def test_no_cut_where_the_lte_passes_or_no_torque_keeps_the_limit(monkeypatch):
     targets, setup, best, seen = _start(monkeypatch, high)
     assert lte_capacity(best, targets, setup, None, lambda s: None) is best
     assert len(seen) == 1 and "lowered" not in setup
+
+
+def test_the_lowering_numbers_are_named_as_before_the_development(monkeypatch):
+    """The FM 13x17 at Σ 50° (round 31, docs/own_gear_set.md): its design-torque line read
+    "keeps the drive LTE within 60 urad ... 61 / 58 urad at 18.4 / 122.7 N m" while the
+    written design ran 48 / 54 µrad: the numbers are the bearing at the lowering, before
+    the development at the new torque. A law 62 µrad at 45 N m, linear to 45 at 97.4: at
+    the lowered 318.7 N m's light torque 0.15 × 318.7 = 47.8 N m it reads
+    62 − 17 × 2.8 / 52.4 ≈ 61.1 µrad (> 60), the design torque 60 µrad (the crossing):
+    the line says both that these are the bearing before its development and that the
+    light torque's is above the limit; with _LAW's 56 µrad there it says no such thing."""
+    law = ((45.0, 62.0), *_LAW[1:])
+    targets, setup, best, _ = _start(monkeypatch, law)
+    lte_capacity(best, targets, setup, None, lambda s: None)
+    assert setup["torques"][1] == pytest.approx(318.7, abs=1e-9)
+    assert "at the lowering 61 / 60 urad at" in setup["source"]
+    assert "the light torque's above 60 urad" in setup["source"]
+    assert "the bearing before its development at this torque" in setup["source"]
+    targets, setup, best, _ = _start(monkeypatch)
+    lte_capacity(best, targets, setup, None, lambda s: None)
+    assert "above 60 urad (the bearing" not in setup["source"]
+    assert "the bearing before its development at this torque" in setup["source"]
