@@ -2695,3 +2695,43 @@ def test_checked_analysis_keeps_a_design_and_its_error(monkeypatch):
     lowered = dict(setup, torques=[5.0, 50.0])
     dcheck.checked_analysis(lowered, placed, values, None, ("a",))
     assert analysed[-1] == ((5.0, 50.0), "drive") and len(analysed) == 4
+
+
+def test_checked_analysis_keys_values_to_memo_decimals(monkeypatch):
+    """The check's memo keys a design's values and its pinion key's numbers to
+    MEMO_DECIMALS (9) decimals, as the coarse search's memo does: the same design reached
+    through another computation of the same number (the TE level raised back to the
+    flank's own level, 45 - 1 ulp, after the deeper-TE step tried its bound 45; the
+    17x23's te-back step re-synthesised and re-analysed such a design, branch cpu92) is
+    neither placed nor analysed again, while a value one step of the check away (1e-6 of
+    a unit, far below any step the check takes, 0.1 urad at least) is analysed anew.
+    Stand-ins count the calls; the identity: the same case and metrics objects back."""
+    import math
+
+    from contact.optimize.development_variant import MEMO_DECIMALS, checked_analysis
+
+    placed_calls, analysed = [], []
+
+    def placed(values):
+        placed_calls.append(dict(values))
+        return object()
+
+    def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
+             flank="drive"):
+        analysed.append(pinion_key)
+        return {"lte_peak_to_peak": np.array([1.0, 2.0])}, (0.0, 1.0, 0.0, 1.0, 2400.0)
+
+    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
+    assert MEMO_DECIMALS == 9
+    setup = {"torques": [217.3, 1449.0]}
+    level = math.nextafter(45.0, 0.0)  # 45 less one ulp: another computation of 45
+    assert level != 45.0
+    first = checked_analysis(setup, placed, {"path_angle": -60.0, "te_level": 45.0}, None,
+                             (("path_angle", -60.0), ("te_level", 45.0)))
+    again = checked_analysis(setup, placed, {"path_angle": -60.0, "te_level": level}, None,
+                             (("path_angle", -60.0), ("te_level", level)))
+    assert again[0] is first[0] and again[1] is first[1]
+    assert len(placed_calls) == 1 and len(analysed) == 1
+    other = checked_analysis(setup, placed, {"path_angle": -60.0, "te_level": 45.000001},
+                             None, (("path_angle", -60.0), ("te_level", 45.000001)))
+    assert other[0] is not first[0] and len(placed_calls) == 2 and len(analysed) == 2

@@ -36,6 +36,20 @@ from geometry.core.errors import raise_if_interrupted
 log = logging.getLogger("contact.optimize.development")
 
 
+#: the decimals to which :func:`checked_analysis` keys a design's values (file units: µm,
+#: µrad, degrees, fractions): as the coarse search's memo (``round(v, 9)``), far below any
+#: step the check takes (≥ 0.1 µrad, 0.01 of a fraction), far above round-off (~1e-14)
+MEMO_DECIMALS = 9
+
+
+def _rounded_key(key: tuple) -> tuple:
+    """``key`` with its float members (nested in tuples too) rounded to
+    :data:`MEMO_DECIMALS` decimals; its other members as they are."""
+    return tuple(_rounded_key(k) if isinstance(k, tuple)
+                 else round(float(k), MEMO_DECIMALS) if isinstance(k, float) else k
+                 for k in key)
+
+
 def checked_analysis(setup: Mapping[str, Any], placed: Callable[[Mapping[str, float]], Case],
                      values: Mapping[str, float], teeth: KeptTeeth | None,
                      pinion_key: tuple, flank: str = "drive", *, case: Case | None = None
@@ -53,10 +67,16 @@ def checked_analysis(setup: Mapping[str, Any], placed: Callable[[Mapping[str, fl
     step after a height step (:func:`kept_height_step`), the long bearing of designs that
     differ only in what it sets — is neither synthesised nor analysed again, the same
     numbers (issue 71: the spiral bevel 13x37 at Σ 60° checked one long bearing three
-    times, each a synthesis and an ease-off that found too few nodes)."""
+    times, each a synthesis and an ease-off that found too few nodes). The values (and
+    the pinion key's numbers) are keyed to :data:`MEMO_DECIMALS` decimals, as the coarse
+    search's own memo (:func:`~contact.optimize.development_evaluate.evaluator`): a step
+    that reaches a design again through another computation of the same number (the TE
+    level raised back to the flank's own level after the deeper-TE step tried its upper
+    bound, branch cpu92) keeps it, the first computation's case and metrics."""
     memo = setup.setdefault("check_memo", {}) if isinstance(setup, dict) else {}
-    key = (id(placed), flank, tuple((k, float(v)) for k, v in values.items()),
-           tuple(float(t) for t in setup["torques"]), tuple(pinion_key), id(teeth))
+    key = (id(placed), flank, tuple((k, round(float(v), MEMO_DECIMALS))
+                                    for k, v in values.items()),
+           tuple(float(t) for t in setup["torques"]), _rounded_key(pinion_key), id(teeth))
     kept = memo.get(key)
     if kept is not None and kept[0] is placed and kept[1] is teeth:
         log.debug("development: check of %s at %s N m kept", dict(values), key[3])
