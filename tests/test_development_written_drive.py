@@ -184,4 +184,10 @@ def test_the_10x41_records_what_ltca_run_reads():
     for k in KINDS:
         np.testing.assert_allclose(dev.best.metrics[f"edge_peak_{k}"],
                                    run[f"edge_peak_{k}"], rtol=1e-6, atol=1e-6, err_msg=k)
-    assert float(run["edge_peak_pinion_edge"][-1]) > 2500.0
+    # not a comparison of zeros alone: the flank peak, which the pinion tooth's bending
+    # moves too, is the same analysis' (the pinion edge of 2551 MPa the defect was traced
+    # on is no longer reached: since the second-order step's safeguard, newton91, the
+    # development writes this design without it; measured 2026-11-29)
+    np.testing.assert_allclose(dev.best.metrics["pressure_max_flank"],
+                               run["pressure_max_flank"], rtol=1e-6, atol=1e-6)
+    assert float(run["pressure_max_flank"][-1]) > 1000.0
