@@ -37,6 +37,7 @@ from contact.optimize.development_check import (
 from contact.optimize.development_coast import CoastCapacity, CoastCheck, coast_capacity
 from contact.optimize.development_evaluate import (
     CHECK_LTCA,
+    MEMO_DECIMALS,
     KeptTeeth,
     bearing_key,
     design_metrics,
@@ -560,7 +561,8 @@ def coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
         best = checked_length(best, targets, setup, teeth, say, placed,
                               level=start.get(TE_NAME, math.nan), flank="coast",
                               key_prefix=prefix)
-        as_synthesised = all(round(v, 9) == round(start[k], 9) for k, v in best.values.items())
+        as_synthesised = all(round(v, MEMO_DECIMALS) == round(start[k], MEMO_DECIMALS)
+                             for k, v in best.values.items())
         # the check's one rank (check_rank): a coast LTE ltca run's verdict FAILs (above
         # 2 x 60 urad) last, then every target met, then the objective (issue 71)
         # (where the flank as synthesised could not be analysed, any design of the

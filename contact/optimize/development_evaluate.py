@@ -71,6 +71,14 @@ log = logging.getLogger("contact.optimize.development")
 COARSE_LTCA = LTCAOptions(cycles=1, rolls_per_cycle=8, segments=12)
 
 
+#: the decimals to which the development's memos key a design's values (file units: µm,
+#: µrad, degrees, fractions): the coarse search's (:func:`evaluator`) and the check's
+#: (:func:`~contact.optimize.development_variant.checked_analysis`); far below any step
+#: the development takes (≥ 0.1 µrad, 0.01 of a fraction), far above round-off (~1e-14),
+#: so a design reached again through another computation of the same number is the same
+MEMO_DECIMALS = 9
+
+
 #: LTCA settings of the final check: ``ltca run``'s defaults (2 mesh cycles, 20 roll
 #: positions each, 24 segments per curve, shell compliance)
 CHECK_LTCA = LTCAOptions()
@@ -480,7 +488,7 @@ def evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str, 
 
     def evaluate(values: dict[str, float], stage: str, make: Callable[[], Case],
                  budget: int, pinion_key: tuple) -> DevelopmentEvaluation:
-        key = (stage, *(round(v, 9) for v in values.values()))
+        key = (stage, *(round(v, MEMO_DECIMALS) for v in values.values()))
         if key in seen:  # a design analysed before (the simplex returns to its start)
             if seen[key].met:
                 raise StageStop

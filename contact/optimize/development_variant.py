@@ -23,6 +23,7 @@ import numpy as np
 from contact.optimize import development_evaluate as evaluation
 from contact.optimize.development_evaluate import (
     CHECK_LTCA,
+    MEMO_DECIMALS,
     KeptTeeth,
     bearing_key,
     evaluation_line,
@@ -34,12 +35,6 @@ from geometry.core.errors import raise_if_interrupted
 
 #: the development's one logger, whichever of its modules logs
 log = logging.getLogger("contact.optimize.development")
-
-
-#: the decimals to which :func:`checked_analysis` keys a design's values (file units: µm,
-#: µrad, degrees, fractions): as the coarse search's memo (``round(v, 9)``), far below any
-#: step the check takes (≥ 0.1 µrad, 0.01 of a fraction), far above round-off (~1e-14)
-MEMO_DECIMALS = 9
 
 
 def _rounded_key(key: tuple) -> tuple:
