@@ -2658,13 +2658,10 @@ def test_tolerance_checks_stop_at_the_first_miss_and_are_kept(monkeypatch):
     assert len(analysed) == 12
 
 
-def test_checked_analysis_keeps_a_design_and_its_error(monkeypatch):
-    """A design the check reaches again (the same placement, flank, values, torques, pinion
-    key and kept teeth) is neither placed nor analysed again: the same case and metrics
-    objects come back; a design whose analysis failed raises the same error again without
-    a second try; other torques or another flank are analysed anew (issue 71: the 13x37
-    at Σ 60° checked one long bearing three times, the 19x23 at β_m 46° ran the check's
-    steps twice on one design). Stand-ins count the calls."""
+def _counted_check_stand_ins(monkeypatch):
+    """Stand-ins of the check's placement and analysis that count their calls: (placed,
+    its calls' values, the analyses' (torques, flank, pinion key)); the analysis of the
+    pinion key ("bad",) raises InputError, as a design whose pairs lose contact."""
     placed_calls, analysed = [], []
 
     def placed(values):
@@ -2673,12 +2670,23 @@ def test_checked_analysis_keeps_a_design_and_its_error(monkeypatch):
 
     def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
              flank="drive"):
-        analysed.append((tuple(torques), flank))
+        analysed.append((tuple(torques), flank, tuple(pinion_key)))
         if pinion_key == ("bad",):
             raise InputError("no tooth pair is in contact")
         return {"lte_peak_to_peak": np.array([1.0, 2.0])}, (0.0, 1.0, 0.0, 1.0, 2400.0)
 
     monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
+    return placed, placed_calls, analysed
+
+
+def test_checked_analysis_keeps_a_design_and_its_error(monkeypatch):
+    """A design the check reaches again (the same placement, flank, values, torques, pinion
+    key and kept teeth) is neither placed nor analysed again: the same case and metrics
+    objects come back; a design whose analysis failed raises the same error again without
+    a second try; other torques or another flank are analysed anew (issue 71: the 13x37
+    at Σ 60° checked one long bearing three times, the 19x23 at β_m 46° ran the check's
+    steps twice on one design). Stand-ins count the calls."""
+    placed, placed_calls, analysed = _counted_check_stand_ins(monkeypatch)
     setup = {"torques": [10.0, 100.0]}
     values = {"path_angle": -60.0, "ellipse_length": 0.5}
     first = dcheck.checked_analysis(setup, placed, values, None, ("a",))
@@ -2687,14 +2695,14 @@ def test_checked_analysis_keeps_a_design_and_its_error(monkeypatch):
     assert len(placed_calls) == 1 and len(analysed) == 1
     # a case made already is analysed, not placed again
     dcheck.checked_analysis(setup, placed, values, None, ("a",), "coast", case=first[0])
-    assert len(placed_calls) == 1 and analysed[-1] == ((10.0, 100.0), "coast")
+    assert len(placed_calls) == 1 and analysed[-1][:2] == ((10.0, 100.0), "coast")
     for _ in range(2):
         with pytest.raises(InputError, match="no tooth pair"):
             dcheck.checked_analysis(setup, placed, values, None, ("bad",))
     assert len(analysed) == 3  # the failure analysed once
     lowered = dict(setup, torques=[5.0, 50.0])
     dcheck.checked_analysis(lowered, placed, values, None, ("a",))
-    assert analysed[-1] == ((5.0, 50.0), "drive") and len(analysed) == 4
+    assert analysed[-1][:2] == ((5.0, 50.0), "drive") and len(analysed) == 4
 
 
 def test_checked_analysis_keys_values_to_memo_decimals(monkeypatch):
@@ -2710,18 +2718,7 @@ def test_checked_analysis_keys_values_to_memo_decimals(monkeypatch):
 
     from contact.optimize.development_variant import MEMO_DECIMALS, checked_analysis
 
-    placed_calls, analysed = [], []
-
-    def placed(values):
-        placed_calls.append(dict(values))
-        return object()
-
-    def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
-             flank="drive"):
-        analysed.append(pinion_key)
-        return {"lte_peak_to_peak": np.array([1.0, 2.0])}, (0.0, 1.0, 0.0, 1.0, 2400.0)
-
-    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
+    placed, placed_calls, analysed = _counted_check_stand_ins(monkeypatch)
     assert MEMO_DECIMALS == 9
     setup = {"torques": [217.3, 1449.0]}
     level = math.nextafter(45.0, 0.0)  # 45 less one ulp: another computation of 45

@@ -506,11 +506,8 @@ def ute_lowered_text(ute: float, span: float, low: ChangeCheck, limit: float) ->
         it; a higher contact ratio is the lever left, …" (the 21×21 of round 21), ending in
         :data:`RATIO_TRIAL_TEXT`.
     """
-    span_said = f" (ease-off {span:.0f} um)" if math.isfinite(span) else ""
-    return (f"the written drive flank's unloaded TE p-p is {ute:.0f} urad{span_said}, above "
-            f"the verdict's {limit:g} urad before any load, and {_change_said(low)} takes it "
-            f"to {low.ute:.0f} urad at the same prescriptions (checked by a synthesis): a "
-            f"higher contact ratio lowers it; {RATIO_TRIAL_TEXT}")
+    return (f"{_written_ute_said(ute, span, limit)}, and {_check_takes_said(low)}): a higher "
+            f"contact ratio lowers it; {RATIO_TRIAL_TEXT}")
 
 
 #: [1] the least share of the written drive flank's unloaded TE p-p that a checked
@@ -584,12 +581,9 @@ def blank_ute_text(ute: float, span: float, low: ChangeCheck, limit: float,
     Σ 125° (ε_vβ 0.86) wrote a drive flank of unloaded TE p-p 130 µrad that its b2 remedy's
     check took to 85 µrad; both commands said "that, not the contact ratios, sets its LTE".
     """
-    span_said = f" (ease-off {span:.0f} um)" if math.isfinite(span) else ""
     named = f" ({prescriptions})" if prescriptions else ""
     share = 100.0 * (1.0 - low.ute / ute)
-    return (f"the written drive flank's unloaded TE p-p is {ute:.0f} urad{span_said}, above "
-            f"the verdict's {limit:g} urad before any load, and {_change_said(low)} takes it "
-            f"to {low.ute:.0f} urad at the same prescriptions (checked by a synthesis: "
+    return (f"{_written_ute_said(ute, span, limit)}, and {_check_takes_said(low)}: "
             f"{share:.0f} % of it is the blank's contact ratio); the rest follows the drive "
             f"prescriptions the development wrote{named}: {RATIO_TRIAL_TEXT}")
 
@@ -628,10 +622,8 @@ def ute_lte_text(ute: float, span: float, lte: Sequence[float], limit: float,
     unloaded TE p-p of 609 µrad at k_d 2.16 and 666 µrad at k_d 2.0 (the contact ratios
     not the cause), 138 µrad at the prescriptions the k_d 2.0 development wrote.
     """
-    span_said = f" (ease-off {span:.0f} um)" if math.isfinite(span) else ""
     named = f" ({prescriptions})" if prescriptions else ""
-    return (f"the written drive flank's unloaded TE p-p is {ute:.0f} urad{span_said}, above "
-            f"the verdict's {limit:g} urad before any load: that, not the contact ratios, "
+    return (f"{_written_ute_said(ute, span, limit)}: that, not the contact ratios, "
             f"sets its LTE p-p {float(lte[0]):.0f}/{float(lte[-1]):.0f} urad (light/design), "
             f"{_ratio_effect(low, limit)}; the unloaded TE follows the drive "
             f"prescriptions the development wrote{named}: other [synthesis] prescriptions "
@@ -693,14 +685,30 @@ def relief_lte_text(ute: float, span: float, unrelieved: float, lte: Sequence[fl
         prescriptions): its relief, not its generation, sets the unloaded TE its LTE p-p
         127/224 urad (light/design) keeps; the relief keeps …".
     """
-    span_said = f" (ease-off {span:.0f} um)" if math.isfinite(span) else ""
     named = f"{relief}; " if relief else ""
-    return (f"the written drive flank's unloaded TE p-p is {ute:.0f} urad{span_said}, above "
-            f"the verdict's {limit:g} urad before any load, and {unrelieved:.0f} urad "
+    return (f"{_written_ute_said(ute, span, limit)}, and {unrelieved:.0f} urad "
             f"without its profile relief ({named}checked by a synthesis at the same "
             f"prescriptions): its relief, not its generation, sets the unloaded TE its "
             f"LTE p-p {float(lte[0]):.0f}/{float(lte[-1]):.0f} urad (light/design) keeps; "
             + RELIEF_LEVER_TEXT + (measured or RELIEF_MEASURED) + ")")
+
+
+def _written_ute_said(ute: float, span: float, limit: float) -> str:
+    """The opening of every statement of the written drive flank's unloaded TE above the
+    verdict's limit: "the written drive flank's unloaded TE p-p is 97 urad (ease-off 85
+    um), above the verdict's 60 urad before any load" (``ute`` [µrad], ``span`` [µm], NaN:
+    not said, ``limit`` [µrad])."""
+    span_said = f" (ease-off {span:.0f} um)" if math.isfinite(span) else ""
+    return (f"the written drive flank's unloaded TE p-p is {ute:.0f} urad{span_said}, above "
+            f"the verdict's {limit:g} urad before any load")
+
+
+def _check_takes_said(low: ChangeCheck) -> str:
+    """What a remedy's check measured, its parenthesis left open for the reading: "the
+    remedy b2 = 39.3 takes it to 51 urad at the same prescriptions (checked by a
+    synthesis"."""
+    return (f"{_change_said(low)} takes it to {low.ute:.0f} urad at the same prescriptions "
+            "(checked by a synthesis")
 
 
 def _ratio_effect(low: ChangeCheck | None, limit: float) -> str:
