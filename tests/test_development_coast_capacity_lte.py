@@ -12,6 +12,7 @@ and checks its written coast flank as ``ltca run --flank coast`` does.
 from __future__ import annotations
 
 import dataclasses
+import re
 
 import numpy as np
 import pytest
@@ -472,18 +473,19 @@ def test_fh_spiral_bevel_10x31_coast_lte_within_60_urad():
     """The face-hobbed spiral bevel 10x31 z0 3 (benchmarks/data/unseen_designs) from its
     basic file with every default: the written case's coast flank, analysed as ``ltca run
     --flank coast`` does at its light and coast design torque (the development's last
-    coast check), has LTE p-p within 60 µrad at both (75 µrad before the step), no plastic
-    segment and its flank peak within the static strength, at the coast design torque the
-    capacity search found before the step, 90.7 N m (S_H,loc 1.01 there on the design
-    before it): the step's bearing with both lighter reliefs (ellipse 0.75, M +0.0421, tip
-    / root relief 6.7 / 17.8 µm) carries 2.1 % of it on its edges, above the 2 % target,
-    its edges no harder loaded than the design's (:func:`~contact.optimize.
-    development_coast_capacity_lte.edges_harder`), at a flank peak of 1481 MPa, so the
-    torque is not searched again. Measured 2026-11-27 on branch unseenb81 (95 s CPU with
-    the FE cache warm): 29.2 / 48.8 µrad at 18.0 / 90.7 N m, edges 2.09 % at 3396 MPa. Before
-    that branch the step refused the lighter tip reliefs for their edge share and kept the
-    root relief × ⅔ at 1852 MPa, and the coast design torque was searched again down to
-    81.5 N m (42.7 / 54.8 µrad at 18.0 / 81.5 N m, S_H,loc 1.10)."""
+    coast check), has LTE p-p within 60 µrad at both, no plastic segment, its flank peak
+    within the static strength, and its coast design torque is the capacity the last
+    search found on the bearing written (the text's last "the largest that holds").
+
+    Measured 2026-11-29 on main ``aa9b8ac0`` (88.7 s CPU, FE cache warm): the drive
+    lowered to its local pitting capacity 102.2 N m; the coast capacity at the first coast
+    bearing 88.4 N m (S_H,loc 0.94 at 102.2), the coast developed again at 88.4 N m (its
+    long bearing, LTE 52/75 µrad there) reads S_H,loc 0.76 → 66.4 N m, where the lighter
+    tip relief keeps 47/59 µrad (flank peak 1412 MPa, edges 0.5 %). Keeping the first
+    coast bearing instead holds 88.4 N m but at LTE 73/91 µrad (tried in session 31):
+    the criterion "LTE p-p ≤ 60 µrad at every torque" (issue 71) is what lowers it. The
+    earlier anchor of this test, 90.7 N m at a drive of 139.5 N m (2026-11-27, branch
+    unseenb81), predates the drive's pitting cut (local pitting capacity, issue 71 item 2)."""
     from pathlib import Path
 
     from contact.optimize.development import develop
@@ -498,15 +500,12 @@ def test_fh_spiral_bevel_10x31_coast_lte_within_60_urad():
     assert max(coast["lte_peak_to_peak"]) <= 60.0
     assert max(coast["plastic_share"]) == 0.0
     assert coast["pressure_max_flank"][-1] <= result.pressure_limit
-    assert result.coast_torques[1] == pytest.approx(90.7, abs=0.1)
+    # the coast design torque is the last capacity search's "largest that holds" (to the
+    # text's 0.1 N m rounding), and the coast flank carries no more than the drive's
     assert result.coast_capacity == result.coast_torques[1]
-    assert "the largest that holds 90.7 N m" in result.coast_capacity_text
-    assert "searched again on it" not in result.coast_capacity_text
-    # the edge share target given up (edges_harder: the edge peak not raised), the flank
-    # peak within the local pitting bound the capacity search found at 90.7 N m (S_H,loc
-    # 1.01 at 1613 MPa; S_H,loc ~ 1/p): no lower coast design torque needed
-    assert coast["edge_load_share"][-1] > result.targets.max_edge_share
-    assert coast["pressure_max_flank"][-1] <= 1613.0
+    held = re.findall(r"the largest that holds ([0-9.]+) N m", result.coast_capacity_text)
+    assert held and float(held[-1]) == pytest.approx(result.coast_torques[1], abs=0.05)
+    assert result.coast_torques[1] <= result.torque[1]
 
 
 def test_a_coast_lte_above_the_limit_between_its_torques_alone_is_acted_on(monkeypatch):
