@@ -190,6 +190,13 @@ def test_the_re_development_names_its_torque_the_lte_window_s():
         "at 537.1 N m flank peak ...")
     assert coast_flank.coast_capacity_said(given, cap).startswith(
         "the drive's design torque 537.1 N m ([synthesis] design_torque)")
+    # raised above the window's torque on the bearing developed there (_window_raised):
+    # the torque as the development ended with it, and where it was raised from
+    assert coast_flank.coast_capacity_said(given, cap, name, design=700.25) == (
+        f"the drive's design torque 700.2 N m (raised from 537.1 N m, {name}) is not the "
+        "coast flank's: at 537.1 N m flank peak ...")
+    assert coast_flank.coast_capacity_said(given, cap, name, design=WINDOW) == (
+        coast_flank.coast_capacity_said(given, cap, name))
 
 
 @pytest.mark.parametrize("window, raised", [(WINDOW, False), (math.nan, True)])

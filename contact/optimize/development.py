@@ -180,7 +180,7 @@ from contact.optimize.development_hollow_target import checked_hollow_target
 from contact.optimize.development_light_edge_relief import checked_light_edge
 from contact.optimize.development_lte_capacity import lte_capacity
 from contact.optimize.development_pitting import checked_pitting
-from contact.optimize.development_range_lte import range_record
+from contact.optimize.development_range_lte import range_lte, range_record, recorded_range
 from contact.optimize.development_result import (  # noqa: F401
     COAST_STATUS,
     STATIC_MARGIN,
@@ -283,7 +283,7 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
             foresee_cut: bool = False, apply_remedy: bool = False,
             torque_name: str = "",
             shared: SharedDevelopments | None = None,
-            stop_over_lte: bool = False) -> DevelopmentResult:
+            stop_over_lte: bool = False, raise_to: float = math.nan) -> DevelopmentResult:
     """Develop the drive flank, then the coast flank, of a basic design to the bearing of
     ``targets``.
 
@@ -365,6 +365,12 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
         (:class:`~contact.optimize.development_written_lte.WindowMissed`,
         :func:`~contact.optimize.development_written_lte.window_missed`): no coast flank,
         FE root check or case for a result that would not be kept.
+    raise_to : float, optional
+        [N·m] Default NaN (a design torque the basic file gives stands). The torque the
+        drive developed again in its LTE window (:func:`~contact.optimize.
+        development_written_lte.redeveloped_in_window`) was rated at before the window cut
+        it: the design torque raised back towards it on the bearing developed in the
+        window, as after a capacity cut (:func:`_window_raised`).
 
     Returns
     -------
@@ -654,6 +660,10 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
         # a larger fillet kept: the coast flank's steps below synthesise with it too
         pre_coast, basic = (_with_edge_radius(b, developed.options.edge_radius)
                             for b in (pre_coast, basic))
+        # the drive developed again in its LTE window: raised back towards the torque it
+        # was rated at where the bearing developed there carries more
+        best, root_safety = _window_raised(case, best, targets, setup, teeth, raise_to,
+                                           root_safety, root_stress, say)
     # the coast flank at its own design torque as `ltca run --flank coast` analyses it,
     # the coast design torque lowered to what its developed bearing carries (flank static
     # strength, no plastic segment, root stress) where that is less
@@ -776,7 +786,8 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
                                root_text, coast.torques,
                                coast_cap.torque if coast_cap is not None and coast_cap.lowered
                                else math.nan,
-                               coast_capacity_said(basic, coast_cap, torque_name),
+                               coast_capacity_said(basic, coast_cap, torque_name,
+                                                   design=_raised_design(setup, raise_to)),
                                lte_reach=setup.get("lte_reach", {}).get(
                                    tuple(float(t) for t in setup["torques"])),
                                tolerant_torque=upto, lte_range=_judged(setup, best),
@@ -1134,6 +1145,67 @@ def _regained(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTarge
     return raised, source, safety
 
 
+def _raised_design(setup: dict[str, Any], raise_to: float) -> float | None:
+    """[N·m] The drive's design torque where :func:`_window_raised` may have raised it
+    above the torque the basic data give (``raise_to`` finite); None otherwise (the
+    given torque names it)."""
+    return float(setup["torques"][1]) if math.isfinite(raise_to) else None
+
+
+#: most bisections of :func:`_window_raised` after its raise to the rated torque (each a
+#: geometric mean of the highest torque raised to and the lowest refused: the last one
+#: within (refused / raised)^(1/8), ≈ 15 % of a threefold range)
+WINDOW_RAISE_STEPS = 3
+
+
+def _window_raised(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                   setup: dict[str, Any], teeth: KeptTeeth | None, ceiling: float,
+                   root_safety: float, root_stress: bool, say: Callable[[str], None]
+                   ) -> tuple[DevelopmentEvaluation, float]:
+    """The drive developed again in its LTE window (at the design torque
+    ``setup["torques"][1]`` [N·m]) with its design torque raised back towards ``ceiling``
+    [N·m], the torque it was rated at before the window cut (:func:`develop`'s
+    ``raise_to``), as after a capacity cut (:func:`_regained`: every capacity criterion
+    at the raised torque, no drive target lost, the mounting tolerance and the drive LTE
+    limit at every torque kept); the LTE over ``ltca run``'s range at the raised torques
+    recorded (:func:`~contact.optimize.development_range_lte.recorded_range`: the window
+    re-development is kept only where it keeps the limit). ``setup``'s torques and source
+    updated where raised. Where the raise to ``ceiling`` is refused (a drive target it
+    would lose: its light torque, a share of the design torque, rises with it) the torque
+    is bisected geometrically (:data:`WINDOW_RAISE_STEPS`), each raise from the last one
+    kept. Returns the drive design and S_F,FE at the design torque.
+
+    Why: the window's upper end is where the *first* bearing kept 60 µrad; the bearing
+    developed there may carry much more. Measured on an FH hypoid 10×33 at Σ 80°, offset
+    30 mm (the lead's unseen design of session 32, 2026-11-29): ISO capacity 401.3 N·m,
+    its first bearing 65 µrad at 145.4 N·m, developed again at 130.1 N·m and written
+    there; that case at 200 / 300 / 401.3 N·m reads LTE p-p 28 / 21 / 12 µrad, flank peak
+    1035 / 1157 / 1256 MPa (p_max/σ_H 0.85 at 401.3), no plastic segment."""
+    torque = float(setup["torques"][1])
+    if not (root_stress and math.isfinite(ceiling) and ceiling > 1.01 * torque):
+        return best, root_safety
+    chosen, lo, hi = best, torque, ceiling
+    for k in range(WINDOW_RAISE_STEPS + 1):
+        aim = hi if k == 0 else math.sqrt(lo * hi)  # the rated torque, then bisected
+        if not aim > 1.01 * lo:
+            break
+        raised, _, safety = _regained(case, chosen, targets, setup, teeth, aim,
+                                      str(setup.get("source", "")), root_safety, say)
+        now = float(setup["torques"][1])
+        if raised is chosen or not now > lo:  # a target lost or nothing carried: lower
+            hi = aim
+            continue
+        chosen, root_safety, lo = raised, safety, now
+        if now < 0.999 * aim:  # a capacity criterion set it: no higher torque holds
+            break
+    if chosen is best:
+        return best, root_safety
+    found = range_lte(chosen, setup, teeth)
+    if found is not None:
+        recorded_range(setup, chosen, found)
+    return chosen, root_safety
+
+
 def _lowered_raise(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTargets,
                    setup: dict[str, Any], torque: float, new: float, limit: float, why: str,
                    what: str, say: Callable[[str], None]
@@ -1199,7 +1271,7 @@ def _coast_judged(setup: dict[str, Any], coast: Any, drive: DevelopmentEvaluatio
     at its own torques, the analyses the coast steps made reused), as the drive's record
     (:func:`~contact.optimize.development_range_lte.range_record`'s keys); None where the
     coast flank was not checked at two torques or the analysis failed (logged)."""
-    from contact.optimize.development_range_lte import range_lte, range_peak
+    from contact.optimize.development_range_lte import range_peak
 
     e = coast.best if coast is not None else None
     if e is None or len(coast.torques) != 2:
@@ -1266,11 +1338,14 @@ def _at_written_lte(best: DevelopmentEvaluation, basic: BasicDesign,
     urad at its ISO capacity, below the FAIL level ``lte_capacity`` acts on."""
     if basic.gives_design_torque:
         return best, None
+    rated = float(setup["torques"][1])
     best = written_lte_capacity(best, targets, setup, teeth, say)
     _outclassed(setup, outclassed_below)
     # the re-development's torque named as what it is (not the basic file's)
-    # (stopped after its drive steps where its LTE already breaks the limit it is kept by)
-    rerun = functools.partial(rerun, torque_name=window_name(setup), stop_over_lte=True)
+    # (stopped after its drive steps where its LTE already breaks the limit it is kept by;
+    # raised back towards the rated torque where its bearing carries more: _window_raised)
+    rerun = functools.partial(rerun, torque_name=window_name(setup), stop_over_lte=True,
+                              raise_to=rated)
     return best, redeveloped_in_window(rerun, setup, basic, say)
 
 

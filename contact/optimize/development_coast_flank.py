@@ -162,7 +162,7 @@ def coast_torque_searched(basic: BasicDesign) -> bool:
 
 
 def coast_capacity_said(basic: BasicDesign, cap: CoastCapacity | None,
-                        torque_name: str = "") -> str:
+                        torque_name: str = "", design: float | None = None) -> str:
     """Why the coast design torque is what the coast capacity search ``cap``
     (:func:`coast_flank_capacity`) found, in numbers: its reason, preceded — where the
     basic file gives a design torque (the drive's) and the search lowered the coast design
@@ -173,10 +173,15 @@ def coast_capacity_said(basic: BasicDesign, cap: CoastCapacity | None,
     strength, its plastic share); empty where ``cap`` is None. ``torque_name``, where
     given, names the design torque in place of "[synthesis] design_torque": the
     development's own torque the basic data carry (the drive developed again in its LTE
-    window, :func:`contact.optimize.development_written_lte.window_name`)."""
+    window, :func:`contact.optimize.development_written_lte.window_name`); ``design``
+    [N·m], where given, is that torque as the development ended with it (raised above the
+    given one: :func:`contact.optimize.development._window_raised`)."""
     if cap is None:
         return ""
-    given = (torque_name or "[synthesis] design_torque", basic.options.design_torque)
+    name, first = torque_name or "[synthesis] design_torque", basic.options.design_torque
+    if design is not None and first is not None and design > float(first):
+        name = f"raised from {plain_number(floor_torque(float(first)))} N m, {name}"
+    given = (name, first if design is None else design)
     if given[1] is None:
         given = ("[rating] design_torque", basic.rating.get("design_torque"))
     if given[1] is None or not cap.lowered:

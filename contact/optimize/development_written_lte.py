@@ -252,7 +252,10 @@ def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], ba
     Returns
     -------
     DevelopmentResult or None
-        The development at ``floor_torque(high)``, its design torque the development's own
+        The development at ``floor_torque(high)`` (its design torque raised back towards
+        ``setup["torques"][1]`` where its bearing carries more: ``run`` is given it as
+        ``raise_to``, :func:`contact.optimize.development.develop`), its design torque the
+        development's own
         (``torque_lowered``, ``lte_torque`` that torque, ``torque_source`` saying why,
         ``basic`` its written prescriptions at the design torque as given,
         :func:`given_torque_of`), where its
@@ -311,15 +314,19 @@ def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], ba
             f"range: above {limit:g} urad or not judged; the design torque kept at "
             f"{plain_number(design)} N m")
         return None
+    final = float(again.torque[1])
+    raised = (f" and raised on that bearing to {plain_number(final)} N m (of "
+              f"{plain_number(design)}), where every capacity criterion holds"
+              if final > torque else "")
     source = (f"the torque up to which the developed bearing keeps the drive LTE within "
               f"{limit:g} urad at every torque: at "
               f"{_rated_as(setup)} {plain_number(design)} N m the "
               f"written bearing's LTE p-p was {before}, within {limit:g} urad from about "
               f"{plain_number(round(low, 1))} to {plain_number(round(high, 1))} N m only (its "
               f"light torque a share of the design torque); developed at "
-              f"{plain_number(torque)} N m: {_curve((again.torque, ends))}, "
+              f"{plain_number(torque)} N m{raised}: {_curve((again.torque, ends))}, "
               f"at most {peak:.1f} urad over ltca run's range (the check's reading)")
-    say(f"  design torque {plain_number(design)} -> {plain_number(torque)} N m: {source}")
+    say(f"  design torque {plain_number(design)} -> {plain_number(final)} N m: {source}")
     return dataclasses.replace(again, basic=given_torque_of(again.basic, basic),
                                torque_source=source, torque_lowered=True,
                                lte_torque=float(again.torque[1]))
