@@ -389,7 +389,7 @@ def checked_remedy_text(checks: Sequence[ChangeCheck], target: float, none: str,
     # no better than the written design, and refused for that alone: a change whose
     # synthesis is far from conjugate (or departs from it) is refused for that, its
     # unloaded TE measured on such flanks no number to compare (issue 71, round 32: the
-    # 19x33 at Sigma 78 deg's b2 34.6 mm, 50 % valid nodes, printed as 'checked: unloaded
+    # 19x33 at Sigma 78 deg's b2 34.6 mm, 49.8 % valid nodes, printed as 'checked: unloaded
     # TE p-p 80 urad, no lower than the written case's 25' while its record said far from
     # conjugate)
     idle = [c for c, why in refused if why.startswith("not a remedy here")]
