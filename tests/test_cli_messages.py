@@ -261,6 +261,38 @@ def test_local_cluster_workers_ignore_ctrl_c():
     assert list(ignored.values()) == [True]
 
 
+
+def _worker_log_passes() -> tuple[bool, bool]:
+    """In a worker: whether its ``distributed.worker`` logger lets through the heartbeat's
+    recoverable OSError record and the heartbeat's fatal one (distributed's own texts,
+    ``Worker.heartbeat``)."""
+    import logging
+
+    logger = logging.getLogger("distributed.worker")
+
+    def passes(msg: str) -> bool:
+        record = logger.makeRecord("distributed.worker", logging.ERROR, "worker.py", 0,
+                                   msg, (), None)
+        return bool(logger.filter(record))
+
+    return (passes("Failed to communicate with scheduler during heartbeat."),
+            passes("Unexpected exception during heartbeat. Closing worker."))
+
+
+def test_local_cluster_workers_drop_recoverable_heartbeat_traceback():
+    """A worker's heartbeat that does not reach a busy scheduler is an OSError the worker
+    recovers from (it logs it with a 30-line traceback and tries again): round 32 of issue
+    71 saw one printed mid-run by `ltca duty-cycle` at load 10, before a correct result. The
+    local cluster's workers drop that record; the fatal heartbeat error still passes.
+    ~5 s: one worker process."""
+    pytest.importorskip("distributed")
+    from contact.study.engine import open_client
+
+    with open_client(None, n_workers=1) as client:
+        seen = client.run(_worker_log_passes)
+    assert list(seen.values()) == [(False, True)]
+
+
 # --- 6. tables and options -------------------------------------------------------------
 
 def test_correct_prints_no_minus_zero_and_bounded_vif(capsys, tmp_path):

@@ -385,3 +385,19 @@ def test_the_coast_lte_steps_act_on_a_peak_between_the_torques(monkeypatch):
     assert dcs.checked_coast_lte(got, targets, setup, None, [].append, lambda v: dict(v),
                                  key_prefix=prefix) is got
     assert seen == []  # its analyses between the torques kept (the setup's memo)
+
+
+def test_an_lte_above_the_limit_never_reads_at_it():
+    """Round 32 of issue 71: the FH hypoid 13x40's development printed "with the ellipse
+    0.75 (its LTE 60 urad at 126.7 N m between the torques above 60)" for a peak of 60.x
+    urad, which read as within the limit. Whole µrad where they read above the limit,
+    more decimals where rounding would hide it (the identity: the printed number exceeds the
+    limit whenever the value does)."""
+    from contact.optimize.development_range_lte import above_limit_text
+
+    assert above_limit_text(67.4, 60.0) == "67"
+    assert above_limit_text(60.3, 60.0) == "60.3"
+    assert above_limit_text(60.49, 60.0) == "60.5"
+    assert above_limit_text(60.01, 60.0) == "60.01"
+    for peak in (60.01, 60.2, 60.5, 60.51, 61.0, 75.0):
+        assert float(above_limit_text(peak, 60.0)) > 60.0, peak

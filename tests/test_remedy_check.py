@@ -741,6 +741,39 @@ def test_a_change_no_better_than_the_written_design_is_no_remedy_where_its_lte_i
                            "angle alpha_dD of 20.5 deg")
 
 
+
+def test_a_change_far_from_conjugate_is_said_so_not_compared_by_its_te():
+    """Round 32 of issue 71: the FM spiral bevel 19x33 at Sigma 78 deg (eps_vb 1.23, its
+    developed LTE within 60 urad, written unloaded TE 25 urad). Its b2 34.6 mm checked at
+    49.8 % valid ease-off nodes (below the 50 % of near-conjugate flanks) and 80 urad; its
+    record refused it as far from conjugate, but the note printed "not a remedy here: ...
+    (checked: unloaded TE p-p 80 urad, no lower than the written case's 25)", a TE measured
+    on flanks far from conjugate compared as if valid. The note now gives the record's
+    reason (its share in tenths); beta_m 35.6 deg (57 % valid, 49 urad) stays "not a remedy
+    here". The numbers are the case's [contact_ratio_remedies] record (identity: the note
+    and the record say the same)."""
+    b2 = RatioChange("b2", 34.6, {"b2": 34.6}, "a gear face width b2 of 34.6 mm (now 34)")
+    beta = RatioChange("beta_m", 35.6, {"beta_m": math.radians(35.6)},
+                       "a mean spiral angle beta_m of 35.6 deg (now 35)")
+    checks = [_check(b2, 80.108, 51.959, 0.498), _check(beta, 49.407, 52.307, 0.567)]
+    _, refused = ranked_changes(checks, 24.834, 60.0, lte_met=True)
+    why = dict((c.change.field, w) for c, w in refused)
+    # 49.8 %, not "50 % valid ..., at least 50 %", which read as met
+    assert why["b2"].startswith("its synthesis is far from conjugate (49.8 % valid ease-off "
+                                "nodes, at least 50 %")
+    assert refusal(_check(b2, 80.0, 52.0, 0.3), 24.834, 60.0, True).startswith(
+        "its synthesis is far from conjugate (30 % valid")
+    assert why["beta_m"].startswith("not a remedy here")
+    text = checked_remedy_text(checks, 1.25, "none", 24.834, 60.0, lte_met=True)
+    assert ("not a gear face width b2 of 34.6 mm (now 34), which reaches 1.25 too: its "
+            "synthesis is far from conjugate (49.8 % valid ease-off nodes") in text
+    assert "not a remedy here: a gear face width b2" not in text
+    assert ("not a remedy here: a mean spiral angle beta_m of 35.6 deg (now 35) (checked: "
+            "unloaded TE p-p 49 urad, no lower than the written case's 25)") in text
+    assert text.startswith("no change that reaches 1.25 checks better than the written "
+                           "design")
+
+
 def test_the_record_keeps_whether_the_lte_was_met_for_ltca_run():
     """remedy_record -> TOML -> read_record keeps ``lte_met``, so that ``ltca run``'s next
     step (recorded_judge) says the 7x51's changes as synthesize's note did: no remedy; a

@@ -537,6 +537,27 @@ def range_lost(setup: Mapping[str, Any], teeth: KeptTeeth | None, limit: float
     return lost
 
 
+def above_limit_text(peak: float, limit: float) -> str:
+    """[µrad] An LTE p-p said to be above ``limit``, in whole µrad, or in as many decimals
+    (up to three) as it takes not to read at or below it (the FH 13x40 of round 32, issue
+    71, printed "its LTE 60 urad at 126.7 N m between the torques above 60" for 60.x).
+
+    Parameters
+    ----------
+    peak, limit : float — [µrad]
+
+    Returns
+    -------
+    str
+        E.g. ``"67"``, ``"60.3"``, ``"60.01"``.
+    """
+    for digits in range(4):
+        text = f"{peak:.{digits}f}"
+        if float(text) > limit:
+            return text
+    return f"{peak:.6g}"
+
+
 def _longer_ellipse(start: DevelopmentEvaluation, targets: DevelopmentTargets,
                     setup: Mapping[str, Any], teeth: KeptTeeth | None,
                     say: Callable[[str], None],
@@ -564,7 +585,8 @@ def _longer_ellipse(start: DevelopmentEvaluation, targets: DevelopmentTargets,
         tried.add(x)
         peak, at = range_peak(range_lte(best, setup, teeth))
         e = said_variant(start, dict(start.values) | {"ellipse_length": x}, STAGE,
-                         f"with the ellipse {x:.3g} (its LTE {peak:.0f} urad at "
+                         f"with the ellipse {x:.3g} (its LTE {above_limit_text(peak, limit)}"
+                         f" urad at "
                          f"{plain_number(at)} N m "
                          f"between the torques above {limit:g})", targets, setup, teeth, say,
                          placed)

@@ -287,6 +287,41 @@ class _QuietDistributed(contextlib.AbstractContextManager):
             logging.getLogger(name).setLevel(level)
 
 
+#: distributed's worker log line of a heartbeat that did not reach the scheduler: an
+#: ``OSError`` the worker recovers from by itself (``distributed.worker.Worker.heartbeat``
+#: logs it with its traceback and carries on; the next heartbeat, every ~0.5-5 s, tries
+#: again, and a scheduler really gone closes the worker, which the study then reports).
+#: On a loaded machine a study printed it mid-run, a 30-line traceback before a correct
+#: result (issue 71, round 32: ``ltca duty-cycle`` at load 10 on 2 cores).
+HEARTBEAT_HICCUP = "Failed to communicate with scheduler during heartbeat"
+
+
+class RecoverableCommFilter(logging.Filter):
+    """Drops distributed's worker log record of a recoverable heartbeat failure
+    (:data:`HEARTBEAT_HICCUP`); every other record passes, among them the heartbeat's
+    "Unexpected exception during heartbeat. Closing worker." that ends a worker."""
+
+    def filter(self, record: logging.LogRecord) -> bool:
+        return not (record.name == "distributed.worker"
+                    and str(record.msg).startswith(HEARTBEAT_HICCUP))
+
+
+def _quiet_worker_logs() -> Any:
+    """A ``distributed`` worker plugin that adds :class:`RecoverableCommFilter` to the
+    worker process's ``distributed.worker`` logger (once), for a local cluster's workers."""
+    from distributed.diagnostics.plugin import WorkerPlugin
+
+    class QuietHeartbeat(WorkerPlugin):
+        name = "hypoid-ltca-quiet-heartbeat"
+
+        def setup(self, worker: Any) -> None:
+            logger = logging.getLogger("distributed.worker")
+            if not any(isinstance(f, RecoverableCommFilter) for f in logger.filters):
+                logger.addFilter(RecoverableCommFilter())
+
+    return QuietHeartbeat()
+
+
 @contextlib.contextmanager
 def _workers_ignore_sigint() -> Iterator[None]:
     """SIGINT ignored while a local cluster starts its worker processes, which keep that
@@ -366,6 +401,8 @@ def open_client(scheduler: Any = None, n_workers: int | None = None) -> Iterator
         quiet = _QuietDistributed()
         with quiet:
             client = Client(cluster)
+            # the workers' recoverable heartbeat hiccups are not printed as tracebacks
+            client.register_plugin(_quiet_worker_logs())
             finished = False
             try:
                 yield client
