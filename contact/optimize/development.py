@@ -226,6 +226,7 @@ from contact.optimize.development_written import with_synthesis_fe_level
 from contact.optimize.development_written_drive import written_drive_check
 from contact.optimize.development_written_lte import (
     WindowMissed,
+    judged_where,
     redeveloped_in_window,
     window_missed,
     window_name,
@@ -575,12 +576,12 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
     # after the last drive step that can raise its LTE: the design torque no higher than
     # where the written bearing keeps the verdict's LTE limit at every torque, else the
     # drive developed again where it could (development_written_lte)
+    # the development of the same basic data at a given design torque (a torque window's)
+    rerun = functools.partial(_at_given_torque, basic, targets=targets, progress=progress,
+                              synthesis_progress=synthesis_progress, root_stress=root_stress,
+                              outclassed_below=outclassed_below)
     best, again = _at_written_lte(best, basic, targets, setup, teeth, say, outclassed_below,
-                                  functools.partial(_at_given_torque, basic, targets=targets,
-                                                    progress=progress,
-                                                    synthesis_progress=synthesis_progress,
-                                                    root_stress=root_stress,
-                                                    outclassed_below=outclassed_below))
+                                  rerun)
     if again is not None:
         return again
     # a re-development in the LTE window, kept only where its LTE keeps the limit: stopped
@@ -628,12 +629,16 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
                                   and coast.best is not None, built=built, say=say,
                                   setup=setup))
         _outclassed(setup, outclassed_below)
-        if root_text and setup.get("pitting_tried") and "pitting" in setup["source"]:
-            # a torque cut for the local pitting capacity says what was tried before it
-            setup["source"] = f"{setup['source']}; {setup['pitting_tried']}"
+        _pitting_tried_said(setup, root_text)
         # the LTE window rule again at the cut torques (it ran before them)
+        window: dict[str, Any] = {}
         best, root_text, root_safety = _lte_after_cut(case, best, targets, setup, teeth,
-                                                      root_text, root_safety, say)
+                                                      root_text, root_safety, say, window)
+        # no lower torque keeps the limit with this bearing: the drive developed again at
+        # the window's upper end, as before a cut, kept where its own capacity holds there
+        again = _redeveloped_after_cut(window, basic, root_text, say, rerun)
+        if again is not None:
+            return dataclasses.replace(again, seconds=time.process_time() - t0)
     else:
         # a design torque the basic file gives stands as given, but its root stress is
         # checked as ltca run judges it (on the default FE model where the coarse level
@@ -1000,7 +1005,8 @@ def _rewritten_after_cut(best: DevelopmentEvaluation, developed: BasicDesign, fl
 
 def _lte_after_cut(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTargets,
                    setup: dict[str, Any], teeth: KeptTeeth | None, root_text: str,
-                   root_safety: float, say: Callable[[str], None]
+                   root_safety: float, say: Callable[[str], None],
+                   found: dict[str, Any] | None = None
                    ) -> tuple[DevelopmentEvaluation, str, float]:
     """The written drive design after a capacity cut judged by the LTE window rule
     (:func:`~contact.optimize.development_written_lte.written_lte_capacity`), which ran
@@ -1024,13 +1030,22 @@ def _lte_after_cut(case: Case, best: DevelopmentEvaluation, targets: Development
         The case's torque phrase after the cut.
     root_safety : float
         S_F,FE at the cut's design torque [1].
+    found : dict, optional
+        Where given, filled with the rule's own setup where it recorded a window with no
+        design torque in it (its ``lte_window``: low, high [N·m], the LTE text; its
+        ``torques`` the cut ones, its ``source`` the cut's phrase extended by the rule's
+        finding), for :func:`_redeveloped_after_cut`; left empty otherwise. ``setup``
+        itself is not changed in that case.
 
     Returns
     -------
     (DevelopmentEvaluation, str, float)
         The drive design, the case's torque phrase and S_F,FE at the design torque: as
         given where no cut was made (``root_text`` empty), the limit is kept at the cut
-        torques or no lower torque keeps it.
+        torques or no lower torque keeps it. Where the root or pitting capacity cuts again
+        below the rule's torque, the phrase (and ``setup["source"]``) names the three in
+        order: the first cut's phrase, "then" the rule's, "then" the second cut's (whose
+        own words name the rule as what set the torque it was cut from).
 
     Raises
     ------
@@ -1052,15 +1067,107 @@ def _lte_after_cut(case: Case, best: DevelopmentEvaluation, targets: Development
     lowered = written_lte_capacity(best, targets, trial, teeth, say)
     new = float(trial["torques"][1])
     if not new < torque:
+        if found is not None and trial.get("lte_window") is not None:
+            found.update(trial)  # no torque in the window: a re-development may find one
         return best, root_text, root_safety
     source = f"{root_text}; then {trial['source']}"
-    setup.update(torques=list(trial["torques"]), source=source, lowered=True,
+    # the capacity read again at the rule's torque: its phrase, where it cuts again, names
+    # the rule as what set the torque it cuts from (root_capacity quotes the source's first
+    # words), and the case's phrase keeps the first cut and the rule before it
+    setup.update(torques=list(trial["torques"]), source=trial["source"], lowered=True,
                  lte_torque=new)
     again, safety, text = checked_root_capacity(case, lowered, targets, setup, say)
-    if text:  # cannot be lower at a lower torque; said, kept as the rule set it
+    if text:  # cut again below the rule's torque (the LTE there not judged again)
         log.info("development: the root capacity cut again below the LTE torque: %s", text)
-        return again, setup["source"], safety
+        source = f"{source}; then {text}"
+    setup["source"] = source
     return again, source, safety
+
+
+def _pitting_tried_said(setup: dict[str, Any], root_text: str) -> None:
+    """A torque cut for the local pitting capacity (``root_text`` set, ``setup["source"]``
+    naming pitting) says what was tried before it: ``setup["source"]`` extended by
+    ``setup["pitting_tried"]`` where that is set (:func:`develop`, after the cut)."""
+    if root_text and setup.get("pitting_tried") and "pitting" in setup["source"]:
+        setup["source"] = f"{setup['source']}; {setup['pitting_tried']}"
+
+
+def _redeveloped_after_cut(window: dict[str, Any], basic: BasicDesign, root_text: str,
+                           say: Callable[[str], None],
+                           rerun: Callable[..., DevelopmentResult]
+                           ) -> DevelopmentResult | None:
+    """The drive developed again at the upper end of the LTE window after a capacity cut,
+    where the window rule at the cut torques found no lower design torque at which the
+    written bearing keeps the verdict's limit at every torque (:func:`_lte_after_cut`'s
+    ``found``), as :func:`_at_written_lte` does before the cut
+    (:func:`~contact.optimize.development_written_lte.redeveloped_in_window`, stopped after
+    its drive steps where its LTE already breaks the limit); kept only where it keeps the
+    limit and where its own root-stress and local pitting capacity hold at its design
+    torque (:func:`~contact.optimize.development_root.capacity_holds`).
+
+    Parameters
+    ----------
+    window : dict
+        The rule's setup where it recorded a window with no torque in it (``lte_window``:
+        low, high [N·m], the LTE text; ``torques`` [N·m] the cut ones; ``source`` the cut's
+        phrase extended by the rule's); empty: nothing to do.
+    basic : BasicDesign
+        The basic data as given (no design torque of its own).
+    root_text : str
+        The cut's torque phrase.
+    say : callable (str) → None
+        Where the lines go.
+    rerun : callable (float, **kw) → DevelopmentResult
+        The development of ``basic`` at a given design torque [N·m]
+        (:func:`_at_given_torque` with the development's arguments).
+
+    Returns
+    -------
+    DevelopmentResult or None
+        The re-development, its torque source the cut's phrase "then" the window's; None
+        where no window was recorded, the re-development is not kept by
+        ``redeveloped_in_window`` or its capacity fails (or is not known) at its torque.
+
+    Raises
+    ------
+    Nothing the re-development raises but an interrupt.
+
+    Notes
+    -----
+    Why after a cut as before it: the cut torque is the capacity of the bearing developed
+    at the rated torque, and the window rule's finding (its LTE falls from the unloaded TE
+    at light load, so no lower design torque with its light torque keeps the limit) is the
+    same finding that re-develops the drive before a cut; without it the design is written
+    above the limit at its torque (``ltca run``'s ATTENTION). The window's upper end is
+    below the cut torque (:func:`~contact.optimize.development_written_lte.
+    written_lte_capacity` records it only there), so the torque is only lowered; the
+    bearing developed there is another bearing, whose capacity the cut did not measure:
+    checked at its torque, not kept where it fails (the cut design then stands, at its
+    capacity). CPU: one more development at most (its coast flank, FE build and case not
+    made where its drive steps already miss the limit) and one analysis with the root
+    stress, paid only by a cut design in that case. Source: issue 71 ("LTE p-p ≤ 60 µrad
+    at every torque"); branch diag93.
+    """
+    from contact.optimize.development_root import capacity_holds
+
+    if window.get("lte_window") is None:
+        return None
+    cut = float(window["torques"][1])
+    again = redeveloped_in_window(
+        functools.partial(rerun, torque_name=window_name(window), stop_over_lte=True),
+        window, basic, say)
+    if again is None:
+        return None
+    torque = float(again.torque[1])
+    holds, text = capacity_holds(again.case, again.torque, say)
+    if not holds:
+        say(f"development: the bearing developed at {plain_number(torque)} N m: {text} "
+            f"there, so not kept; the design torque kept at {plain_number(cut)} N m, its "
+            "capacity")
+        return None
+    say(f"development: the bearing developed at {plain_number(torque)} N m holds its "
+        f"capacity there ({text}): kept")
+    return dataclasses.replace(again, torque_source=f"{root_text}; then {again.torque_source}")
 
 
 def _regained(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTargets,
@@ -1283,8 +1390,7 @@ def _stop_where_missed(setup: dict[str, Any], best: DevelopmentEvaluation, stop:
     said through ``say``."""
     missed = window_missed(setup, best) if stop else None
     if missed is not None:
-        where = ("over the range" if missed.get("judged", True) else
-                 "at its torques (the range not judged)")
+        where = judged_where(missed)
         say(f"  its drive LTE p-p at most {missed['peak']:.1f} urad {where} after the "
             "drive steps: stopped (a re-development in the LTE window is not kept above "
             "the limit)")

@@ -33,7 +33,7 @@ case are not made (issue 71, branch cpu90b).
 Public names
 ------------
 written_lte_capacity, lowered_torque, lte_window, redeveloped_in_window, window_name,
-window_missed, WindowMissed
+window_missed, WindowMissed, judged_where
 """
 
 from __future__ import annotations
@@ -60,7 +60,7 @@ from contact.study.lte_within import within_torque
 from geometry.core.errors import raise_if_interrupted
 from geometry.core.text import plain_number
 
-__all__ = ["WindowMissed", "given_torque_of", "lowered_torque", "lte_window",
+__all__ = ["WindowMissed", "given_torque_of", "judged_where", "lowered_torque", "lte_window",
            "redeveloped_in_window",
            "window_missed", "window_name", "written_lte_capacity"]
 
@@ -288,8 +288,7 @@ def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], ba
         again = run(torque)
     except WindowMissed as missed:  # stopped after its drive steps: it would not be kept
         found = missed.record
-        where = ("over the range" if found.get("judged", True) else
-                 "at its torques, the range not judged,")
+        where = judged_where(found, clause=True)
         say(f"development: at {plain_number(torque)} N m its drive LTE p-p "
             f"{_curve((found['torques'], found['lte']))}, at most {found['peak']:.1f} "
             f"{where} after its drive steps (the check's reading): above {limit:g} urad, "
@@ -423,6 +422,38 @@ def window_missed(setup: dict[str, Any], best: DevelopmentEvaluation) -> dict[st
     return found if peak > limit else None
 
 
+def judged_where(record: dict[str, Any], clause: bool = False) -> str:
+    """Where the LTE p-p of a :func:`window_missed` record was read, as the lines that
+    stop or refuse a re-development in the LTE window say it.
+
+    Parameters
+    ----------
+    record : dict
+        A :func:`window_missed` record (its ``judged``: False where it is the LTE at the
+        development's own torques, no range judged; absent or True: over the range).
+    clause : bool, optional
+        Default False: the unjudged case as an aside in brackets (``develop``'s stop line,
+        ``"at its torques (the range not judged)"``); True: as a clause between commas
+        (:func:`redeveloped_in_window`'s line, ``"at its torques, the range not
+        judged,"``).
+
+    Returns
+    -------
+    str
+        ``"over the range"`` where the range was judged, else one of the two texts above.
+
+    Notes
+    -----
+    One place for the two lines' words (they were written in each, branch diag93).
+    Source: issue 71 ("LTE p-p ≤ 60 µrad at every torque"); the record is
+    :func:`window_missed`'s.
+    """
+    if record.get("judged", True):
+        return "over the range"
+    return ("at its torques, the range not judged," if clause
+            else "at its torques (the range not judged)")
+
+
 def _unjudged_miss(setup: dict[str, Any], best: DevelopmentEvaluation,
                    limit: float) -> dict[str, Any] | None:
     """:func:`window_missed` where the check recorded no finite LTE over the range of
@@ -536,8 +567,11 @@ def lte_window(torques: Sequence[float], lte: Sequence[float], limit: float
 
 def _rated_as(setup: dict[str, Any]) -> str:
     """The first words of the design torque's source before a lowering ("the ISO 10300
-    capacity" of "the ISO 10300 capacity, the pinion torque at which …; …")."""
-    return setup["source"].split(",")[0].split(";")[0]
+    capacity" of "the ISO 10300 capacity, the pinion torque at which …; …"; "the local
+    pitting capacity of the developed bearing" of a capacity cut's "… bearing: its LTCA
+    peak flank pressure …", whose words after the colon the lowering's phrase names no
+    torque for: branch diag93)."""
+    return setup["source"].split(",")[0].split(";")[0].split(":")[0]
 
 
 def _curve(found: tuple[Sequence[float], Sequence[float]]) -> str:
