@@ -431,7 +431,11 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
     ``root_stress``), the drive and coast flank analysed again at the new torques; the
     check's steps then run at them and, where they write another bearing whose capacity
     holds, the torque is raised back as far as its capacity, its drive targets and its
-    mounting tolerance hold (:func:`_rewritten_after_cut`).
+    mounting tolerance hold (:func:`_rewritten_after_cut`); then the LTE window rule runs
+    again at the torques the cut left (:func:`_lte_after_cut`) and, where no lower torque
+    keeps the verdict's LTE limit with that bearing, the drive is developed again at its
+    window's upper end, kept where it keeps the limit and its own capacity holds there
+    (:func:`_redeveloped_after_cut`).
 
     3. **coast flank**
        (:func:`~contact.optimize.development_coast_flank.coast_development`): the
@@ -1024,8 +1028,9 @@ def _lte_after_cut(case: Case, best: DevelopmentEvaluation, targets: Development
     targets, setup, teeth, say
         The development's; ``setup``'s ``torques``, ``source``, ``lowered`` and
         ``lte_torque`` [N·m] updated only where the torque is lowered (the rule's own
-        record of a window it found no torque in is not kept: the design stays at its
-        capacity, the line said).
+        record of a window it found no torque in goes to ``found``, not ``setup``: the
+        design stays at its capacity unless :func:`_redeveloped_after_cut` keeps a
+        re-development in that window).
     root_text : str
         The case's torque phrase after the cut.
     root_safety : float

@@ -28,7 +28,11 @@ drive again at its upper end, kept where that development keeps the limit (the 1
 re-development is stopped after its drive steps where its check's own LTE record over
 ``ltca run``'s range exceeds the limit already (:class:`WindowMissed`,
 :func:`window_missed`): it could not be kept, so its coast flank, FE root checks and
-case are not made (issue 71, branch cpu90b).
+case are not made (issue 71, branch cpu90b). After a capacity cut the rule runs again at
+the cut torques (``development._lte_after_cut``) and, where it records such a window there,
+the drive is developed again at its upper end as before the cut, kept only where the
+re-developed bearing's own root-stress and local pitting capacity hold at that torque
+(``development._redeveloped_after_cut``, branch diag93).
 
 Public names
 ------------
