@@ -640,9 +640,9 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
                                                       root_text, root_safety, say, window)
         # no lower torque keeps the limit with this bearing: the drive developed again at
         # the window's upper end, as before a cut, kept where its own capacity holds there
-        again = _redeveloped_after_cut(window, basic, root_text, say, rerun)
-        if again is not None:
-            return dataclasses.replace(again, seconds=time.process_time() - t0)
+        redone = _redeveloped_after_cut(window, basic, root_text, say, rerun)
+        if redone is not None:
+            return dataclasses.replace(redone, seconds=time.process_time() - t0)
     else:
         # a design torque the basic file gives stands as given, but its root stress is
         # checked as ltca run judges it (on the default FE model where the coarse level
