@@ -233,3 +233,45 @@ def test_the_two_lines_of_a_missed_window_share_their_words():
     assert written.judged_where({"judged": False}) == "at its torques (the range not judged)"
     assert written.judged_where({"judged": False}, clause=True) == (
         "at its torques, the range not judged,")
+
+
+@pytest.mark.parametrize("between, kept", [(58.0, True), (63.0, False)])
+def test_a_re_development_whose_range_no_check_judged_is_judged_on_its_written_design(
+        monkeypatch, between, kept):
+    """The forced run on the 13×17 (docs/synthesis.md, branch diag93): re-developed at
+    267.9 N m it wrote 37.8 / 55.0 µrad at 40.1 / 267.9 N m, but a step after the check
+    changed the design, so no record judged its range (lte_range None) and
+    redeveloped_in_window refused it ("at most nan over the range"). Where its ends keep
+    the limit, that range is now analysed on its written drive design (range_lte, the
+    stand-in: a peak of 58 or 63 µrad between the ends): kept at 58, not at 63 (the
+    verdict's limit 60 µrad). Where the ends break the limit nothing is analysed."""
+    best = checked(dict(_VALUES), _metrics(lte_peak_to_peak=[37.8, 55.0]),
+                   DevelopmentTargets(), 0.6)
+    asked: list = []
+
+    def curve(e, setup, teeth):
+        asked.append((e, tuple(setup["torques"]), teeth))
+        return (40.1, 150.0, 267.9), (37.8, between, 55.0)
+
+    monkeypatch.setattr(written, "range_lte", curve)
+    monkeypatch.setattr(written, "given_torque_of", lambda developed, basic: developed)
+    window = {"torques": [50.0, 333.4], "source": "the local pitting capacity ...",
+              "lte_window": (40.0, 267.9, "44.1 / 62.4 urad at 50 / 333.4 N m")}
+    lines: list[str] = []
+    got = written.redeveloped_in_window(
+        lambda t: WindowResult(best, None, (40.1, t)), window, "as given", lines.append)
+    assert asked == [(best, (40.1, pytest.approx(267.9, abs=1e-9)), None)]
+    if kept:
+        assert got.lte_torque == pytest.approx(267.9, abs=1e-9)
+        assert ("at most 58.0 urad over ltca run's range (judged on its written drive "
+                "design)") in got.torque_source
+    else:
+        assert got is None and "at most 63.0 over the range" in lines[-1]
+    # ends above the limit: refused without the analysis
+    asked.clear()
+    above = checked(dict(_VALUES), _metrics(lte_peak_to_peak=[37.8, 61.0]),
+                    DevelopmentTargets(), 0.6)
+    assert written.redeveloped_in_window(
+        lambda t: WindowResult(above, None, (40.1, t)), window, "as given",
+        lines.append) is None
+    assert asked == []

@@ -261,7 +261,9 @@ def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], ba
         ``basic`` its written prescriptions at the design torque as given,
         :func:`given_torque_of`), where its
         drive LTE p-p at the light and design torque and between them (its
-        ``lte_range``) keeps the limit; None where no window was recorded, the run fails
+        ``lte_range``; where no check judged its written design between the torques and
+        its two ends keep the limit, that range analysed here: ``range_lte`` on its
+        drive design) keeps the limit; None where no window was recorded, the run fails
         or its LTE does not keep the limit.
 
     Raises
@@ -308,6 +310,12 @@ def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], ba
     ends = np.asarray(again.best.metrics["lte_peak_to_peak"], float)
     judged = again.lte_range
     peak = float(judged["peak"]) if judged is not None else math.nan
+    reading = "the check's reading"
+    if (not math.isfinite(peak) and np.all(np.isfinite(ends)) and np.all(ends <= limit)):
+        # its ends keep the limit but no check judged its written design between them
+        # (a later step changed it): judged here, one range analysis (branch diag93)
+        peak = _range_peak(again)
+        reading = "judged on its written drive design"
     if not (np.all(np.isfinite(ends)) and np.all(ends <= limit) and peak <= limit):
         say(f"development: at {plain_number(torque)} N m its drive LTE p-p "
             f"{' / '.join(f'{x:.1f}' for x in ends)} urad, at most {peak:.1f} over the "
@@ -321,11 +329,23 @@ def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], ba
               f"{plain_number(round(low, 1))} to {plain_number(round(high, 1))} N m only (its "
               f"light torque a share of the design torque); developed at "
               f"{plain_number(torque)} N m: {_curve((again.torque, ends))}, "
-              f"at most {peak:.1f} urad over ltca run's range (the check's reading)")
+              f"at most {peak:.1f} urad over ltca run's range ({reading})")
     say(f"  design torque {plain_number(design)} -> {plain_number(torque)} N m: {source}")
     return dataclasses.replace(again, basic=given_torque_of(again.basic, basic),
                                torque_source=source, torque_lowered=True,
                                lte_torque=float(again.torque[1]))
+
+
+def _range_peak(again: Any) -> float:
+    """The largest LTE p-p [µrad] over ``ltca run``'s range of the drive design a
+    re-development wrote (``again.best``, its case the written one where the written drive
+    check re-read it) at its own torques ``again.torque`` [N·m]
+    (:func:`~contact.optimize.development_range_lte.range_lte`, the shell teeth built for
+    it as ``ltca run`` builds them); NaN where not analysed."""
+    from contact.optimize.development_range_lte import range_peak
+
+    found = range_lte(again.best, {"torques": [float(t) for t in again.torque]}, None)
+    return range_peak(found)[0]
 
 
 def given_torque_of(developed: Any, basic: Any) -> Any:
