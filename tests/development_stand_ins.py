@@ -197,3 +197,4 @@ class WindowResult:
     torque_lowered: bool = False
     lte_torque: float = float("nan")
     case: object = "case"
+    coast: dict | None = None

@@ -1107,8 +1107,10 @@ def _redeveloped_after_cut(window: dict[str, Any], basic: BasicDesign, root_text
     ``found``), as :func:`_at_written_lte` does before the cut
     (:func:`~contact.optimize.development_written_lte.redeveloped_in_window`, stopped after
     its drive steps where its LTE already breaks the limit); kept only where it keeps the
-    limit and where its own root-stress and local pitting capacity hold at its design
-    torque (:func:`~contact.optimize.development_root.capacity_holds`).
+    limit, where its coast flank keeps it too at the coast torques
+    (:func:`~contact.optimize.development_process.lte_over` names no flank) and where its
+    own root-stress and local pitting capacity hold at its design torque
+    (:func:`~contact.optimize.development_root.capacity_holds`).
 
     Parameters
     ----------
@@ -1131,7 +1133,8 @@ def _redeveloped_after_cut(window: dict[str, Any], basic: BasicDesign, root_text
     DevelopmentResult or None
         The re-development, its torque source the cut's phrase "then" the window's; None
         where no window was recorded, the re-development is not kept by
-        ``redeveloped_in_window`` or its capacity fails (or is not known) at its torque.
+        ``redeveloped_in_window``, either flank's LTE at its torques is above the limit or
+        its capacity fails (or is not known) at its torque.
 
     Raises
     ------
@@ -1153,6 +1156,8 @@ def _redeveloped_after_cut(window: dict[str, Any], basic: BasicDesign, root_text
     stress, paid only by a cut design in that case. Source: issue 71 ("LTE p-p ≤ 60 µrad
     at every torque"); branch diag93.
     """
+    from contact.optimize.development_process import lte_over
+    from contact.optimize.development_range_lte import verdict_lte_limit
     from contact.optimize.development_root import capacity_holds
 
     if window.get("lte_window") is None:
@@ -1164,6 +1169,12 @@ def _redeveloped_after_cut(window: dict[str, Any], basic: BasicDesign, root_text
     if again is None:
         return None
     torque = float(again.torque[1])
+    over = lte_over(again)  # its coast flank too: a flank above the limit for another
+    if over:  # is no remedy of the ATTENTION
+        say(f"development: the bearing developed at {plain_number(torque)} N m: {over}, "
+            f"above {verdict_lte_limit():g} urad, so not kept; the design torque kept at "
+            f"{plain_number(cut)} N m, its capacity")
+        return None
     holds, text = capacity_holds(again.case, again.torque, say)
     if not holds:
         say(f"development: the bearing developed at {plain_number(torque)} N m: {text} "
