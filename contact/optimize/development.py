@@ -577,13 +577,13 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
     # relief deeper, on the design as it is written (after the edge-peak step's relief;
     # development_hollow_target)
     best = checked_hollow_target(best, targets, setup, teeth, say, placed)
-    # after the last drive step that can raise its LTE: the design torque no higher than
-    # where the written bearing keeps the verdict's LTE limit at every torque, else the
-    # drive developed again where it could (development_written_lte)
     # the development of the same basic data at a given design torque (a torque window's)
     rerun = functools.partial(_at_given_torque, basic, targets=targets, progress=progress,
                               synthesis_progress=synthesis_progress, root_stress=root_stress,
                               outclassed_below=outclassed_below)
+    # after the last drive step that can raise its LTE: the design torque no higher than
+    # where the written bearing keeps the verdict's LTE limit at every torque, else the
+    # drive developed again where it could (development_written_lte)
     best, again = _at_written_lte(best, basic, targets, setup, teeth, say, outclassed_below,
                                   rerun)
     if again is not None:
@@ -639,7 +639,8 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
         best, root_text, root_safety = _lte_after_cut(case, best, targets, setup, teeth,
                                                       root_text, root_safety, say, window)
         # no lower torque keeps the limit with this bearing: the drive developed again at
-        # the window's upper end, as before a cut, kept where its own capacity holds there
+        # the window's upper end, as before a cut, kept where both flanks keep the limit
+        # and its own capacity holds there
         redone = _redeveloped_after_cut(window, basic, root_text, say, rerun)
         if redone is not None:
             return dataclasses.replace(redone, seconds=time.process_time() - t0)
