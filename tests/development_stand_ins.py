@@ -186,7 +186,9 @@ def lte_law_start(monkeypatch, law, torques: Iterable[float], values: Mapping[st
 class WindowResult:
     """The fields of a DevelopmentResult that
     ``development_written_lte.redeveloped_in_window`` reads and replaces (tests/
-    test_development_written_lte.py, tests/test_development_window_missed.py)."""
+    test_development_written_lte.py, tests/test_development_window_missed.py), and its
+    ``case``, whose capacity ``development._redeveloped_after_cut`` checks (tests/
+    test_development_lte_after_cut.py)."""
     best: object
     lte_range: dict | None
     torque: tuple[float, float]
@@ -194,3 +196,5 @@ class WindowResult:
     torque_source: str = "[synthesis] design_torque of the basic file"
     torque_lowered: bool = False
     lte_torque: float = float("nan")
+    case: object = "case"
+    coast: dict | None = None

@@ -226,6 +226,7 @@ from contact.optimize.development_written import with_synthesis_fe_level
 from contact.optimize.development_written_drive import written_drive_check
 from contact.optimize.development_written_lte import (
     WindowMissed,
+    judged_where,
     redeveloped_in_window,
     window_missed,
     window_name,
@@ -436,7 +437,11 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
     ``root_stress``), the drive and coast flank analysed again at the new torques; the
     check's steps then run at them and, where they write another bearing whose capacity
     holds, the torque is raised back as far as its capacity, its drive targets and its
-    mounting tolerance hold (:func:`_rewritten_after_cut`).
+    mounting tolerance hold (:func:`_rewritten_after_cut`); then the LTE window rule runs
+    again at the torques the cut left (:func:`_lte_after_cut`) and, where no lower torque
+    keeps the verdict's LTE limit with that bearing, the drive is developed again at its
+    window's upper end, kept where it keeps the limit and its own capacity holds there
+    (:func:`_redeveloped_after_cut`).
 
     3. **coast flank**
        (:func:`~contact.optimize.development_coast_flank.coast_development`): the
@@ -578,15 +583,15 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
     # relief deeper, on the design as it is written (after the edge-peak step's relief;
     # development_hollow_target)
     best = checked_hollow_target(best, targets, setup, teeth, say, placed)
+    # the development of the same basic data at a given design torque (a torque window's)
+    rerun = functools.partial(_at_given_torque, basic, targets=targets, progress=progress,
+                              synthesis_progress=synthesis_progress, root_stress=root_stress,
+                              outclassed_below=outclassed_below)
     # after the last drive step that can raise its LTE: the design torque no higher than
     # where the written bearing keeps the verdict's LTE limit at every torque, else the
     # drive developed again where it could (development_written_lte)
     best, again = _at_written_lte(best, basic, targets, setup, teeth, say, outclassed_below,
-                                  functools.partial(_at_given_torque, basic, targets=targets,
-                                                    progress=progress,
-                                                    synthesis_progress=synthesis_progress,
-                                                    root_stress=root_stress,
-                                                    outclassed_below=outclassed_below))
+                                  rerun)
     if again is not None:
         return again
     # a re-development in the LTE window, kept only where its LTE keeps the limit: stopped
@@ -634,12 +639,17 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
                                   and coast.best is not None, built=built, say=say,
                                   setup=setup))
         _outclassed(setup, outclassed_below)
-        if root_text and setup.get("pitting_tried") and "pitting" in setup["source"]:
-            # a torque cut for the local pitting capacity says what was tried before it
-            setup["source"] = f"{setup['source']}; {setup['pitting_tried']}"
+        _pitting_tried_said(setup, root_text)
         # the LTE window rule again at the cut torques (it ran before them)
+        window: dict[str, Any] = {}
         best, root_text, root_safety = _lte_after_cut(case, best, targets, setup, teeth,
-                                                      root_text, root_safety, say)
+                                                      root_text, root_safety, say, window)
+        # no lower torque keeps the limit with this bearing: the drive developed again at
+        # the window's upper end, as before a cut, kept where both flanks keep the limit
+        # and its own capacity holds there
+        redone = _redeveloped_after_cut(window, basic, root_text, say, rerun)
+        if redone is not None:
+            return dataclasses.replace(redone, seconds=time.process_time() - t0)
     else:
         # a design torque the basic file gives stands as given, but its root stress is
         # checked as ltca run judges it (on the default FE model where the coarse level
@@ -1011,7 +1021,8 @@ def _rewritten_after_cut(best: DevelopmentEvaluation, developed: BasicDesign, fl
 
 def _lte_after_cut(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTargets,
                    setup: dict[str, Any], teeth: KeptTeeth | None, root_text: str,
-                   root_safety: float, say: Callable[[str], None]
+                   root_safety: float, say: Callable[[str], None],
+                   found: dict[str, Any] | None = None
                    ) -> tuple[DevelopmentEvaluation, str, float]:
     """The written drive design after a capacity cut judged by the LTE window rule
     (:func:`~contact.optimize.development_written_lte.written_lte_capacity`), which ran
@@ -1029,19 +1040,29 @@ def _lte_after_cut(case: Case, best: DevelopmentEvaluation, targets: Development
     targets, setup, teeth, say
         The development's; ``setup``'s ``torques``, ``source``, ``lowered`` and
         ``lte_torque`` [N·m] updated only where the torque is lowered (the rule's own
-        record of a window it found no torque in is not kept: the design stays at its
-        capacity, the line said).
+        record of a window it found no torque in goes to ``found``, not ``setup``: the
+        design stays at its capacity unless :func:`_redeveloped_after_cut` keeps a
+        re-development in that window).
     root_text : str
         The case's torque phrase after the cut.
     root_safety : float
         S_F,FE at the cut's design torque [1].
+    found : dict, optional
+        Where given, filled with the rule's own setup where it recorded a window with no
+        design torque in it (its ``lte_window``: low, high [N·m], the LTE text; its
+        ``torques`` the cut ones, its ``source`` the cut's phrase extended by the rule's
+        finding), for :func:`_redeveloped_after_cut`; left empty otherwise. ``setup``
+        itself is not changed in that case.
 
     Returns
     -------
     (DevelopmentEvaluation, str, float)
         The drive design, the case's torque phrase and S_F,FE at the design torque: as
         given where no cut was made (``root_text`` empty), the limit is kept at the cut
-        torques or no lower torque keeps it.
+        torques or no lower torque keeps it. Where the root or pitting capacity cuts again
+        below the rule's torque, the phrase (and ``setup["source"]``) names the three in
+        order: the first cut's phrase, "then" the rule's, "then" the second cut's (whose
+        own words name the rule as what set the torque it was cut from).
 
     Raises
     ------
@@ -1063,15 +1084,121 @@ def _lte_after_cut(case: Case, best: DevelopmentEvaluation, targets: Development
     lowered = written_lte_capacity(best, targets, trial, teeth, say)
     new = float(trial["torques"][1])
     if not new < torque:
+        if found is not None and trial.get("lte_window") is not None:
+            found.update(trial)  # no torque in the window: a re-development may find one
         return best, root_text, root_safety
     source = f"{root_text}; then {trial['source']}"
-    setup.update(torques=list(trial["torques"]), source=source, lowered=True,
+    # the capacity read again at the rule's torque: its phrase, where it cuts again, names
+    # the rule as what set the torque it cuts from (root_capacity quotes the source's first
+    # words), and the case's phrase keeps the first cut and the rule before it
+    setup.update(torques=list(trial["torques"]), source=trial["source"], lowered=True,
                  lte_torque=new)
     again, safety, text = checked_root_capacity(case, lowered, targets, setup, say)
-    if text:  # cannot be lower at a lower torque; said, kept as the rule set it
+    if text:  # cut again below the rule's torque (the LTE there not judged again)
         log.info("development: the root capacity cut again below the LTE torque: %s", text)
-        return again, setup["source"], safety
+        source = f"{source}; then {text}"
+    setup["source"] = source
     return again, source, safety
+
+
+def _pitting_tried_said(setup: dict[str, Any], root_text: str) -> None:
+    """A torque cut for the local pitting capacity (``root_text`` set, ``setup["source"]``
+    naming pitting) says what was tried before it: ``setup["source"]`` extended by
+    ``setup["pitting_tried"]`` where that is set (:func:`develop`, after the cut)."""
+    if root_text and setup.get("pitting_tried") and "pitting" in setup["source"]:
+        setup["source"] = f"{setup['source']}; {setup['pitting_tried']}"
+
+
+def _redeveloped_after_cut(window: dict[str, Any], basic: BasicDesign, root_text: str,
+                           say: Callable[[str], None],
+                           rerun: Callable[..., DevelopmentResult]
+                           ) -> DevelopmentResult | None:
+    """The drive developed again at the upper end of the LTE window after a capacity cut,
+    where the window rule at the cut torques found no lower design torque at which the
+    written bearing keeps the verdict's limit at every torque (:func:`_lte_after_cut`'s
+    ``found``), as :func:`_at_written_lte` does before the cut
+    (:func:`~contact.optimize.development_written_lte.redeveloped_in_window`, stopped after
+    its drive steps where its LTE already breaks the limit); kept only where it keeps the
+    limit, where its coast flank keeps it too at the coast torques
+    (:func:`~contact.optimize.development_process.lte_over` names no flank) and where its
+    own root-stress and local pitting capacity hold at its design torque
+    (:func:`~contact.optimize.development_root.capacity_holds`).
+
+    Parameters
+    ----------
+    window : dict
+        The rule's setup where it recorded a window with no torque in it (``lte_window``:
+        low, high [N·m], the LTE text; ``torques`` [N·m] the cut ones; ``source`` the cut's
+        phrase extended by the rule's); empty: nothing to do.
+    basic : BasicDesign
+        The basic data as given (no design torque of its own).
+    root_text : str
+        The cut's torque phrase.
+    say : callable (str) → None
+        Where the lines go.
+    rerun : callable (float, **kw) → DevelopmentResult
+        The development of ``basic`` at a given design torque [N·m]
+        (:func:`_at_given_torque` with the development's arguments).
+
+    Returns
+    -------
+    DevelopmentResult or None
+        The re-development, its torque source the cut's phrase "then" the window's; None
+        where no window was recorded, the re-development is not kept by
+        ``redeveloped_in_window``, either flank's LTE at its torques is above the limit or
+        its capacity fails (or is not known) at its torque.
+
+    Raises
+    ------
+    Nothing the re-development raises but an interrupt.
+
+    Notes
+    -----
+    Why after a cut as before it: the cut torque is the capacity of the bearing developed
+    at the rated torque, and the window rule's finding (its LTE falls from the unloaded TE
+    at light load, so no lower design torque with its light torque keeps the limit) is the
+    same finding that re-develops the drive before a cut; without it the design is written
+    above the limit at its torque (``ltca run``'s ATTENTION). The window's upper end is
+    below the cut torque (:func:`~contact.optimize.development_written_lte.
+    written_lte_capacity` records it only there), so the torque is only lowered; the
+    bearing developed there is another bearing, whose capacity the cut did not measure:
+    checked at its torque, not kept where it fails (the cut design then stands, at its
+    capacity). CPU: one more development at most (its coast flank, FE build and case not
+    made where its drive steps already miss the limit) and one analysis with the root
+    stress, paid only by a cut design in that case. Source: issue 71 ("LTE p-p ≤ 60 µrad
+    at every torque"); branch diag93.
+    """
+    from contact.optimize.development_process import lte_over
+    from contact.optimize.development_range_lte import verdict_lte_limit
+    from contact.optimize.development_root import capacity_holds
+
+    if window.get("lte_window") is None:
+        return None
+    cut = float(window["torques"][1])
+    # (raised back towards the cut torque where its own bearing carries more, as before a
+    # cut: _window_raised)
+    again = redeveloped_in_window(
+        functools.partial(rerun, torque_name=window_name(window), stop_over_lte=True,
+                          raise_to=cut),
+        window, basic, say)
+    if again is None:
+        return None
+    torque = float(again.torque[1])
+    over = lte_over(again)  # its coast flank too: a flank above the limit for another
+    if over:  # is no remedy of the ATTENTION
+        say(f"development: the bearing developed at {plain_number(torque)} N m: {over}, "
+            f"above {verdict_lte_limit():g} urad, so not kept; the design torque kept at "
+            f"{plain_number(cut)} N m, its capacity")
+        return None
+    holds, text = capacity_holds(again.case, again.torque, say)
+    if not holds:
+        say(f"development: the bearing developed at {plain_number(torque)} N m: {text} "
+            f"there, so not kept; the design torque kept at {plain_number(cut)} N m, its "
+            "capacity")
+        return None
+    say(f"development: the bearing developed at {plain_number(torque)} N m holds its "
+        f"capacity there ({text}): kept")
+    return dataclasses.replace(again, torque_source=f"{root_text}; then {again.torque_source}")
 
 
 def _regained(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTargets,
@@ -1358,8 +1485,7 @@ def _stop_where_missed(setup: dict[str, Any], best: DevelopmentEvaluation, stop:
     said through ``say``."""
     missed = window_missed(setup, best) if stop else None
     if missed is not None:
-        where = ("over the range" if missed.get("judged", True) else
-                 "at its torques (the range not judged)")
+        where = judged_where(missed)
         say(f"  its drive LTE p-p at most {missed['peak']:.1f} urad {where} after the "
             "drive steps: stopped (a re-development in the LTE window is not kept above "
             "the limit)")

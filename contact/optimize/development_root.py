@@ -745,6 +745,64 @@ def given_torque_root(case, setup: dict[str, Any], say: Callable[[str], None]
     return safety, text
 
 
+def capacity_holds(case, torques, say: Callable[[str], None]) -> tuple[bool, str]:
+    """Whether the written ``case`` holds every criterion of :data:`CRITERIA` at the design
+    torque ``torques[1]`` — S_F,FE >= S_Fmin and S_H,loc >= S_Hmin, as :func:`root_capacity`
+    judges them — the torque not changed: the check of a bearing developed at a torque
+    below a capacity cut (``development._redeveloped_after_cut``), which may be kept only
+    where its own capacity holds there.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+        The case written (on the FE level its development decided).
+    torques : sequence of float, shape (2,) — [N·m]
+        Its light and design torque.
+    say : callable (str) → None
+        Where a failed analysis is said.
+
+    Returns
+    -------
+    holds : bool
+        True where every criterion the analysis gives holds at the design torque; False
+        where one fails, where the analysis fails or where it gives no criterion (nothing
+        known: a bearing whose capacity is not known is not kept in place of one checked).
+    text : str
+        Each criterion with its safety, member and minimum ("S_F,FE 2.92 (gear) >= 1.3;
+        S_H,loc 0.98 (pinion) < 1"), or why it was not checked.
+
+    Raises
+    ------
+    KeyboardInterrupt
+        Passed on; every other error of the analysis is said, not raised.
+
+    Notes
+    -----
+    One analysis at ``ltca run``'s sampling with the root stress and the ISO 10300 rating
+    (:func:`_root_tree`; the FE models are cached by the members' geometry). Source: the
+    verdict's root-stress check and the local pitting safety of :func:`pitting_safety`
+    (ISO 10300-2 with the LTCA's peak pressure); issue 71 ("one design torque that holds").
+    """
+    from contact.study.verdicts import shown_below
+
+    ts = [float(t) for t in torques]
+    try:
+        safe = _safeties(_root_tree(case, ts))
+    except Exception as exc:  # reported, never fatal
+        raise_if_interrupted(exc)
+        log.info("development capacity check at %g N m failed: %s", ts[1], exc)
+        say(f"development: root stress at {plain_number(ts[1])} N m not computed ({exc})")
+        return False, f"not checked ({exc})"
+    if not safe:
+        return False, "not checked (no FE root stress and no ISO 10300 rating)"
+    fails = _failing(safe)
+    text = "; ".join(
+        f"{CRITERIA[k][1]} {shown_below(float(v[-1]), s_min)} ({m}) < {s_min:g}" if k in fails
+        else f"{CRITERIA[k][1]} {float(v[-1]):.2f} ({m}) >= {s_min:g}"
+        for k, (v, s_min, m) in safe.items())
+    return not fails, text
+
+
 def regained_capacity(case, setup: dict[str, Any], light_load: float, ceiling: float,
                       say: Callable[[str], None]
                       ) -> tuple[Any, list[float], float, float] | None:

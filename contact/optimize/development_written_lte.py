@@ -28,12 +28,16 @@ drive again at its upper end, kept where that development keeps the limit (the 1
 re-development is stopped after its drive steps where its check's own LTE record over
 ``ltca run``'s range exceeds the limit already (:class:`WindowMissed`,
 :func:`window_missed`): it could not be kept, so its coast flank, FE root checks and
-case are not made (issue 71, branch cpu90b).
+case are not made (issue 71, branch cpu90b). After a capacity cut the rule runs again at
+the cut torques (``development._lte_after_cut``) and, where it records such a window there,
+the drive is developed again at its upper end as before the cut, kept only where the
+re-developed bearing's own root-stress and local pitting capacity hold at that torque
+(``development._redeveloped_after_cut``, branch diag93).
 
 Public names
 ------------
 written_lte_capacity, lowered_torque, lte_window, redeveloped_in_window, window_name,
-window_missed, WindowMissed
+window_missed, WindowMissed, judged_where
 """
 
 from __future__ import annotations
@@ -60,7 +64,7 @@ from contact.study.lte_within import within_torque
 from geometry.core.errors import raise_if_interrupted
 from geometry.core.text import plain_number
 
-__all__ = ["WindowMissed", "given_torque_of", "lowered_torque", "lte_window",
+__all__ = ["WindowMissed", "given_torque_of", "judged_where", "lowered_torque", "lte_window",
            "redeveloped_in_window",
            "window_missed", "window_name", "written_lte_capacity"]
 
@@ -260,7 +264,9 @@ def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], ba
         ``basic`` its written prescriptions at the design torque as given,
         :func:`given_torque_of`), where its
         drive LTE p-p at the light and design torque and between them (its
-        ``lte_range``) keeps the limit; None where no window was recorded, the run fails
+        ``lte_range``; where no check judged its written design between the torques and
+        its two ends keep the limit, that range analysed here: ``range_lte`` on its
+        drive design) keeps the limit; None where no window was recorded, the run fails
         or its LTE does not keep the limit.
 
     Raises
@@ -291,8 +297,7 @@ def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], ba
         again = run(torque)
     except WindowMissed as missed:  # stopped after its drive steps: it would not be kept
         found = missed.record
-        where = ("over the range" if found.get("judged", True) else
-                 "at its torques, the range not judged,")
+        where = judged_where(found, clause=True)
         say(f"development: at {plain_number(torque)} N m its drive LTE p-p "
             f"{_curve((found['torques'], found['lte']))}, at most {found['peak']:.1f} "
             f"{where} after its drive steps (the check's reading): above {limit:g} urad, "
@@ -308,6 +313,12 @@ def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], ba
     ends = np.asarray(again.best.metrics["lte_peak_to_peak"], float)
     judged = again.lte_range
     peak = float(judged["peak"]) if judged is not None else math.nan
+    reading = "the check's reading"
+    if (not math.isfinite(peak) and np.all(np.isfinite(ends)) and np.all(ends <= limit)):
+        # its ends keep the limit but no check judged its written design between them
+        # (a later step changed it): judged here, one range analysis (branch diag93)
+        peak = _range_peak(again)
+        reading = "judged on its written drive design"
     if not (np.all(np.isfinite(ends)) and np.all(ends <= limit) and peak <= limit):
         say(f"development: at {plain_number(torque)} N m its drive LTE p-p "
             f"{' / '.join(f'{x:.1f}' for x in ends)} urad, at most {peak:.1f} over the "
@@ -325,11 +336,23 @@ def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], ba
               f"{plain_number(round(low, 1))} to {plain_number(round(high, 1))} N m only (its "
               f"light torque a share of the design torque); developed at "
               f"{plain_number(torque)} N m{raised}: {_curve((again.torque, ends))}, "
-              f"at most {peak:.1f} urad over ltca run's range (the check's reading)")
+              f"at most {peak:.1f} urad over ltca run's range ({reading})")
     say(f"  design torque {plain_number(design)} -> {plain_number(final)} N m: {source}")
     return dataclasses.replace(again, basic=given_torque_of(again.basic, basic),
                                torque_source=source, torque_lowered=True,
                                lte_torque=float(again.torque[1]))
+
+
+def _range_peak(again: Any) -> float:
+    """The largest LTE p-p [µrad] over ``ltca run``'s range of the drive design a
+    re-development wrote (``again.best``, its case the written one where the written drive
+    check re-read it) at its own torques ``again.torque`` [N·m]
+    (:func:`~contact.optimize.development_range_lte.range_lte`, the shell teeth built for
+    it as ``ltca run`` builds them); NaN where not analysed."""
+    from contact.optimize.development_range_lte import range_peak
+
+    found = range_lte(again.best, {"torques": [float(t) for t in again.torque]}, None)
+    return range_peak(found)[0]
 
 
 def given_torque_of(developed: Any, basic: Any) -> Any:
@@ -428,6 +451,38 @@ def window_missed(setup: dict[str, Any], best: DevelopmentEvaluation) -> dict[st
     if not math.isfinite(peak):
         return _unjudged_miss(setup, best, limit)
     return found if peak > limit else None
+
+
+def judged_where(record: dict[str, Any], clause: bool = False) -> str:
+    """Where the LTE p-p of a :func:`window_missed` record was read, as the lines that
+    stop or refuse a re-development in the LTE window say it.
+
+    Parameters
+    ----------
+    record : dict
+        A :func:`window_missed` record (its ``judged``: False where it is the LTE at the
+        development's own torques, no range judged; absent or True: over the range).
+    clause : bool, optional
+        Default False: the unjudged case as an aside in brackets (``develop``'s stop line,
+        ``"at its torques (the range not judged)"``); True: as a clause between commas
+        (:func:`redeveloped_in_window`'s line, ``"at its torques, the range not
+        judged,"``).
+
+    Returns
+    -------
+    str
+        ``"over the range"`` where the range was judged, else one of the two texts above.
+
+    Notes
+    -----
+    One place for the two lines' words (they were written in each, branch diag93).
+    Source: issue 71 ("LTE p-p ≤ 60 µrad at every torque"); the record is
+    :func:`window_missed`'s.
+    """
+    if record.get("judged", True):
+        return "over the range"
+    return ("at its torques, the range not judged," if clause
+            else "at its torques (the range not judged)")
 
 
 def _unjudged_miss(setup: dict[str, Any], best: DevelopmentEvaluation,
@@ -543,8 +598,11 @@ def lte_window(torques: Sequence[float], lte: Sequence[float], limit: float
 
 def _rated_as(setup: dict[str, Any]) -> str:
     """The first words of the design torque's source before a lowering ("the ISO 10300
-    capacity" of "the ISO 10300 capacity, the pinion torque at which …; …")."""
-    return setup["source"].split(",")[0].split(";")[0]
+    capacity" of "the ISO 10300 capacity, the pinion torque at which …; …"; "the local
+    pitting capacity of the developed bearing" of a capacity cut's "… bearing: its LTCA
+    peak flank pressure …", whose words after the colon the lowering's phrase names no
+    torque for: branch diag93)."""
+    return setup["source"].split(",")[0].split(";")[0].split(":")[0]
 
 
 def _curve(found: tuple[Sequence[float], Sequence[float]]) -> str:
