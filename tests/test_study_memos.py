@@ -2,9 +2,9 @@
 
 * The pinion's points of the ease-off's forward map (861 solutions of the equation of
   meshing on the extended pinion grid) and the real gear flank on the ease-off's grid do
-  not depend on the misalignment: they are memoised per process under the tooth models'
-  key (``Case.teeth_key``), and an ease-off computed with the memos equals, bit for bit,
-  one computed without them.
+  not depend on the misalignment: they are memoised per process under the key of their
+  flank alone (``flank_key``: a pinion-only change keeps the gear's nodes, issue 75), and
+  an ease-off computed with the memos equals, bit for bit, one computed without them.
 * The pipeline's ``/geometry`` group takes the gear flanks from that memo (one solve per
   analysis instead of two) and equals the geometry layer's own datasets.
 * A LocalCluster the study engine starts runs its workers without distributed's
