@@ -407,8 +407,9 @@ class Case:
 
     def teeth_key(self) -> TeethKey:
         """The key of the per-process memos of what the teeth alone decide (the tooth
-        models, the ease-off's forward-map points and gear nodes, the ease-off with its
-        misalignment as a key of its own): the case without its misalignment, deviations
+        models, the ease-off with its misalignment as a key of its own; the ease-off's
+        forward-map points and gear nodes are keyed by their flank alone,
+        :func:`contact.utca.conjugate_map.flank_key`): the case without its misalignment, deviations
         and operating point (torques, speed, oil: no tooth depends on them, and
         :func:`contact.run_analysis` writes the torques run into the case, so a torque
         series would otherwise miss every memo), compared by its full ``repr`` (every

@@ -2,9 +2,9 @@
 
 * The pinion's points of the ease-off's forward map (861 solutions of the equation of
   meshing on the extended pinion grid) and the real gear flank on the ease-off's grid do
-  not depend on the misalignment: they are memoised per process under the tooth models'
-  key (``Case.teeth_key``), and an ease-off computed with the memos equals, bit for bit,
-  one computed without them.
+  not depend on the misalignment: they are memoised per process under the key of their
+  flank alone (``flank_key``: a pinion-only change keeps the gear's nodes, issue 75), and
+  an ease-off computed with the memos equals, bit for bit, one computed without them.
 * The pipeline's ``/geometry`` group takes the gear flanks from that memo (one solve per
   analysis instead of two) and equals the geometry layer's own datasets.
 * A LocalCluster the study engine starts runs its workers without distributed's
@@ -243,3 +243,70 @@ def test_geometry_group_takes_the_flanks_of_the_memo_and_changes_nothing(case):
     assert memo_info()["flank_nodes"].misses == 4
     for key in fresh:
         xr.testing.assert_identical(again[key], fresh[key])
+
+
+def _with_setting(case, member: str, flank: str, **changed):
+    """``case`` with ``member``'s ``flank`` machine settings changed (``changed``)."""
+    mem = case.member(member)
+    tool = mem.flank(flank)
+    tool = dataclasses.replace(tool, machine=dataclasses.replace(tool.machine, **changed))
+    return dataclasses.replace(case, **{member: dataclasses.replace(mem, **{flank: tool})})
+
+
+def test_a_flank_is_memoised_by_itself_and_a_changed_setting_is_solved_afresh(case):
+    """The flank memos (issue 75) are keyed by the flank alone (``flank_key``: the member's
+    hand and blank, the flank's blade and machine settings, exactly): a development's
+    trial that changes the pinion keeps the gear's nodes, and a changed gear keeps the
+    pinion's forward-map points. Identities, bit for bit (NaN where NaN): what the memo
+    serves equals a fresh solve of the flank; an ease-off computed with the memos equals
+    one computed after clearing them; a changed setting of the flank itself is a new key,
+    solved afresh (and moves the flank, so the test sees a stale entry). The change is
+    small (the pinion's radial setting +0.01 mm, the gear's cradle angle +1e-4 rad): a
+    trial's step."""
+    from contact.utca.conjugate_map import flank_key, flank_nodes
+    from contact.utca.easeoff import _grid_options, working_flanks
+    from geometry.machine.flank import flank_surface
+
+    pf, gf = working_flanks(case, None)  # the drive flanks
+    grid = _grid_options(None)
+    pinion_moved = _with_setting(case, "pinion", pf, radial_setting=(
+        case.pinion.flank(pf).machine.radial_setting + 0.01))
+    gear_moved = _with_setting(case, "gear", gf, cradle_angle=(
+        case.gear.flank(gf).machine.cradle_angle + 1e-4))
+    assert flank_key(pinion_moved, "gear", gf) == flank_key(case, "gear", gf)
+    assert flank_key(pinion_moved, "pinion", pf) != flank_key(case, "pinion", pf)
+    assert flank_key(gear_moved, "gear", gf) != flank_key(case, "gear", gf)
+    # the other flank of the same member is a key of its own
+    assert flank_key(pinion_moved, "pinion", "convex") == flank_key(case, "pinion", "convex")
+
+    def same(a, b):
+        for name in ("position", "normal", "kappa1", "kappa2", "s", "theta", "q", "section",
+                     "reason"):
+            np.testing.assert_array_equal(getattr(a, name), getattr(b, name), err_msg=name)
+
+    clear_memos()
+    flank_nodes(case, "gear", gf, grid)
+    served = flank_nodes(pinion_moved, "gear", gf, grid)  # a pinion-only change
+    assert memo_info()["flank_nodes"][:2] == (1, 1)
+    same(served, flank_surface(pinion_moved, "gear", gf, **grid))
+    moved = flank_nodes(gear_moved, "gear", gf, grid)  # the gear's own setting changed
+    assert memo_info()["flank_nodes"][:2] == (1, 2)
+    same(moved, flank_surface(gear_moved, "gear", gf, **grid))
+    assert not np.array_equal(np.nan_to_num(moved.position), np.nan_to_num(served.position))
+
+    # the ease-offs: the gear nodes kept across a pinion change, the forward-map points
+    # across a gear change, each equal to a computation from empty memos
+    clear_memos()
+    ease_off(case)
+    eo_pinion = ease_off(pinion_moved)
+    eo_gear = ease_off(gear_moved)
+    info = memo_info()
+    assert info["flank_nodes"][:2] == (1, 2)  # the gear's: pinion_moved's a hit
+    assert info["forward_points"][:2] == (1, 2)  # the pinion's: gear_moved's a hit
+    for moved_case, eo in ((pinion_moved, eo_pinion), (gear_moved, eo_gear)):
+        clear_memos()
+        fresh = ease_off(moved_case)
+        for name in ("ease_off_angle", "roll_angle", "gap_curvature", "pinion_u", "pinion_v",
+                     "placement_error", "gear_position", "gear_normal"):
+            np.testing.assert_array_equal(getattr(eo, name), getattr(fresh, name),
+                                          err_msg=name)

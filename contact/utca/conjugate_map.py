@@ -37,7 +37,6 @@ from contact.utca.action_surface import (
     conjugate_points,
 )
 from contact.utca.spline_group import SplineGroup
-from geometry.case import TeethKey
 from geometry.core.caches import memoised
 from geometry.core.errors import InputError
 from geometry.core.kernels import kernels_module
@@ -305,11 +304,60 @@ def _forward_grid(case: Case):
     return up, vp, cp, uu, vv, z, rho
 
 
+class FlankKey:
+    """One member's flank as a memo key (:func:`flank_key`): equal and hashed by ``text``
+    (the ``repr`` of what a solve of that flank reads: the member's name, hand and blank,
+    the flank's tool — blade and machine settings; every float to the last bit, -0.0
+    apart from 0.0, as :meth:`~geometry.case.Case.teeth_key`); ``case`` is a case that
+    holds that flank, for the memo to compute from."""
+
+    __slots__ = ("case", "text")
+
+    def __init__(self, case: Case, text: str) -> None:
+        self.case, self.text = case, text
+
+    def __hash__(self) -> int:
+        return hash(self.text)
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, FlankKey) and other.text == self.text
+
+
+def flank_key(case: Case, member: str, flank: str) -> FlankKey:
+    """The key of the per-process memos of one flank alone (:func:`flank_nodes`, the
+    forward map's pinion points): what :func:`geometry.machine.flank.flank_surface` and
+    :func:`_pinion_points` read of the case — the member's name, hand and blank and the
+    flank's tool (blade, machine settings) — and nothing of the other member, the other
+    flank or the pair. So a development's trial that changes the pinion alone keeps the
+    gear's nodes, and a gear changed alone keeps the pinion's forward-map points (issue
+    75: the gear flank of every pinion trial was solved again, 278 of the 286 solves of
+    the spiral bevel 17x23's synthesis repeats). Exact (``repr``), never a tolerance.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    member : str — ``"pinion"`` or ``"gear"``
+    flank : str — ``"concave"`` or ``"convex"``
+
+    Returns
+    -------
+    FlankKey
+
+    Raises
+    ------
+    InputError
+        For a bad member or flank name.
+    """
+    mem = case.member(member)
+    tool = mem.flank(flank)
+    return FlankKey(case, repr((member, flank, mem.hand, mem.blank, tool)))
+
+
 @memoised(maxsize=_MEMO_SIZE)
-def _memo_forward_points(teeth: TeethKey, flank: str) -> tuple[np.ndarray, ...]:
-    """The real pinion on the forward map's grid (:func:`_pinion_points`) of the case of
-    ``teeth`` (:meth:`~geometry.case.Case.teeth_key`; read-only arrays)."""
-    case = teeth.case
+def _memo_forward_points(key: FlankKey, flank: str) -> tuple[np.ndarray, ...]:
+    """The real pinion on the forward map's grid (:func:`_pinion_points`) of the pinion
+    flank of ``key`` (:func:`flank_key`; read-only arrays)."""
+    case = key.case
     *_, z, rho = _forward_grid(case)
     out = _pinion_points(case, flank, z, rho)
     for a in out:
@@ -318,11 +366,11 @@ def _memo_forward_points(teeth: TeethKey, flank: str) -> tuple[np.ndarray, ...]:
 
 
 @memoised(maxsize=4 * _MEMO_SIZE)  # four flanks per case
-def _memo_flank_nodes(teeth: TeethKey, member: str, flank: str, grid: tuple) -> FlankSurface:
+def _memo_flank_nodes(key: FlankKey, member: str, flank: str, grid: tuple) -> FlankSurface:
     """The real flank of ``member`` on a projection-plane grid (``grid``: its options as
-    sorted (key, value) pairs) of the case of ``teeth``
-    (:meth:`~geometry.case.Case.teeth_key`; read-only arrays)."""
-    fs = flank_surface(teeth.case, member, flank, **dict(grid))
+    sorted (key, value) pairs) of the flank of ``key`` (:func:`flank_key`; read-only
+    arrays)."""
+    fs = flank_surface(key.case, member, flank, **dict(grid))
     for a in (*fs, *fs.grid):
         if isinstance(a, np.ndarray):
             a.flags.writeable = False
@@ -330,7 +378,7 @@ def _memo_flank_nodes(teeth: TeethKey, member: str, flank: str, grid: tuple) -> 
 
 
 def flank_nodes(case: Case, member: str, flank: str, grid: dict) -> FlankSurface:
-    """A real flank on a projection-plane grid, memoised per process.
+    """A real flank on a projection-plane grid, memoised per process by the flank alone.
 
     Parameters
     ----------
@@ -349,8 +397,8 @@ def flank_nodes(case: Case, member: str, flank: str, grid: dict) -> FlankSurface
         :func:`geometry.machine.flank.flank_surface` of the flank (arrays read-only): a
         flank does not depend on the misalignment, so the analyses of a process that share
         the teeth (a misalignment or torque series, a study with ``/geometry``) solve its
-        861 nodes once (keyed as the tooth models are, by
-        :meth:`~geometry.case.Case.teeth_key`).
+        861 nodes once, keyed by the flank alone (:func:`flank_key`: a case whose other
+        member or other flank differs shares it).
 
     Raises
     ------
@@ -365,7 +413,7 @@ def flank_nodes(case: Case, member: str, flank: str, grid: dict) -> FlankSurface
     """
     key = tuple(sorted((k, tuple(v) if isinstance(v, list | tuple) else v)
                        for k, v in grid.items()))
-    return _memo_flank_nodes(case.teeth_key(), member, flank, key)
+    return _memo_flank_nodes(flank_key(case, member, flank), member, flank, key)
 
 
 def gear_nodes(case: Case, flank: str, grid: dict) -> FlankSurface:
@@ -414,14 +462,15 @@ def _forward_map(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray) -> _
 
     The pinion points on the grid (861 solutions of the equation of meshing) do not depend
     on the misalignment, only their images do: they are memoised per process
-    (:func:`_memo_forward_points`, keyed as the tooth models are, by the case without its
-    misalignment and deviations), so the points of a misalignment study are solved once.
+    (:func:`_memo_forward_points`, keyed by the pinion flank alone, :func:`flank_key`),
+    so the points of a misalignment study, or of gears tried against one pinion, are solved
+    once.
     """
     up, vp, cp, uu, vv, z, rho = _forward_grid(case)
     # inside a development's trial (seeds continued from earlier trials', WarmSeeds) the
     # points are solved and not memoised: an analysis outside one is computed cold
     points = (_pinion_points(case, pf, z, rho) if warm_seeds_active()
-              else _memo_forward_points(case.teeth_key(), pf))
+              else _memo_forward_points(flank_key(case, "pinion", pf), pf))
     fwd, branch = _mates(case, pf, kin, cp, uu, vv, reference=ref, points=points)
     ok = fwd.good
     if ok.sum() < 16:
