@@ -368,10 +368,10 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
         FE root check or case for a result that would not be kept.
     raise_to : float, optional
         [N·m] Default NaN (a design torque the basic file gives stands). The torque the
-        drive developed again in its LTE window (:func:`~contact.optimize.
-        development_written_lte.redeveloped_in_window`) was rated at before the window cut
-        it: the design torque raised back towards it on the bearing developed in the
-        window, as after a capacity cut (:func:`_window_raised`).
+        drive developed again in its LTE window
+        (:func:`~contact.optimize.development_written_lte.redeveloped_in_window`) was
+        rated at before the window cut it: the design torque raised back towards it on the
+        bearing developed in the window, as after a capacity cut (:func:`_window_raised`).
 
     Returns
     -------
