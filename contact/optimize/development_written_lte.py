@@ -276,25 +276,32 @@ def _below_fail_level(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     limit = verdict_lte_limit()
     fail = LTE_FAIL_FACTOR * limit
     design = float(setup["torques"][1])
-    ts = sorted(seen)
-    new = lowered_torque(ts, [seen[t] for t in ts], fail, design)
-    if not math.isfinite(new):
-        return None
-    torques = case_torques(targets.light_load, new)
-    try:
-        ms, grid = evaluation.analyse_design(best.case, torques, options=CHECK_LTCA,
-                                             teeth=teeth, pinion_key=bearing_key(best.values))
-    except Exception as exc:  # a failed analysis keeps the design as it is (logged)
-        raise_if_interrupted(exc)
-        log.info("development: the written design at %.4g N m not analysed: %s",
-                 torques[1], exc)
-        return None
-    lowered = scored(best, ms, grid, targets, setup["centre_v"])
-    there = range_lte(lowered, {**setup, "torques": list(torques)}, teeth)
-    if there is None:
-        return None
-    seen.update(zip(there[0], there[1], strict=True))
-    if max(there[1]) > fail:
+    key = bearing_key(best.values)
+    lowered = there = None
+    for _ in range(_TRIES):
+        ts = sorted(seen)
+        new = lowered_torque(ts, [seen[t] for t in ts], fail, design)
+        if not math.isfinite(new):
+            return None
+        torques = case_torques(targets.light_load, new)
+        try:
+            ms, grid = evaluation.analyse_design(best.case, torques, options=CHECK_LTCA,
+                                                 teeth=teeth, pinion_key=key)
+        except Exception as exc:  # a failed analysis keeps the design as it is (logged)
+            raise_if_interrupted(exc)
+            log.info("development: the written design at %.4g N m not analysed: %s",
+                     torques[1], exc)
+            return None
+        lowered = scored(best, ms, grid, targets, setup["centre_v"])
+        there = range_lte(lowered, {**setup, "torques": list(torques)}, teeth)
+        if there is None:
+            return None
+        seen.update(zip(there[0], there[1], strict=True))
+        if max(there[1]) <= fail:
+            break
+        if there[1][0] > fail:  # the lowered light torque above the FAIL level already
+            return None
+    else:
         return None
     source = (f"the torque up to which the written bearing keeps the drive LTE within "
               f"ltca run's FAIL level {fail:g} urad ({LTE_FAIL_FACTOR:g} x {limit:g}) at "
