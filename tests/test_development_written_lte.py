@@ -251,3 +251,59 @@ def test_the_window_rule_runs_again_after_a_capacity_cut(monkeypatch):
     assert dev._lte_after_cut(None, "design", None, setup, None, "", 2.51,
                               said.append) == ("design", "", 2.51)
     assert not calls
+
+
+#: the FM spiral bevel miter 18x18 of benchmarks/data/unseen_designs (round 33) as `ltca run`
+#: judged its written case at its ISO capacity: 60.1 / 97.7 / 121.7 / 112.7 µrad at 97.8 /
+#: 282.5 / 467.3 / 652 N m, a light-load value above the limit below it
+_MITER = ((10.0, 75.0), (97.8, 60.1), (282.5, 97.7), (467.3, 121.7), (652.0, 112.7))
+
+
+def test_an_lte_above_the_fail_level_with_no_torque_keeping_60_lowers_to_the_fail_level(
+        monkeypatch):
+    """The miter: its light-load LTE (60.1 µrad) above 60 already, so no lower design torque
+    keeps 60 µrad and no window exists; between the torques 121.7 µrad, above ltca run's FAIL
+    level 2 × 60. The design torque is lowered to where the written bearing keeps 120 µrad:
+    the law crosses it at 282.5 + 22.3/24 × 184.8 = 454.2 N m (linear; the bisected range
+    only adds points of the same law, so the crossing lies in (282.5, 454.2]); its own range
+    keeps 120 at every torque. Before the fix the design was kept at 652 N m, where
+    `ltca run` FAILs."""
+    targets, setup, best, _seen = _start(monkeypatch, _MITER, torques=(97.8, 652.0))
+    lines: list[str] = []
+    got = written_lte_capacity(best, targets, setup, None, lines.append)
+    assert setup.get("lowered") is True
+    t1 = setup["torques"][1]
+    assert 282.5 < t1 <= 454.2 + 0.1
+    assert setup["torques"][0] == pytest.approx(targets.light_load * t1, abs=0.1)
+    assert np.all(got.metrics["lte_peak_to_peak"] <= 120.0)
+    assert got.values == best.values  # the bearing as written
+    assert "652 -> " in lines[-1] and "FAIL level 120 urad" in lines[-1]
+    assert "no lower design torque keeps 60 urad" in setup["source"]
+
+
+def test_an_lte_below_the_fail_level_with_no_torque_keeping_60_keeps_the_design(monkeypatch):
+    """The same law scaled to 0.9 (at most 109.5 µrad, below 120): the verdict's attention,
+    not its FAIL — the design torque kept as before, the line says no torque keeps 60."""
+    law = tuple((t, 0.9 * y if t > 97.8 else y) for t, y in _MITER)
+    targets, setup, best, _seen = _start(monkeypatch, law, torques=(97.8, 652.0))
+    lines: list[str] = []
+    assert written_lte_capacity(best, targets, setup, None, lines.append) is best
+    assert "lowered" not in setup and "no design torque below 652" in lines[-1]
+
+
+def test_the_fail_level_cut_tries_again_where_the_lte_is_no_straight_line(monkeypatch):
+    """The miter's law as `ltca run --torque 67.7 451` measured it (116.2 µrad at 323.2 N m,
+    122.2 at 451): the first crossing, interpolated over the design torque's range, lands
+    at about 454 N m, where the law is still above 120 µrad; the second, with that range's
+    torques added and aimed at 0.95 × 120 = 114 µrad, between 282.5 and 323.2 N m (the
+    law's own bracket of 114: linear between its points), where it keeps 120 at every
+    torque: kept there."""
+    law = ((10.0, 75.0), (97.8, 60.1), (282.5, 97.7), (323.2, 116.2), (404.0, 119.0),
+           (451.0, 122.2), (467.3, 121.7), (652.0, 112.7))
+    targets, setup, best, seen = _start(monkeypatch, law, torques=(97.8, 652.0))
+    lines: list[str] = []
+    got = written_lte_capacity(best, targets, setup, None, lines.append)
+    assert setup.get("lowered") is True
+    assert 282.5 < setup["torques"][1] <= 323.2
+    assert np.all(got.metrics["lte_peak_to_peak"] <= 120.0)
+    assert len(seen) >= 3  # the design torque's range, the first lowered try, the second

@@ -61,7 +61,9 @@ def register(sub) -> None:
     options.misalignment_options(p, default="the [optimize] table's misalignments, else the "
                                  "case's; any given: this one assembly, the others 0")
     p.add_argument("--max-edge-share", type=float, nargs="+", default=None, metavar="SHARE",
-                   help="largest edge load share per torque (one value or one per torque)")
+                   help="largest edge load share per torque, a fraction of the torque in "
+                        "[0, 1] (0.02 = 2 %%, the share the tables print in %%; one value or "
+                        "one per torque)")
     p.add_argument("--max-flank-pressure", type=float, nargs="+", default=None,
                    metavar="MPA", help="largest flank peak pressure [MPa] per torque")
     p.add_argument("--lte-pp-range", type=float, nargs=2, default=None,
