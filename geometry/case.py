@@ -498,8 +498,10 @@ _NOT_TEETH_TABLES = frozenset({"rating", "root_stress"})
 
 class TeethKey:
     """A case's teeth as a hashable memo key (:meth:`Case.teeth_key`): equal and hashed by
-    ``text`` (the case's ``repr`` without misalignment, deviations and operating point);
-    ``case`` is that case, for the memo to compute from."""
+    ``text`` (the case's ``repr`` without misalignment, deviations and operating point;
+    for one flank alone, the ``repr`` of what its solve reads:
+    :func:`contact.utca.conjugate_map.flank_key`); ``case`` is that case, for the memo to
+    compute from."""
 
     __slots__ = ("case", "text")
 

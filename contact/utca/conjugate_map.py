@@ -37,6 +37,7 @@ from contact.utca.action_surface import (
     conjugate_points,
 )
 from contact.utca.spline_group import SplineGroup
+from geometry.case import TeethKey
 from geometry.core.caches import memoised
 from geometry.core.errors import InputError
 from geometry.core.kernels import kernels_module
@@ -304,26 +305,7 @@ def _forward_grid(case: Case):
     return up, vp, cp, uu, vv, z, rho
 
 
-class FlankKey:
-    """One member's flank as a memo key (:func:`flank_key`): equal and hashed by ``text``
-    (the ``repr`` of what a solve of that flank reads: the member's name, hand and blank,
-    the flank's tool — blade and machine settings; every float to the last bit, -0.0
-    apart from 0.0, as :meth:`~geometry.case.Case.teeth_key`); ``case`` is a case that
-    holds that flank, for the memo to compute from."""
-
-    __slots__ = ("case", "text")
-
-    def __init__(self, case: Case, text: str) -> None:
-        self.case, self.text = case, text
-
-    def __hash__(self) -> int:
-        return hash(self.text)
-
-    def __eq__(self, other: object) -> bool:
-        return isinstance(other, FlankKey) and other.text == self.text
-
-
-def flank_key(case: Case, member: str, flank: str) -> FlankKey:
+def flank_key(case: Case, member: str, flank: str) -> TeethKey:
     """The key of the per-process memos of one flank alone (:func:`flank_nodes`, the
     forward map's pinion points): what :func:`geometry.machine.flank.flank_surface` and
     :func:`_pinion_points` read of the case — the member's name, hand and blank and the
@@ -341,7 +323,10 @@ def flank_key(case: Case, member: str, flank: str) -> FlankKey:
 
     Returns
     -------
-    FlankKey
+    geometry.case.TeethKey
+        Equal and hashed by the ``repr`` above (every float to the last bit, -0.0 apart
+        from 0.0, as :meth:`~geometry.case.Case.teeth_key`), carrying ``case`` for the
+        memo to compute from.
 
     Raises
     ------
@@ -350,11 +335,11 @@ def flank_key(case: Case, member: str, flank: str) -> FlankKey:
     """
     mem = case.member(member)
     tool = mem.flank(flank)
-    return FlankKey(case, repr((member, flank, mem.hand, mem.blank, tool)))
+    return TeethKey(case, repr((member, flank, mem.hand, mem.blank, tool)))
 
 
 @memoised(maxsize=_MEMO_SIZE)
-def _memo_forward_points(key: FlankKey, flank: str) -> tuple[np.ndarray, ...]:
+def _memo_forward_points(key: TeethKey, flank: str) -> tuple[np.ndarray, ...]:
     """The real pinion on the forward map's grid (:func:`_pinion_points`) of the pinion
     flank of ``key`` (:func:`flank_key`; read-only arrays)."""
     case = key.case
@@ -366,7 +351,7 @@ def _memo_forward_points(key: FlankKey, flank: str) -> tuple[np.ndarray, ...]:
 
 
 @memoised(maxsize=4 * _MEMO_SIZE)  # four flanks per case
-def _memo_flank_nodes(key: FlankKey, member: str, flank: str, grid: tuple) -> FlankSurface:
+def _memo_flank_nodes(key: TeethKey, member: str, flank: str, grid: tuple) -> FlankSurface:
     """The real flank of ``member`` on a projection-plane grid (``grid``: its options as
     sorted (key, value) pairs) of the flank of ``key`` (:func:`flank_key`; read-only
     arrays)."""
