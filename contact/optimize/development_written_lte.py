@@ -183,27 +183,16 @@ def written_lte_capacity(best: DevelopmentEvaluation, targets: DevelopmentTarget
     design = float(setup["torques"][1])
     seen = dict(zip(found[0], found[1], strict=True))
     before = _curve(found)
-    key = bearing_key(best.values)
     tried: list[str] = []
     for _ in range(_TRIES):
         ts = sorted(seen)
         new = lowered_torque(ts, [seen[t] for t in ts], limit, design)
         if not math.isfinite(new):
             break
-        torques = case_torques(targets.light_load, new)
-        try:
-            ms, grid = evaluation.analyse_design(best.case, torques, options=CHECK_LTCA,
-                                                 teeth=teeth, pinion_key=key)
-        except Exception as exc:  # a failed analysis keeps the design as it is (logged)
-            raise_if_interrupted(exc)
-            log.info("development: the written design at %.4g N m not analysed: %s",
-                     torques[1], exc)
+        at = _written_at(best, targets, setup, teeth, new)
+        if at is None:  # a failed analysis keeps the design as it is (logged)
             return best
-        lowered = scored(best, ms, grid, targets, setup["centre_v"])
-        trial = {**setup, "torques": list(torques)}
-        there = range_lte(lowered, trial, teeth)
-        if there is None:
-            return best
+        lowered, torques, there = at
         if max(there[1]) <= limit:
             source = (f"the torque up to which the written bearing keeps the drive LTE "
                       f"within {limit:g} urad at every torque: at "
@@ -238,6 +227,30 @@ def written_lte_capacity(best: DevelopmentEvaluation, targets: DevelopmentTarget
     if math.isfinite(low) and math.isfinite(high) and high < design:
         setup["lte_window"] = (low, high, before)
     return best
+
+
+def _written_at(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                setup: dict[str, Any], teeth: KeptTeeth | None, torque: float
+                ) -> tuple[DevelopmentEvaluation, tuple[float, float],
+                           tuple[tuple[float, ...], tuple[float, ...]]] | None:
+    """The written drive design ``best`` at the design torque ``torque`` [N·m] (its light
+    torque the targets' share of it): analysed at ``ltca run``'s sampling, scored, and
+    its LTE p-p over ``ltca run``'s range
+    (:func:`~contact.optimize.development_range_lte.range_lte`). Returns (the design
+    scored there, its (light, design) torques [N·m], the range's (torques [N·m], LTE p-p
+    [µrad])); None where an analysis fails (logged)."""
+    torques = case_torques(targets.light_load, torque)
+    try:
+        ms, grid = evaluation.analyse_design(best.case, torques, options=CHECK_LTCA,
+                                             teeth=teeth, pinion_key=bearing_key(best.values))
+    except Exception as exc:
+        raise_if_interrupted(exc)
+        log.info("development: the written design at %.4g N m not analysed: %s",
+                 torques[1], exc)
+        return None
+    lowered = scored(best, ms, grid, targets, setup["centre_v"])
+    there = range_lte(lowered, {**setup, "torques": list(torques)}, teeth)
+    return None if there is None else (lowered, torques, there)
 
 
 def _below_fail_level(best: DevelopmentEvaluation, targets: DevelopmentTargets,
@@ -280,7 +293,6 @@ def _below_fail_level(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     limit = verdict_lte_limit()
     fail = LTE_FAIL_FACTOR * limit
     design = float(setup["torques"][1])
-    key = bearing_key(best.values)
     lowered = there = None
     tried: list[str] = []
     for k in range(_TRIES):
@@ -292,19 +304,10 @@ def _below_fail_level(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         new = lowered_torque(ts, [seen[t] for t in ts], aim, design)
         if not math.isfinite(new):
             return None
-        torques = case_torques(targets.light_load, new)
-        try:
-            ms, grid = evaluation.analyse_design(best.case, torques, options=CHECK_LTCA,
-                                                 teeth=teeth, pinion_key=key)
-        except Exception as exc:  # a failed analysis keeps the design as it is (logged)
-            raise_if_interrupted(exc)
-            log.info("development: the written design at %.4g N m not analysed: %s",
-                     torques[1], exc)
+        at = _written_at(best, targets, setup, teeth, new)
+        if at is None:
             return None
-        lowered = scored(best, ms, grid, targets, setup["centre_v"])
-        there = range_lte(lowered, {**setup, "torques": list(torques)}, teeth)
-        if there is None:
-            return None
+        lowered, torques, there = at
         seen.update(zip(there[0], there[1], strict=True))
         if max(there[1]) <= fail:
             break
