@@ -16,8 +16,10 @@ from __future__ import annotations
 def unloaded_contact_failure(case, flank: str = "drive") -> str | None:
     """Why the unloaded contact of one flank of ``case`` cannot be computed, or None where
     it can: the ease-off (:func:`contact.utca.easeoff.ease_off`, the case's own
-    misalignment) and its splines (:func:`contact.utca.fields.fields_of`), the first steps
-    of ``ltca run``'s and ``ltca utca``'s analysis, which raise the same errors.
+    misalignment), its splines (:func:`contact.utca.fields.fields_of`) and the unloaded
+    cycle (:func:`contact.utca.datasets.unloaded_tca` as ``ltca run``'s chain calls it:
+    a roll where no tooth pair is in contact), the first steps of ``ltca run``'s and
+    ``ltca utca``'s analysis, which raise the same errors.
 
     Parameters
     ----------
@@ -46,6 +48,7 @@ def unloaded_contact_failure(case, flank: str = "drive") -> str | None:
     0.20 s (the 12×12 miter's refusal), 0.24 s (the default 11×41 without the
     development), 0.18 s (after its development, of 40.7 s).
     """
+    from contact.utca.datasets import unloaded_tca
     from contact.utca.easeoff import ease_off
     from contact.utca.fields import fields_of
     from geometry.core.errors import InputError, ModelUnavailableError
@@ -53,7 +56,14 @@ def unloaded_contact_failure(case, flank: str = "drive") -> str | None:
     if flank not in ("drive", "coast"):
         raise InputError(f"flank: must be 'drive' or 'coast', got {flank!r}")
     try:
-        fields_of(ease_off(case, flank=flank))
+        eo = ease_off(case, flank=flank)
+        fields_of(eo)
+        # the unloaded cycle as `ltca run`'s chain computes it (its defaults, memoised):
+        # the 15x15 hypoid's --no-development case had an ease-off and its splines, and
+        # `ltca run` then stopped at "no tooth pair in contact at roll 0.414909 rad"
+        # (issue 71, branch ratio95: its pinion's drive flank generated over 67 % of
+        # the blank)
+        unloaded_tca(case, flank=flank, easeoff=eo)
     except (ValueError, ModelUnavailableError) as exc:  # InputError is a ValueError
         return str(exc)
     return None
@@ -101,6 +111,7 @@ def refusal_text(case, design, why: str) -> str:
         ratios = low_ratio_text(design, FACE_CONTACT_RATIO_NOTE, PROFILE_CONTACT_RATIO_NOTE)
     except (InputError, ValueError, ZeroDivisionError):
         ratios = None
+    limited = _generation_cause(case)
     changes = [ratios] if ratios else []
     rc0 = getattr(design, "rc0", None)
     if rc0 is not None:
@@ -108,8 +119,26 @@ def refusal_text(case, design, why: str) -> str:
                        "lengthwise curvature and the bearing's path follow it)")
     return (f"the unloaded contact of the synthesised case's drive flank "
             f"(pinion {flank}) cannot be computed, so `ltca run` and `ltca utca` would "
-            f"refuse the case: {why}; no case written. Changes to try: "
+            f"refuse the case: {why}; no case written. "
+            + ("" if limited is None else f"First: {limited}. ")
+            + "Changes to try: "
             + "; ".join(changes) + " (docs/own_gear_set.md, round 17)")
+
+
+def _generation_cause(case) -> str | None:
+    """The generation limit of the case's pinion drive flank in words
+    (:func:`contact.optimize.development_conjugacy.generation_limit_text`), said before the
+    changes to try; None where the flank is generated over its working depth or cannot be
+    generated at all. Found on the 15x15 hypoid of issue 71 (branch ratio95): its
+    ``--no-development`` case lost contact at a roll, its pinion's drive flank generated
+    over 67 % of the blank."""
+    from contact.optimize.development_conjugacy import generation, generation_limit_text
+    from geometry.core.errors import InputError, ModelUnavailableError
+
+    try:
+        return generation_limit_text(generation(case))
+    except (InputError, ModelUnavailableError):
+        return None
 
 
 def coast_note(case) -> str | None:
