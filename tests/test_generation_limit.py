@@ -114,8 +114,11 @@ def test_a_case_that_loses_contact_is_refused_as_ltca_run_refuses_it():
 
 
 def test_synthesize_no_development_refuses_the_15x15(tmp_path, capsys):
-    """The whole command on the user's file (~4 s of CPU): rc 2, no case written, the
-    analysis' reason, the generation limit said before the changes to try."""
+    """The whole command on the user's file (~6 s of CPU): rc 2, no case written, the
+    analysis' reason, the generation limit said before the changes to try, with its lever
+    checked by syntheses: 30x30 (measured on the branch: `ltca synthesize
+    --no-development` of that file writes a case whose `ltca run` computes the unloaded
+    cycle and the root stress; 20x20 and 25x25 far from conjugate)."""
     out = tmp_path / "case.toml"
     rc = main(["synthesize", str(BASIC), "--no-development", "--no-progress",
                "-o", str(out)])
@@ -124,3 +127,5 @@ def test_synthesize_no_development_refuses_the_15x15(tmp_path, capsys):
     assert "no tooth pair in contact at roll" in err and "no case written" in err
     first = err.index("First: the pinion's drive flank (concave) is not generated")
     assert first < err.index("Changes to try: face contact ratio eps_vb 0.29")
+    assert "z1 30 and z2 30 (now 15 and 15) generate 100 % of it" in err
+    assert "not 20x20: far from conjugate" in err

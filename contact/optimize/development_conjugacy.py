@@ -41,13 +41,16 @@ conjugate: the criterion"):
 Public names
 ------------
 VALID_NODE_FRACTION_MIN, TRIAL_LTE_FACTOR, GENERATED_SHARE_MIN, Conjugacy, conjugacy,
-Generation, generation, trial_lte_ratio, non_conjugate_text, generation_limit_text,
-misjudged_trial_text
+Generation, generation, TeethCheck, teeth_for_generation, trial_lte_ratio,
+non_conjugate_text, generation_limit_text, misjudged_trial_text
 """
 
 from __future__ import annotations
 
+import dataclasses
+import logging
 import math
+import time
 from typing import Any, NamedTuple
 
 import numpy as np
@@ -55,8 +58,9 @@ import numpy as np
 from geometry.case import Case
 
 __all__ = ["GENERATED_SHARE_MIN", "TRIAL_LTE_FACTOR", "VALID_NODE_FRACTION_MIN", "Conjugacy",
-           "Generation", "conjugacy", "conjugacy_of", "generation", "generation_limit_text",
-           "misjudged_trial_text", "non_conjugate_text", "trial_lte_ratio"]
+           "Generation", "TeethCheck", "checked_teeth_text", "conjugacy", "conjugacy_of",
+           "generation", "generation_limit_text", "misjudged_trial_text", "non_conjugate_text",
+           "teeth_for_generation", "teeth_text", "trial_lte_ratio"]
 
 #: least share [1] of valid ease-off nodes of flanks that are near conjugate (module
 #: docstring: 0.65-0.84 on every working case measured, 0.19 on the non-conjugate one)
@@ -66,6 +70,12 @@ VALID_NODE_FRACTION_MIN = 0.5
 #: taken as generated over its working depth (module docstring: 0.99-1.00 on every bundled
 #: case, 0.83 on the analysed 14x35 at Sigma 70; 0.64 / 0.67 on the 15x15 hypoid of issue 71)
 GENERATED_SHARE_MIN = 0.75
+
+#: pinion tooth counts tried above the design's by :func:`teeth_for_generation` (steps of
+#: 5, at most 6 syntheses of 2-5 s each)
+TEETH_STEP, TEETH_TRIALS = 5, 6
+
+log = logging.getLogger(__name__)
 
 #: largest ratio [1] of the checked LTE p-p to the coarse trial's of one design that the
 #: development's search is taken to have judged right (module docstring: 99 % within 1.39)
@@ -218,12 +228,137 @@ def generation(case: Case, flank: str = "drive") -> Generation:
                       mean_u(4), mean_u(1))
 
 
+class TeethCheck(NamedTuple):
+    """The least tooth count :func:`teeth_for_generation` found with a complete pinion."""
+
+    z1: int  # [1] pinion teeth
+    z2: int  # [1] gear teeth (the ratio kept)
+    generated: float  # [1] share of the pinion's drive-flank blank grid generated
+    valid: float  # [1] share of valid ease-off nodes
+    tried: tuple[str, ...]  # the counts tried before it, each with why it was not kept
+    seconds: float  # [s] CPU of the search
+
+
+def teeth_for_generation(basic, current: int | None = None) -> TeethCheck | None:
+    """The least pinion tooth count (same size, ratio kept) whose synthesis generates the
+    pinion's drive flank over its working depth, meets near conjugate and can be analysed.
+
+    Parameters
+    ----------
+    basic : geometry.synthesis.basic_design.BasicDesign
+        The basic file's data (its own prescriptions: the ``--no-development`` synthesis).
+    current : int, optional
+        The pinion tooth count to start above (default ``basic.design.z1``).
+
+    Returns
+    -------
+    TeethCheck or None
+        The first of z1 + 5, z1 + 10, … (at most :data:`TEETH_TRIALS`; z2 = round(z1 u))
+        whose synthesis has at least :data:`GENERATED_SHARE_MIN` of its pinion drive flank
+        generated, at least :data:`VALID_NODE_FRACTION_MIN` valid ease-off nodes and an
+        unloaded cycle ``ltca run`` computes; None where none of them has.
+
+    Notes
+    -----
+    One :func:`geometry.synthesis.case_synthesis.synthesize` (``tip_planes=False``) per
+    count, 2-5 s of CPU each on the 2-core machine; the checks are :func:`generation`,
+    :func:`conjugacy` and :func:`contact.optimize.written_contact.
+    unloaded_contact_failure`. Measured on the 15x15 hypoid of issue 71 (docs/synthesis.md,
+    'A pinion not generated over its working depth'): 20 and 25 teeth generated but far
+    from conjugate, 30 or 35 kept.
+    """
+    from contact.optimize.written_contact import unloaded_contact_failure
+    from geometry.core.errors import LTCAError
+    from geometry.synthesis.case_synthesis import synthesize
+
+    t0 = time.process_time()
+    design = basic.design
+    z1 = int(design.z1 if current is None else current)
+    ratio = design.z2 / design.z1
+    tried: list[str] = []
+    for k in range(1, TEETH_TRIALS + 1):
+        n1 = z1 + k * TEETH_STEP
+        n2 = max(n1, round(n1 * ratio))
+        if n2 > 500:
+            break
+        try:
+            changed = dataclasses.replace(basic, design=dataclasses.replace(design, z1=n1,
+                                                                            z2=n2))
+            case = synthesize(changed, tip_planes=False)[0]
+            gen = generation(case)
+            eo = conjugacy(case)
+            lost = (unloaded_contact_failure(case, "drive")
+                    if gen.complete and eo.near else None)
+        except (LTCAError, ValueError, ArithmeticError) as exc:
+            log.info("%dx%d not checked: %s", n1, n2, exc)
+            tried.append(f"{n1}x{n2}: no synthesis")
+            continue
+        if not gen.complete:
+            tried.append(f"{n1}x{n2}: pinion generated {100 * gen.fraction:.0f} %")
+        elif not eo.near:
+            tried.append(f"{n1}x{n2}: far from conjugate, {100 * eo.fraction:.0f} % valid "
+                         "ease-off nodes")
+        elif lost is not None:
+            tried.append(f"{n1}x{n2}: unloaded contact not computed")
+        else:
+            return TeethCheck(n1, n2, gen.fraction, eo.fraction, tuple(tried),
+                              time.process_time() - t0)
+    return None
+
+
+def teeth_text(found: TeethCheck | None, z1: int, z2: int, seconds: float = math.nan) -> str:
+    """The checked tooth count in words, for :func:`generation_limit_text`'s lever.
+
+    Parameters
+    ----------
+    found : TeethCheck or None
+        :func:`teeth_for_generation`'s answer.
+    z1, z2 : int
+        The design's tooth counts [1].
+    seconds : float
+        [s] CPU of a search that found none (NaN: not measured).
+
+    Returns
+    -------
+    str
+        "; checked by a synthesis …: z1 … and z2 …" or "; no count from … checked …".
+    """
+    if found is None:
+        return (f"; no count from {z1 + TEETH_STEP} to {z1 + TEETH_TRIALS * TEETH_STEP} "
+                "pinion teeth checked by a synthesis here generates it and meets near "
+                f"conjugate ({seconds:.0f} s of CPU)")
+    before = f"; not {', '.join(found.tried)}" if found.tried else ""
+    return (f"; checked by a synthesis at the file's prescriptions: z1 {found.z1} and z2 "
+            f"{found.z2} (now {z1} and {z2}) generate {100 * found.generated:.0f} % of it, "
+            f"{100 * found.valid:.0f} % valid ease-off nodes, an unloaded cycle `ltca run` "
+            f"computes{before} ({found.seconds:.0f} s of CPU)")
+
+
+def checked_teeth_text(basic) -> str:
+    """:func:`teeth_for_generation` of ``basic`` in words (:func:`teeth_text`).
+
+    Parameters
+    ----------
+    basic : geometry.synthesis.basic_design.BasicDesign
+
+    Returns
+    -------
+    str
+        The lever's check, for :func:`generation_limit_text`'s ``teeth``.
+    """
+    t0 = time.process_time()
+    found = teeth_for_generation(basic)
+    return teeth_text(found, int(basic.design.z1), int(basic.design.z2),
+                      time.process_time() - t0)
+
+
 def _end(u: float) -> str:
     """"toe", "heel" or "mid-face" for a mean lengthwise fraction [1]."""
     return "toe" if u < 0.4 else ("heel" if u > 0.6 else "mid-face")
 
 
-def generation_limit_text(found: Generation, valid: Conjugacy | None = None) -> str | None:
+def generation_limit_text(found: Generation, valid: Conjugacy | None = None,
+                          teeth: str = "") -> str | None:
     """``ltca synthesize``'s first note where the pinion's drive flank is not generated over
     its working depth (fewer than :data:`GENERATED_SHARE_MIN` of its blank's grid).
 
@@ -234,6 +369,9 @@ def generation_limit_text(found: Generation, valid: Conjugacy | None = None) -> 
     valid : Conjugacy, optional
         Its ease-off's valid nodes (:func:`conjugacy`), named as a consequence, not as a
         mismatch of the synthesis.
+    teeth : str
+        :func:`teeth_text` of the tooth count checked (default: none checked, the lever
+        named as a trial).
 
     Returns
     -------
@@ -263,8 +401,9 @@ def generation_limit_text(found: Generation, valid: Conjugacy | None = None) -> 
             "contact, its unloaded TE and the root stress are not modelled where the flank is "
             "missing (`ltca run` leaves the root stress out), and no bearing prescription "
             f"changes it{eo}; the blank is the lever: more teeth at the same size (a smaller "
-            "module), checked by `ltca synthesize --no-development` of the changed file "
-            "(docs/synthesis.md, 'A pinion not generated over its working depth')")
+            "module)"
+            + (teeth or ", checked by `ltca synthesize --no-development` of the changed file")
+            + " (docs/synthesis.md, 'A pinion not generated over its working depth')")
 
 
 def trial_lte_ratio(development: Any) -> tuple[float, float, float] | None:

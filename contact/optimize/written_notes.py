@@ -294,7 +294,7 @@ def _lte_notes(basic, case, development, ratios) -> tuple[list[str], object]:
     """
     lines: list[str] = []
     record = None
-    limited = _generation_note(case)
+    limited = _generation_note(case, basic)
     if limited is not None:  # said first: the flank the contact needs is not there
         lines.append(limited)
     far, misjudged = _conjugacy_notes(case, development, ratios, limited is None)
@@ -652,12 +652,15 @@ def deflection_note(case, development) -> str | None:
                                                   float(gear.pitch_angle)))
 
 
-def _generation_note(case) -> str | None:
+def _generation_note(case, basic=None) -> str | None:
     """``ltca synthesize``'s first note where the written pinion's drive flank is not
     generated over its working depth (:func:`contact.optimize.development_conjugacy.
-    generation_limit_text`, with and without the development); None where it is, or where
-    the flank cannot be generated at all (the analysis' own check says so)."""
+    generation_limit_text`, with and without the development), its lever (more teeth)
+    checked by syntheses of ``basic`` where given (:func:`~contact.optimize.
+    development_conjugacy.checked_teeth_text`); None where it is, or where the flank cannot
+    be generated at all (the analysis' own check says so)."""
     from contact.optimize.development_conjugacy import (
+        checked_teeth_text,
         conjugacy,
         generation,
         generation_limit_text,
@@ -670,7 +673,8 @@ def _generation_note(case) -> str | None:
         return None
     if found.complete:
         return None
-    return generation_limit_text(found, conjugacy(case))
+    teeth = "" if basic is None else checked_teeth_text(basic)
+    return generation_limit_text(found, conjugacy(case), teeth)
 
 
 def _conjugacy_notes(case, development, ratios, generated: bool = True
