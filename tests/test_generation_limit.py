@@ -80,8 +80,8 @@ def test_far_from_conjugate_defers_to_the_generation_limit():
     assert lines[0].startswith("the pinion's drive flank (concave) is not generated over "
                                "its working depth: its cutter generates 551 of the "
                                "blank's 861 grid points (64 %, at least 75 %")
-    assert "392 of 861 valid nodes (46 %) follow from it" in lines[0]
-    assert "--no-development` is not the step to take" in lines[0]
+    assert "392 of 861 valid nodes (46 %) are not read as a mismatch" in lines[0]
+    assert "--no-development` (the bearing's prescriptions) is not the step to take" in lines[0]
 
 
 def test_the_texts_follow_their_criteria():
@@ -92,7 +92,7 @@ def test_the_texts_follow_their_criteria():
     text = generation_limit_text(Generation("convex", 600, 861, 0, 261, np.nan, 0.2),
                                  Conjugacy(300, 861, 50.0))
     assert "no envelope solution over 261 points (towards the toe)" in text
-    assert "undercut" not in text and "300 of 861 valid nodes (35 %)" in text
+    assert "undercut" not in text and "300 of 861 valid nodes (35 %) are not read" in text
 
 
 def test_a_case_that_loses_contact_is_refused_as_ltca_run_refuses_it():

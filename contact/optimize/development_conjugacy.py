@@ -392,8 +392,9 @@ def generation_limit_text(found: Generation, valid: Conjugacy | None = None,
     why = f" ({', '.join(parts)})" if parts else ""
     eo = ("" if valid is None else
           f"; the ease-off's {valid.valid} of {valid.nodes} valid nodes "
-          f"({100 * valid.fraction:.0f} %) follow from it, not from a mismatch of the "
-          "synthesis, so `ltca synthesize --no-development` is not the step to take")
+          f"({100 * valid.fraction:.0f} %) are not read as a mismatch of the synthesis while "
+          "the flank is incomplete, and `ltca synthesize --no-development` (the bearing's "
+          "prescriptions) is not the step to take: the blank is changed first")
     return (f"the pinion's drive flank ({found.flank}) is not generated over its working "
             f"depth: its cutter generates {found.generated} of the blank's {found.nodes} grid "
             f"points ({100 * found.fraction:.0f} %, at least "
