@@ -129,3 +129,24 @@ def test_synthesize_no_development_refuses_the_15x15(tmp_path, capsys):
     assert first < err.index("Changes to try: face contact ratio eps_vb 0.29")
     assert "z1 30 and z2 30 (now 15 and 15) generate 100 % of it" in err
     assert "not 20x20: far from conjugate" in err
+
+
+def test_ltca_runs_next_step_names_the_generation_limit_first():
+    """`ltca run`'s next line of the developed case's LTE FAIL (433/521 urad at 10.6/71.1
+    N m, as measured on main): on main "the LTE is not the design's contact ratios … other
+    [synthesis] prescriptions are the lever"; now the generation limit first, then the face
+    contact ratio, and the trial is more teeth. A bundled case (generated over its whole
+    blank) is not given it."""
+    from contact.commands.next_steps import _generation_limit, overlap_lines
+
+    lines = overlap_lines(load_case(DEVELOPED), "the LTE", (433.5, 521.3), "drive")
+    assert len(lines) == 1
+    line = lines[0]
+    assert line.startswith("  next, the LTE: first, the pinion's drive flank (concave) is not "
+                           "generated over its working depth")
+    assert line.index("551 of the blank's 861") < line.index("then the contact ratios: face "
+                                                             "contact ratio eps_vb 0.29")
+    assert "other [synthesis] prescriptions" not in line
+    assert line.endswith("a trial: ltca synthesize BASIC.toml with more teeth at the same "
+                         "size, then ltca run of the case it writes")
+    assert _generation_limit(load_case(bundled_case_path(DEFAULT_CASE))) is None
