@@ -912,10 +912,23 @@ def bin_table(ds: xr.Dataset) -> list[Mapping[str, Any]]:
 
 
 def share_percent(share: float) -> str:
-    """A share of the torque (a fraction, 0.0022 % = 2.2e-5) as the percentage text the
-    summaries print: two decimals, or two significant digits below 0.01 % so that a
-    trace share is not printed as "0.00 %" (issue 71 round 34: a 5x48's top bin read "up
-    to 0.00 % of the torque" beside an edge peak of 1214 MPa; its share was 0.0022 %)."""
+    """A share of the torque as the percentage text the duty cycle's summary prints.
+
+    Parameters
+    ----------
+    share : float — a fraction of the torque [1] (0.0022 % is 2.2e-5)
+
+    Returns
+    -------
+    str — 100 × ``share`` with two decimals, or with two significant digits where two
+        decimals would print "0.00" (0 < 100 × share < 0.005), without the % sign
+
+    Notes
+    -----
+    Why: a trace edge share was printed as "0.00 %" beside its pressure (issue 71 round 34:
+    the FM hypoid 5×48's top bin read "up to 0.00 % of the torque in bin 2, edge peak
+    pressure up to 1214 MPa"; its share was 0.0022 %).
+    """
     pct = 100.0 * float(share)
     if 0.0 < pct < 0.005:
         return f"{pct:.2g}"
