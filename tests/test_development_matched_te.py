@@ -13,6 +13,7 @@ tests are the step's choices, not numbers of a gear.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from pathlib import Path
 
@@ -173,6 +174,49 @@ def test_the_check_hands_the_flanks_level_to_the_step():
 
     src = inspect.getsource(dcheck.check_steps)
     assert "checked_matched_te(best, targets, setup, teeth, say, placed, level=level)" in src
+
+
+@pytest.mark.parametrize("peak, kept", [(48.0, True), (61.0, False)])
+def test_after_the_window_cut_the_parabola_is_matched_at_the_lowered_torques(
+        monkeypatch, peak, kept):
+    """The 19x33's written bearing at the torques the LTE window rule lowered it to (59.2 /
+    394.7 N m, LTE 24.9 / 60 µrad): the parabola matched there (45 → 115.2 µrad, then
+    where the two torques' LTE meet) and kept where its LTE over ``ltca run``'s range
+    keeps 60 µrad; a design above it between the torques is not kept (the rule's
+    promise)."""
+    from contact.optimize import development_range_lte as drl
+
+    seen, fake = _seen(_nineteen_by_33)
+    targets, setup, chosen = stand_in(monkeypatch, fake, [59.2, 394.7])
+    start = dataclasses.replace(chosen(dict(NINETEEN)), case=dict(NINETEEN))
+    monkeypatch.setattr(dmt, "contact_ratios", lambda case: (1.20, 1.23))
+    monkeypatch.setattr(drl, "range_lte", lambda e, setup, teeth, *a, **k: (
+        (59.2, 200.0, 394.7), (float(dmt.lte_ends(e)[0]), peak,
+                               float(dmt.lte_ends(e)[1]))))
+    monkeypatch.setattr(drl, "kept_range_said", lambda *a, **k: None)
+    seen.clear()
+    lines = []
+    got = dmt.matched_after_window(start, targets, setup, None, lines.append,
+                                   lambda v: dict(v), level=45.0)
+    assert seen[0]["te_level"] == pytest.approx(115.2, abs=0.05)
+    if kept:
+        assert got is not start and max(dmt.lte_ends(got)) < 60.0 - 5.0
+    else:
+        assert got is start
+        assert any(f"{peak:.1f} urad" in s and "not kept" in s for s in lines)
+
+
+def test_the_window_rule_hands_a_lowered_design_to_the_step():
+    """``_at_written_lte`` calls the step only where the window rule lowered the design
+    torque, with the check's ``placed`` and the flank's own level."""
+    import inspect
+
+    from contact.optimize import development
+
+    src = inspect.getsource(development._at_written_lte)
+    assert src.index("written_lte_capacity(") < src.index("matched_after_window(")
+    assert 'float(setup["torques"][1]) < rated' in src
+    assert "rerun, placed, start[TE_NAME])" in inspect.getsource(development.develop)
 
 
 @pytest.mark.parametrize("lte, eps", [
