@@ -12,7 +12,8 @@ Public names
 ------------
 FACE_CONTACT_RATIO_NOTE, PROFILE_CONTACT_RATIO_NOTE, header_text, noted_case,
 with_record, contact_ratios, low_overlap_lte, reach_text, first_lines, gear_process_note,
-fe_level_notes, synthesis_fe_level, checked_basic_rating
+fe_level_notes, synthesis_fe_level, checked_basic_rating, written_lte_lines,
+written_floor
 """
 
 from __future__ import annotations
