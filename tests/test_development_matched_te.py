@@ -13,6 +13,7 @@ tests are the step's choices, not numbers of a gear.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from pathlib import Path
 
@@ -112,6 +113,110 @@ def test_no_secant_where_the_parabola_raises_the_design_torques_lte(monkeypatch)
                                  lambda v: dict(v), eps=(1.00, 1.25))
     assert got is start
     assert [s["te_level"] for s in seen] == [pytest.approx(48.0)]
+
+
+#: the spiral bevel 19x33 at Σ 78°'s drive bearing as written by ``ltca synthesize`` (main
+#: 77d497b3, 2026-11-29): no ``te_level`` among its values (no TE step changed it), so
+#: the case carries the flank's own, the default 45 µrad
+NINETEEN = {"path_angle": -75.0, "ellipse_length": 0.65, "tip_relief": 12.0,
+            "root_relief": 40.0, "relief_start": 0.2, "profile_crowning": 0.0,
+            "tip_relief_start": 0.85, "blade_angle_change": 0.0}
+
+
+def _nineteen_by_33(case, torques, misalignment=None, options=None, teeth=None,
+                    pinion_key=(), flank="drive"):
+    """The 19x33 at 59.2 / 394.7 N m (ε_vα 1.20, ε_vβ 1.23), linear between the levels
+    measured on its written bearing (``benchmarks/development_levers.py --check --floor 4
+    --from-case``, 2026-11-29): te_level 45 / 90 / 150 µrad → LTE 24.9 / 60.0, 32.7 /
+    56.0, 45.1 / 44.1 µrad; a design without a level is placed at the flank's own, 45
+    µrad; the ellipse at its bound 0.75 leaves the LTE as it is."""
+    te = float(case.get("te_level", 45.0))
+    if te <= 90.0:
+        light, design = 24.9 + (te - 45.0) * 7.8 / 45.0, 60.0 - (te - 45.0) * 4.0 / 45.0
+    else:
+        light, design = 32.7 + (te - 90.0) * 12.4 / 60.0, 56.0 - (te - 90.0) * 11.9 / 60.0
+    m = _metrics(pattern_toe_u=[0.3, 0.05], pattern_heel_u=[0.73, 1.0],
+                 pattern_root_v=[0.34, 0.24], pattern_tip_v=[0.91, 1.0],
+                 pattern_centre_u=[0.5, 0.5], pattern_centre_v=[0.62, 0.64],
+                 lte_peak_to_peak=[light, design], lte_spread=[0.3, 0.15],
+                 pressure_max_flank=[700.0, 1184.0])
+    return m, (0.0, 1.0, 0.0, 1.0, 2400.0)
+
+
+def test_a_design_without_a_level_of_its_own_is_matched_from_the_flanks(monkeypatch):
+    """A design no TE step changed carries no ``te_level`` among its values; the case has
+    the flank's own (45 µrad). The gate reads that level (before: NaN, and the step never
+    ran on the 19x33's written design); its first level is 45 + (60 − 24.9) / 0.5 =
+    115.2 µrad, and the designs name it; without a level given the gate stays shut."""
+    seen, fake = _seen(_nineteen_by_33)
+    targets, setup, chosen = stand_in(monkeypatch, fake, [59.2, 394.7])
+    start = chosen(dict(NINETEEN))
+    assert "te_level" not in start.values and start.full[1]["lte"] > 0.0
+    assert dmt.runs_on(start, targets, lambda: (1.20, 1.23)) is False  # no level known
+    assert dmt.runs_on(start, targets, lambda: (1.20, 1.23), level=45.0) is True
+    seen.clear()
+    lines = []
+    got = dmt.checked_matched_te(start, targets, setup, None, lines.append,
+                                 lambda v: dict(v), eps=(1.20, 1.23), level=45.0)
+    assert seen[0] == NINETEEN | {"te_level": pytest.approx(115.2, abs=0.05)}
+    assert "with te_level 115 urad" in lines[0]
+    # kept: the larger of the two torques' LTE lower than the written 60 µrad
+    assert got is not start and "te_level" in got.values
+    assert max(dmt.lte_ends(got)) < 60.0 - 5.0
+    assert dmt.own_level(start, 45.0) == 45.0 and math.isnan(dmt.own_level(start))
+    assert dmt.own_level(got, 45.0) == got.values["te_level"]
+
+
+def test_the_check_hands_the_flanks_level_to_the_step():
+    """check_steps passes its ``level`` (the flank's own) to the step, as to its other TE
+    steps."""
+    import inspect
+
+    src = inspect.getsource(dcheck.check_steps)
+    assert "checked_matched_te(best, targets, setup, teeth, say, placed, level=level)" in src
+
+
+@pytest.mark.parametrize("peak, kept", [(48.0, True), (61.0, False)])
+def test_after_the_window_cut_the_parabola_is_matched_at_the_lowered_torques(
+        monkeypatch, peak, kept):
+    """The 19x33's written bearing at the torques the LTE window rule lowered it to (59.2 /
+    394.7 N m, LTE 24.9 / 60 µrad): the parabola matched there (45 → 115.2 µrad, then
+    where the two torques' LTE meet) and kept where its LTE over ``ltca run``'s range
+    keeps 60 µrad; a design above it between the torques is not kept (the rule's
+    promise)."""
+    from contact.optimize import development_range_lte as drl
+
+    seen, fake = _seen(_nineteen_by_33)
+    targets, setup, chosen = stand_in(monkeypatch, fake, [59.2, 394.7])
+    start = dataclasses.replace(chosen(dict(NINETEEN)), case=dict(NINETEEN))
+    monkeypatch.setattr(dmt, "contact_ratios", lambda case: (1.20, 1.23))
+    monkeypatch.setattr(drl, "range_lte", lambda e, setup, teeth, *a, **k: (
+        (59.2, 200.0, 394.7), (float(dmt.lte_ends(e)[0]), peak,
+                               float(dmt.lte_ends(e)[1]))))
+    monkeypatch.setattr(drl, "kept_range_said", lambda *a, **k: None)
+    seen.clear()
+    lines = []
+    got = dmt.matched_after_window(start, targets, setup, None, lines.append,
+                                   lambda v: dict(v), level=45.0)
+    assert seen[0]["te_level"] == pytest.approx(115.2, abs=0.05)
+    if kept:
+        assert got is not start and max(dmt.lte_ends(got)) < 60.0 - 5.0
+    else:
+        assert got is start
+        assert any(f"{peak:.1f} urad" in s and "not kept" in s for s in lines)
+
+
+def test_the_window_rule_hands_a_lowered_design_to_the_step():
+    """``_at_written_lte`` calls the step only where the window rule lowered the design
+    torque, with the check's ``placed`` and the flank's own level."""
+    import inspect
+
+    from contact.optimize import development
+
+    src = inspect.getsource(development._at_written_lte)
+    assert src.index("written_lte_capacity(") < src.index("matched_after_window(")
+    assert 'float(setup["torques"][1]) < rated' in src
+    assert "rerun, placed, start[TE_NAME])" in inspect.getsource(development.develop)
 
 
 @pytest.mark.parametrize("lte, eps", [

@@ -498,3 +498,73 @@ def test_apply_remedy_refuses_a_ratio_at_its_target_before_any_work(monkeypatch)
                                          r"AGMA 2005-D03; one within 0.01 below it is at it\)"):
         developed_with_remedy(run, load_basic(TWENTY_TWO))
     assert seen == []
+
+
+# --- a remedy that gives up load for an LTE the design has (issue 71, round 34) ---
+
+FIVE = UNSEEN / "hypoid_5x48_a36_m1.toml"
+#: the 5x48's checks as round 34's note printed them (alpha_dD 16.3 deg: 70 urad, 89 um;
+#: k_d 2.26: 71 urad, 129 um) and its written drive flank's unloaded TE p-p 73 urad
+FIVE_MEASURED = {"alpha_dD": (70.0, 89.0, 0.7), "k_d": (71.0, 129.0, 0.7)}
+FIVE_WRITTEN = (73.0, 89.0, 0.7)
+
+
+def _five_result(basic, lte, design_torque):
+    """A development of the 5x48 whose drive reads ``lte`` (light, design) [µrad] at
+    0.15 / 1 x ``design_torque`` [N·m] (its coast 9/13 urad, as round 34 measured)."""
+    r = _result(basic, lte, (9.0, 13.0))
+    return dataclasses.replace(r, torque=(round(0.15 * design_torque, 1), design_torque))
+
+
+def test_apply_remedy_refuses_a_remedy_that_gives_up_the_design_torque(monkeypatch):
+    """The FM hypoid 5x48 (eps_va 0.90; its LTE p-p 35/29 urad, within 60): round 34's
+    --apply-remedy applied alpha_dD 16.3 deg (checked 70 against the written 73 urad) and
+    wrote the remedied design at 81.7 N m, 0.40 of the design as given's 206.7, whose
+    `ltca run` FAILed on scuffing. A remedy is offered for the LTE; where the design as
+    given keeps it, a remedied design torque below the given one is no remedy: an
+    InputError naming both torques (the numbers the developments gave, exact) after the
+    two developments; nothing returned as remedied."""
+    basic = load_basic(FIVE)
+    assert sorted(c.field for c in ratio_changes(basic.design)) == ["alpha_dD", "k_d"]
+    _stand_in_checks(monkeypatch, FIVE_MEASURED, FIVE_WRITTEN)
+    developed: list = []
+
+    def run(b):
+        developed.append(b)
+        given = len(developed) == 1
+        return _five_result(b, (35.0, 29.0) if given else (26.0, 28.0),
+                            206.7 if given else 81.7)
+
+    with pytest.raises(InputError, match=r"alpha_dD 22\.5 -> 16\.3 deg developed: its "
+                                         r"design torque 81\.7 N m is below the design as "
+                                         r"given's 206\.7 N m \(0\.40 of it\), whose LTE p-p "
+                                         r"is within the verdict's limit already \(drive "
+                                         r"35/29 urad at 31/206\.7 N m.*nothing written"):
+        developed_with_remedy(run, basic)
+    assert len(developed) == 2  # the remedied design was developed, then refused
+    from contact.optimize.development_remedy import torque_given_up
+
+    # the rule alone: the LTE not met (a trial, whatever its torque), an equal torque, or
+    # a higher one are no refusal
+    given = _five_result(basic, (35.0, 29.0), 206.7)
+    assert torque_given_up(given, _five_result(basic, (26.0, 28.0), 81.7), False) == ""
+    assert torque_given_up(given, _five_result(basic, (26.0, 28.0), 206.7), True) == ""
+    assert torque_given_up(given, _five_result(basic, (26.0, 28.0), 206.74), True) == ""
+    assert torque_given_up(given, _five_result(basic, (26.0, 28.0), 206.6), True) != ""
+
+
+def test_apply_remedy_keeps_a_remedy_at_the_given_design_torque(monkeypatch):
+    """The same 5x48 where the remedied development keeps the design as given's torque:
+    applied as before (alpha_dD 16.3 deg, its record's lte_met True)."""
+    basic = load_basic(FIVE)
+    _stand_in_checks(monkeypatch, FIVE_MEASURED, FIVE_WRITTEN)
+    developed: list = []
+
+    def run(b):
+        developed.append(b)
+        return _five_result(b, (35.0, 29.0) if len(developed) == 1 else (26.0, 28.0), 206.7)
+
+    result = developed_with_remedy(run, basic)
+    assert result.remedy.check.change.field == "alpha_dD"
+    assert math.degrees(developed[1].design.alpha_dD) == pytest.approx(16.3, abs=1e-9)
+    assert result.remedy.record.lte_met is True

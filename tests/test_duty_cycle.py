@@ -334,6 +334,26 @@ def test_edge_note_counts_the_bins_the_verdict_counts():
     assert edge_note(ds) is None
 
 
+def test_edge_note_prints_a_trace_share_with_its_digits():
+    """Round 34 (issue 71): the FM hypoid 5x48's duty cycle printed "up to 0.00 % of the
+    torque in bin 2, edge peak pressure up to 1214 MPa" for an edge share of 2.2e-5 of
+    the torque (0.0022 %): a share that rounds to 0.00 % at two decimals is printed with
+    two significant digits (exact: the text of 100 x the share), and 0.1 % as before."""
+    import xarray as xr
+
+    from contact.study.duty_cycle import edge_note, share_percent
+
+    ds = xr.Dataset({"edge_load_share": ("bin", [0.0, 0.0, 2.204e-5]),
+                     "pressure_max_edge": ("bin", [0.0, 0.0, 1214.0])})
+    note = edge_note(ds)
+    assert "up to 0.0022 % of the torque in bin 2" in note, note
+    assert "0.00 %" not in note
+    assert share_percent(1e-3) == "0.10"   # two decimals from 0.005 % up, as before
+    assert share_percent(5e-5) == "0.01"
+    assert share_percent(4.9e-5) == "0.0049"
+    assert share_percent(0.0) == "0.00"
+
+
 def test_a_local_cluster_is_announced_before_the_first_bin():
     """Round 14: `ltca duty-cycle` printed nothing for 53 s between its spectrum line and
     its first bin while the local cluster started; it now says where the bins run, on how

@@ -368,7 +368,7 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     best = load_lte.checked_load_lte(best, targets, setup, teeth, say, placed)
     best = load_lte.checked_relief_ellipse_lte(best, targets, setup, teeth, say, placed)
     from contact.optimize.development_matched_te import checked_matched_te
-    best = checked_matched_te(best, targets, setup, teeth, say, placed)
+    best = checked_matched_te(best, targets, setup, teeth, say, placed, level=level)
     from contact.optimize.development_relief_lte import checked_relief_variants
     best = checked_relief_variants(best, targets, setup, teeth, say, placed)
     from contact.optimize.development_path_lte import checked_path_lte

@@ -26,8 +26,8 @@ __all__ = ["flank_lte_line", "inside", "lte_lines"]
 
 
 def flank_lte_line(flank: str, torques: tuple[float, float], ends: tuple[float, float],
-                   between: Mapping[str, Any] | None, limit: float, target: float
-                   ) -> str | None:
+                   between: Mapping[str, Any] | None, limit: float, target: float,
+                   floor: float = math.nan) -> str | None:
     """One flank's written LTE p-p in words, where it misses the development's target or
     the verdict's limit at a torque or between its torques.
 
@@ -47,6 +47,12 @@ def flank_lte_line(flank: str, torques: tuple[float, float], ends: tuple[float, 
         The verdict's LTE limit (:data:`contact.study.verdicts.LTE_LIMIT`).
     target : float — [µrad]
         The development's LTE target (``max_lte``).
+    floor : float, optional — [µrad]
+        The flank's load-sharing floor between its two torques
+        (:func:`contact.optimize.development_lte_floor.te_floor`); where finite and the
+        target is missed at the two torques within the verdict's limit, the line says it
+        against the target (:func:`~contact.optimize.development_lte_floor.floor_text`).
+        NaN (default): not said.
 
     Returns
     -------
@@ -89,8 +95,10 @@ def flank_lte_line(flank: str, torques: tuple[float, float], ends: tuple[float, 
         return line + (f": within the verdict's limit {limit:g} urad; above the development's "
                        f"target {float(target):g} urad between the torques only (the "
                        "development judges it at the light and design torques: met there)")
-    return line + f": within the verdict's limit {limit:g} urad, the development's target " \
-        f"{float(target):g} urad missed"
+    from contact.optimize.development_lte_floor import floor_text
+
+    return (line + f": within the verdict's limit {limit:g} urad, the development's target "
+            f"{float(target):g} urad missed" + floor_text(floor, target))
 
 
 def inside(record: Mapping[str, Any] | None) -> dict[str, float] | None:
@@ -132,7 +140,8 @@ def inside(record: Mapping[str, Any] | None) -> dict[str, float] | None:
 
 
 def lte_lines(development: Any, drive_between: Mapping[str, Any] | None = None,
-              coast_between: Mapping[str, Any] | None = None) -> list[str]:
+              coast_between: Mapping[str, Any] | None = None,
+              drive_floor: float = math.nan) -> list[str]:
     """:func:`flank_lte_line` of a development's written drive and (where checked) coast
     flank.
 
@@ -146,6 +155,9 @@ def lte_lines(development: Any, drive_between: Mapping[str, Any] | None = None,
         The flank's LTE over the range where the development holds no record of it (the
         written case analysed, :func:`~contact.optimize.development_deflection.analysed`):
         ``"peak"`` [µrad], ``"at"`` [N·m].
+    drive_floor : float, optional — [µrad]
+        The written drive flank's load-sharing floor (:func:`flank_lte_line`'s ``floor``;
+        NaN: not said).
 
     Returns
     -------
@@ -167,7 +179,7 @@ def lte_lines(development: Any, drive_between: Mapping[str, Any] | None = None,
     lte = development.best.metrics["lte_peak_to_peak"]
     lines = [flank_lte_line("drive", tuple(development.torque), (lte[0], lte[-1]),
                             inside(development.lte_range or drive_between), LTE_LIMIT,
-                            target)]
+                            target, drive_floor)]
     if development.coast is not None:
         c = development.coast["lte_peak_to_peak"]
         lines.append(flank_lte_line(

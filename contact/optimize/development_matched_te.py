@@ -188,7 +188,7 @@ def level_ceiling(targets: DevelopmentTargets) -> float:
 
 
 def runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
-            ratios: Callable[[], tuple[float, float]]) -> bool:
+            ratios: Callable[[], tuple[float, float]], level: float = math.nan) -> bool:
     """The step's gate, asked without an analysis: ``best`` is checked, misses the
     development's LTE target with the design torque's LTE p-p above ``max_lte`` and above
     the light torque's, the targets vary ``te_level`` and its ceiling
@@ -203,6 +203,10 @@ def runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         The development's targets (``max_lte`` [µrad], ``variables``).
     ratios : callable → (float, float)
         The pair's (ε_vα, ε_vβ) [1], called only where every other condition holds.
+    level : float, optional — [µrad]
+        The flank's own ``te_level`` (the basic file's, else the default 45 µrad: what the
+        case is written with), where the design's values carry none (a design no TE step
+        changed); NaN (default): such a design is not tried.
 
     Returns
     -------
@@ -215,7 +219,12 @@ def runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     Notes
     -----
     Source: issue 71 (the drive LTE where the contact ratios are low; docs/synthesis.md,
-    "The TE parabola matched to the load where the contact ratios are low").
+    "The TE parabola matched to the load where the contact ratios are low"). A design
+    whose values carry no ``te_level`` has the flank's own (the check's other TE steps read
+    it so, :func:`~contact.optimize.development_te_steps.checked_te`); before, the gate
+    read NaN there and the step never ran on it: the spiral bevel 19x33 at Σ 78° of
+    benchmarks/data/unseen_designs (ε_vβ 1.23; LTE 20 / 67 µrad at 131.9 / 879.8 N m)
+    was written without it (docs/synthesis.md, "The drive LTE target against the levers").
     """
     if (not best.checked_full
             or TE_NAME not in targets.variables
@@ -224,10 +233,39 @@ def runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     light, design = lte_ends(best)
     if not (design > float(targets.max_lte) and design > light):
         return False
-    now = float(best.values.get(TE_NAME, math.nan))
-    if not level_ceiling(targets) > now + 1.0:  # NaN: no level of its own, not tried
+    now = own_level(best, level)
+    if not level_ceiling(targets) > now + 1.0:  # NaN: no level known, not tried
         return False
     return low_ratios(*ratios())
+
+
+def own_level(e: DevelopmentEvaluation, level: float = math.nan) -> float:
+    """A design's ``te_level`` [µrad]: its values' where they carry one, else ``level``
+    (the flank's own, what the case is written with).
+
+    Parameters
+    ----------
+    e : DevelopmentEvaluation
+        The design (its ``values``, file units).
+    level : float, optional — [µrad]
+        The flank's own level (NaN: unknown).
+
+    Returns
+    -------
+    float — [µrad]
+        NaN where neither gives one.
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: the check's TE steps' convention
+    (:func:`~contact.optimize.development_te_steps.checked_te`: ``values.get(te_level,
+    level)``).
+    """
+    return float(e.values.get(TE_NAME, level))
 
 
 def matched_level(now: float, light: float, design: float, ceiling: float) -> float:
@@ -300,7 +338,8 @@ def checked_matched_te(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                        setup: Mapping[str, Any], teeth: KeptTeeth | None,
                        say: Callable[[str], None],
                        placed: Callable[[Mapping[str, float]], Case], *,
-                       eps: tuple[float, float] | None = None) -> DevelopmentEvaluation:
+                       eps: tuple[float, float] | None = None,
+                       level: float = math.nan) -> DevelopmentEvaluation:
     """A drive design that misses the development's LTE target with the design torque's
     LTE the larger, on a pair of low contact ratios (:func:`runs_on`), given the modified
     roll's TE parabola matched to the load and then a longer bearing: ``te_level`` at
@@ -323,6 +362,10 @@ def checked_matched_te(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     eps : (float, float), optional — [1]
         The pair's (ε_vα, ε_vβ) (default :func:`contact_ratios` of the design's case, read
         only where the LTE gate holds).
+    level : float, optional — [µrad]
+        The flank's own ``te_level``, the design's where its values carry none
+        (:func:`own_level`; the check passes it as its other TE steps get it). NaN
+        (default): such a design is not tried.
 
     Returns
     -------
@@ -375,10 +418,10 @@ def checked_matched_te(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         def ratios() -> tuple[float, float]:
             return contact_ratios(best.case) if best.case is not None else (math.nan,
                                                                              math.nan)
-    if not runs_on(best, targets, ratios):
+    if not runs_on(best, targets, ratios, level):
         return best
     records: list[tuple[DevelopmentEvaluation, str, str, str]] = []
-    kept = _designs(best, targets, setup, teeth, say, placed, records)
+    kept = _designs(best, targets, setup, teeth, say, placed, records, level)
     # the least-LTE record ltca synthesize's note states: a design kept and then
     # replaced by a later one of the step is not the one written
     lte_reached(setup, best, f"design {best.index + 1} as checked")
@@ -393,14 +436,14 @@ def _designs(start: DevelopmentEvaluation, targets: DevelopmentTargets,
              setup: Mapping[str, Any], teeth: KeptTeeth | None,
              say: Callable[[str], None],
              placed: Callable[[Mapping[str, float]], Case],
-             records: list[tuple[DevelopmentEvaluation, str, str, str]]
-             ) -> DevelopmentEvaluation:
+             records: list[tuple[DevelopmentEvaluation, str, str, str]],
+             level: float = math.nan) -> DevelopmentEvaluation:
     """:func:`checked_matched_te`'s designs past its gate: the design kept; each
     design analysed appended to ``records`` (design, words, why not kept, lever)."""
     best = start
     lo = float(targets.variables[TE_NAME][0])
     ceiling = level_ceiling(targets)
-    now = float(start.values[TE_NAME])
+    now = own_level(start, level)
     light, design = lte_ends(start)
     first = round(matched_level(now, light, design, ceiling), 1)
     e = said_variant(start, dict(start.values) | {TE_NAME: first}, STAGE,
@@ -443,12 +486,77 @@ def _designs(start: DevelopmentEvaluation, targets: DevelopmentTargets,
         return best
     e = said_variant(best, dict(best.values) | {name: longer}, STAGE,
                      f"with ellipse_length {longer:.3g} at te_level "
-                     f"{float(best.values[TE_NAME]):.3g} urad (a longer bearing; its LTE "
+                     f"{own_level(best, level):.3g} urad (a longer bearing; its LTE "
                      "missed)", targets, setup, teeth, say, placed)
     if e is None:
         return best
     why = kept_why(best, e, targets, setup, teeth, say, "the longer bearing",
                    lost=lost_targets)
     records.append((e, f"design {start.index + 1} with ellipse_length {longer:.3g}, "
-                    f"te_level {float(best.values[TE_NAME]):.3g} urad", why, BEARING_LEVER))
+                    f"te_level {own_level(best, level):.3g} urad", why, BEARING_LEVER))
     return best if why else e
+
+
+def matched_after_window(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                         setup: dict[str, Any], teeth: KeptTeeth | None,
+                         say: Callable[[str], None],
+                         placed: Callable[[Mapping[str, float]], Case],
+                         level: float = math.nan) -> DevelopmentEvaluation:
+    """The written drive design after the LTE window rule lowered its design torque
+    (:func:`~contact.optimize.development_written_lte.written_lte_capacity`): the TE
+    parabola matched to the load at the lowered torques (:func:`checked_matched_te`, its
+    gate and keep rule), a design kept only where its LTE p-p keeps the verdict's limit at
+    every torque of ``ltca run``'s ``lte_range`` too (the rule's own promise), and its range
+    recorded (:func:`~contact.optimize.development_range_lte.kept_range_said`).
+
+    Parameters
+    ----------
+    best : DevelopmentEvaluation
+        The written design scored at the lowered torques (``setup["torques"]``).
+    targets, setup, teeth, say, placed
+        As every check step's (:func:`~contact.optimize.development_check.check_steps`).
+    level : float, optional — [µrad]
+        The flank's own ``te_level`` (:func:`own_level`).
+
+    Returns
+    -------
+    DevelopmentEvaluation
+        The design kept; ``best`` where the gate does not hold, none ranked better or the
+        one kept exceeds the limit between the torques.
+
+    Raises
+    ------
+    Nothing: a design whose synthesis or analysis fails is not kept (logged).
+
+    Notes
+    -----
+    Why: the development matches the parabola at the torque it develops at (the ISO 10300
+    capacity); the window rule then lowers the design torque to where the bearing keeps
+    60 µrad, and the development's own LTE target at that torque was never aimed at. On the
+    FM spiral bevel 19x33 at Σ 78° of benchmarks/data/unseen_designs (ε_vβ 1.23) the
+    parabola matched at 879.8 N m raised the design torque's LTE (20 / 67 → 35 / 86 µrad
+    at te_level 140: the pattern at the face's ends there), while on the same bearing at
+    the lowered 59.2 / 394.7 N m te_level 45 / 90 / 150 µrad gave 25 / 60, 33 / 56, 45 / 44
+    µrad (the classical rule: the parabola's depth matched to the deflection's change, the
+    two torques' LTE meet near the load sharing's floor, 37-41 µrad;
+    ``benchmarks/development_levers.py --check --floor 4 --from-case``, 2026-11-29).
+    """
+    from contact.optimize.development_range_lte import (
+        kept_range_said,
+        range_lte,
+        range_peak,
+        verdict_lte_limit,
+    )
+
+    kept = checked_matched_te(best, targets, setup, teeth, say, placed, level=level)
+    if kept is best:
+        return best
+    limit = verdict_lte_limit()
+    peak, at = range_peak(range_lte(kept, setup, teeth))
+    if not peak <= limit:
+        say(f"  not kept: the parabola matched at the lowered torques has its LTE p-p "
+            f"{peak:.1f} urad at {at:.4g} N m between them, above {limit:g} urad")
+        return best
+    kept_range_said(setup, best, kept, teeth, say,
+                    "the TE parabola matched at the lowered design torque")
+    return kept

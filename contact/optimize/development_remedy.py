@@ -34,7 +34,8 @@ Public names
 ------------
 REMEDY_TABLE, AppliedRemedy, ratio_changes, contact_ratios_of, prescribed_basic,
 checked_record, chosen_check, remedied_basic, file_value, change_text, lte_parts, worst_lte,
-flanks_above, above_limit_text, lte_within, developed_with_remedy, applied_table
+flanks_above, above_limit_text, lte_within, torque_given_up, developed_with_remedy,
+applied_table
 """
 
 from __future__ import annotations
@@ -50,7 +51,7 @@ from geometry.core.text import plain_number
 __all__ = ["REMEDY_TABLE", "AppliedRemedy", "above_limit_text", "applied_table", "change_text",
            "checked_record", "chosen_check", "contact_ratios_of", "developed_with_remedy",
            "file_value", "flanks_above", "lte_parts", "lte_within", "prescribed_basic",
-           "ratio_changes", "remedied_basic", "worst_lte"]
+           "ratio_changes", "remedied_basic", "torque_given_up", "worst_lte"]
 
 log = logging.getLogger(__name__)
 
@@ -433,6 +434,56 @@ def lte_within(development, limit: float) -> bool:
     return development is not None and worst_lte(development) <= limit
 
 
+def torque_given_up(given, remedied, lte_met: bool) -> str:
+    """Why a remedied development is no remedy for a design whose LTE already keeps the
+    verdict's limit: its design torque below the design as given's; empty where it is not
+    (the design as given's LTE above the limit: the remedy is the trial its note offers,
+    whatever its torque; or the remedied design torque at or above the given one).
+
+    Parameters
+    ----------
+    given, remedied : contact.optimize.development.DevelopmentResult
+        The development of the basic data as given and of the remedied basic data (their
+        ``torque``: light and design torque [N·m]).
+    lte_met : bool
+        Whether the design as given's developed LTE p-p is within the verdict's limit
+        (:func:`lte_within`, the check record's ``lte_met``).
+
+    Returns
+    -------
+    str
+        The reason in numbers (both design torques [N·m], their ratio), or empty.
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Why (issue 71, round 34): the FM hypoid 5×48 (ε_vα 0.90, its LTE p-p 35/29 µrad) was
+    offered α_dD 22.5 → 16.3° (checked 70 against the written 73 µrad unloaded); ``ltca
+    synthesize --apply-remedy`` wrote the remedied design at a design torque of 81.7 N·m,
+    0.40 of the design as given's 206.7 (its local pitting capacity: the hypoid factor
+    Z_Hyp 0.93 → 0.88 with the lengthwise sliding), and its ``ltca run`` FAILed on
+    scuffing (S_B 0.82) where the design as given's passed. A contact-ratio remedy is
+    offered for the LTE (``ltca run``'s 60 µrad at every torque); where the design as
+    given keeps it, the remedied design must not carry less for it. The design torque is
+    each development's own (its ISO capacity or the developed bearing's cut), compared at
+    the printed 0.1 N·m.
+    """
+    if not lte_met:
+        return ""
+    before, after = float(given.torque[1]), float(remedied.torque[1])
+    if not (math.isfinite(before) and math.isfinite(after)) or round(after, 1) >= round(
+            before, 1):
+        return ""
+    return (f"its design torque {plain_number(round(after, 1))} N m is below the design as "
+            f"given's {plain_number(round(before, 1))} N m ({after / before:.2f} of it), "
+            "whose LTE p-p is within the verdict's limit already "
+            f"({', '.join(lte_parts(given))}): the remedy would give up load for an LTE the "
+            "design has")
+
+
 def _refused_text(record) -> str:
     """Why no change is applied: each one's refusal (:func:`~contact.optimize.remedy_check.
     refusal`)."""
@@ -474,7 +525,9 @@ def developed_with_remedy(run: Callable[[Any], Any], basic,
         (each refusal said, a change no better than the design as given among them where
         its LTE is within the verdict's limit:
         :func:`~contact.optimize.remedy_check.no_better`); the design as given is then not
-        returned in place of a remedied one.
+        returned in place of a remedied one. After the remedied development: the design as
+        given's LTE within the verdict's limit and the remedied design torque below its
+        own (:func:`torque_given_up`).
 
     Notes
     -----
@@ -540,6 +593,12 @@ def developed_with_remedy(run: Callable[[Any], Any], basic,
     chosen, second, developed, why = next_remedies(
         (chosen, second), [c for c in passed if c is not chosen],
         lambda check: run(remedied(check)), text, LTE_LIMIT, said)
+    given_up = torque_given_up(first, second, record.lte_met)
+    if given_up:
+        raise InputError(
+            f"apply_remedy: {text(chosen)} developed: {given_up}; nothing written: the "
+            "design as given is developed and written without apply_remedy (ltca "
+            "synthesize without --apply-remedy)")
     kept = given[id(chosen)]
     applied = AppliedRemedy(chosen, record, kept, file_value(basic.design, chosen.change.field),
                             before, contact_ratios_of(kept.design),

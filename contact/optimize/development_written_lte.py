@@ -24,7 +24,9 @@ the LTE once more). Where no lowered torque keeps it with that bearing (its LTE 
 the unloaded TE at light load, and a lower design torque's light torque is lower too), the
 window it keeps the limit in is recorded and :func:`redeveloped_in_window` develops the
 drive again at its upper end, kept where that development keeps the limit (the 14x36:
-211.7 N m, 46.8 / 50.1 µrad). A design torque the basic file gives is kept. That
+211.7 N m, 46.8 / 50.1 µrad); where the bearing developed there breaks the limit, at the
+window's geometric middle below it, at most twice (the 17x23: 926.9 and 638.9 N m missed,
+530.5 N m kept; branch lowratio95). A design torque the basic file gives is kept. That
 re-development is stopped after its drive steps where its check's own LTE record over
 ``ltca run``'s range exceeds the limit already (:class:`WindowMissed`,
 :func:`window_missed`): it could not be kept, so its coast flank, FE root checks and
@@ -332,8 +334,8 @@ def _below_fail_level(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     return lowered
 
 
-def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], basic: Any,
-                          say: Callable[[str], None]) -> Any:
+def redeveloped_in_window(run: Callable[..., Any], setup: dict[str, Any], basic: Any,
+                          say: Callable[[str], None], middle: bool = False) -> Any:
     """The drive development run again at the upper end of the torque window its written
     bearing kept the verdict's LTE limit in (:func:`written_lte_capacity` records it where
     no lowered torque kept it with that bearing), kept where its own written design keeps
@@ -352,11 +354,21 @@ def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], ba
         The basic data as given (the result's ``basic``: no design torque of its own).
     say : callable (str) → None
         Where the step's lines go.
+    middle : bool, optional
+        Default False: one development, at the window's upper end. True (the window
+        before any capacity cut, ``development._at_written_lte``): where the bearing
+        developed there breaks the limit (stopped by :class:`WindowMissed`, or its LTE
+        above the limit: not a failed run), the drive is developed again at
+        ``floor_torque(√(low · T))`` below that torque ``T``, at most
+        :data:`WINDOW_LOWER_STEPS` times, each below the last one missed and only where
+        it is at least :data:`WINDOW_LOWER_STEP` × lower; ``run`` is then given
+        ``torque_name`` (:func:`window_name` with ``middle``).
 
     Returns
     -------
     DevelopmentResult or None
-        The development at ``floor_torque(high)`` (its design torque raised back towards
+        The development at ``floor_torque(high)`` — or, with ``middle``, at the first
+        middle below it whose bearing keeps the limit — (its design torque raised back towards
         ``setup["torques"][1]`` where its bearing carries more: ``run`` is given it as
         ``raise_to``, :func:`contact.optimize.development.develop`), its design torque the
         development's own
@@ -377,6 +389,17 @@ def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], ba
 
     Notes
     -----
+    Why the middles (branch lowratio95): the FM spiral bevel 17x23 of
+    benchmarks/data/unseen_designs (ε_vβ 0.93) kept 60 µrad with its written bearing from
+    about 440.5 to 926.9 N m only; developed at 926.9 N m it read 72.1 / 77.6 µrad and the
+    design was written at its ISO capacity 1537 N m with 96 µrad, though the same basic
+    data developed at 530.5 N m keep 60 µrad at every torque (docs/synthesis.md, "The LTE
+    window developed again below its upper end"). The LTE of a bearing developed at a
+    lower design torque carries less load-induced deflection: a lower torque in the
+    window, bisected geometrically as :func:`~contact.optimize.development._window_raised`
+    bisects its raise back, which then raises the torque kept as far as the bearing's
+    own LTE allows.
+
     Measured (docs/synthesis.md, "The design torque where the written design keeps its
     LTE"): the 14x36 at Σ 70°'s written bearing keeps 60 µrad from 36.4 to 212.1 N m only
     (its LTE falls from the unloaded TE's 70 µrad at light load), narrower than the light
@@ -386,30 +409,85 @@ def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], ba
     window = setup.get("lte_window")
     if window is None:
         return None
-    low, high, before = window
+    low, high, _ = window
     limit = verdict_lte_limit()
     torque = floor_torque(high)
     design = float(setup["torques"][1])
     say(f"development: the written drive bearing keeps {limit:g} urad from about "
         f"{plain_number(round(low, 1))} to {plain_number(round(high, 1))} N m only; the drive "
         f"developed again at {plain_number(torque)} N m")
+    kept, missed = _window_try(run, torque, setup, basic, say, {}, "")
+    if not middle:
+        return kept
+    # the bearing developed there breaks the limit: developed again at the geometric middle
+    # of the window below it, at most WINDOW_LOWER_STEPS times, each from the last missed
+    # (raised back from the torque kept as far as its own LTE allows:
+    # development._window_raised)
+    misses: list[str] = []
+    for _ in range(WINDOW_LOWER_STEPS):
+        if kept is not None or not missed:
+            return kept
+        misses.append(f"at {plain_number(torque)} N m {missed}")
+        lower = floor_torque(math.sqrt(low * torque))
+        if not (math.isfinite(lower) and lower * WINDOW_LOWER_STEP <= torque):
+            say(f"development: the design torque kept at {plain_number(design)} N m (the "
+                f"window's middle {plain_number(lower)} N m below {plain_number(torque)} N m "
+                "too close to it to develop a bearing of its own)")
+            return None
+        say(f"development: the drive developed again at {plain_number(lower)} N m, the "
+            f"geometric middle of {plain_number(round(low, 1))}-{plain_number(torque)} N m "
+            f"(at {plain_number(torque)} N m {missed})")
+        kept, missed = _window_try(
+            run, lower, setup, basic, say,
+            {"torque_name": window_name(setup, middle=(torque, missed))},
+            f"{'; '.join(misses)}, so at the window's geometric middle below it; ")
+        torque = lower
+    return kept
+
+
+#: most developments of :func:`redeveloped_in_window` (``middle``) at the geometric middle
+#: of the window below the last torque whose bearing broke the limit: the FM spiral bevel
+#: 17x23 of benchmarks/data/unseen_designs read 77.6 µrad at the window's upper end
+#: 926.9 N m, about 73 at its middle 638.9 (a bearing of its own, the same basic data
+#: given that design torque) and within 60 at 530.5, the next middle (branch lowratio95).
+#: Each miss is stopped after its drive steps (:class:`WindowMissed`).
+WINDOW_LOWER_STEPS = 2
+
+#: the least ratio of a torque whose bearing missed to the middle below it at which
+#: :func:`redeveloped_in_window` develops the drive once more there: a design torque
+#: within 10 % of one developed already changes the development's light torque and
+#: load-matched TE by as little
+WINDOW_LOWER_STEP = 1.1
+
+
+def _window_try(run: Callable[..., Any], torque: float, setup: dict[str, Any], basic: Any,
+                say: Callable[[str], None], kw: dict[str, Any], prior: str
+                ) -> tuple[Any, str]:
+    """One development of :func:`redeveloped_in_window` at the design torque ``torque``
+    [N·m] (``run(torque, **kw)``; ``prior`` the words its torque source says before
+    "developed at"). Returns (the result as :func:`redeveloped_in_window`
+    returns it, or None; where None because its drive LTE p-p broke the limit, its
+    reading in words, else "")."""
+    low, high, before = setup["lte_window"]
+    limit = verdict_lte_limit()
+    design = float(setup["torques"][1])
     try:
-        again = run(torque)
+        again = run(torque, **kw)
     except WindowMissed as missed:  # stopped after its drive steps: it would not be kept
         found = missed.record
         where = judged_where(found, clause=True)
-        say(f"development: at {plain_number(torque)} N m its drive LTE p-p "
-            f"{_curve((found['torques'], found['lte']))}, at most {found['peak']:.1f} "
-            f"{where} after its drive steps (the check's reading): above {limit:g} urad, "
-            "so not kept (its coast flank, FE root checks and case not made); the design "
-            f"torque kept at {plain_number(design)} N m")
-        return None
+        reading = (f"its drive LTE p-p {_curve((found['torques'], found['lte']))}, at most "
+                   f"{found['peak']:.1f} {where} after its drive steps")
+        say(f"development: at {plain_number(torque)} N m {reading} (the check's reading): "
+            f"above {limit:g} urad, so not kept (its coast flank, FE root checks and case "
+            f"not made); the design torque kept at {plain_number(design)} N m")
+        return None, reading
     except Exception as exc:  # the first development stands
         raise_if_interrupted(exc)
         log.info("development: the development at %.4g N m failed: %s", torque, exc)
         say(f"development: the development at {plain_number(torque)} N m failed ({exc}); "
             f"the design torque kept at {plain_number(design)} N m")
-        return None
+        return None, ""
     ends = np.asarray(again.best.metrics["lte_peak_to_peak"], float)
     judged = again.lte_range
     peak = float(judged["peak"]) if judged is not None else math.nan
@@ -420,11 +498,13 @@ def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], ba
         peak = _range_peak(again)
         reading = "judged on its written drive design"
     if not (np.all(np.isfinite(ends)) and np.all(ends <= limit) and peak <= limit):
-        say(f"development: at {plain_number(torque)} N m its drive LTE p-p "
-            f"{' / '.join(f'{x:.1f}' for x in ends)} urad, at most {peak:.1f} over the "
-            f"range: above {limit:g} urad or not judged; the design torque kept at "
-            f"{plain_number(design)} N m")
-        return None
+        said = (f"its drive LTE p-p {' / '.join(f'{x:.1f}' for x in ends)} urad, at most "
+                f"{peak:.1f} over the range")
+        say(f"development: at {plain_number(torque)} N m {said}: above {limit:g} urad or not "
+            f"judged; the design torque kept at {plain_number(design)} N m")
+        # a reading above the limit (not a range left unanalysed) is an LTE miss
+        over = bool(np.nanmax(np.append(ends, peak)) > limit)
+        return None, said if over else ""
     final = float(again.torque[1])
     raised = (f" and raised on that bearing to {plain_number(final)} N m (of "
               f"{plain_number(design)}), where every capacity criterion holds"
@@ -434,13 +514,13 @@ def redeveloped_in_window(run: Callable[[float], Any], setup: dict[str, Any], ba
               f"{_rated_as(setup)} {plain_number(design)} N m the "
               f"written bearing's LTE p-p was {before}, within {limit:g} urad from about "
               f"{plain_number(round(low, 1))} to {plain_number(round(high, 1))} N m only (its "
-              f"light torque a share of the design torque); developed at "
+              f"light torque a share of the design torque); {prior}developed at "
               f"{plain_number(torque)} N m{raised}: {_curve((again.torque, ends))}, "
               f"at most {peak:.1f} urad over ltca run's range ({reading})")
     say(f"  design torque {plain_number(design)} -> {plain_number(final)} N m: {source}")
     return dataclasses.replace(again, basic=given_torque_of(again.basic, basic),
                                torque_source=source, torque_lowered=True,
-                               lte_torque=float(again.torque[1]))
+                               lte_torque=float(again.torque[1])), ""
 
 
 def _range_peak(again: Any) -> float:
@@ -611,7 +691,7 @@ def _unjudged_miss(setup: dict[str, Any], best: DevelopmentEvaluation,
             "values": dict(best.values), "judged": False}
 
 
-def window_name(setup: dict[str, Any]) -> str:
+def window_name(setup: dict[str, Any], middle: tuple[float, str] | None = None) -> str:
     """What the design torque of the drive developed again in the LTE window is, as its
     progress line and the coast design torque's source name it (in place of the "[synthesis]
     design_torque" of a basic file giving one, which the basic file does not give).
@@ -621,12 +701,18 @@ def window_name(setup: dict[str, Any]) -> str:
     setup : dict
         The development's setup; its ``"lte_window"`` (low, high [N·m], the LTE text)
         where :func:`written_lte_capacity` recorded one.
+    middle : (float, str), optional
+        Where the development is one at the window's geometric middle below a torque
+        whose bearing broke the limit (:func:`redeveloped_in_window`): that torque [N·m]
+        and its drive LTE reading in words. Default None: the upper end's development.
 
     Returns
     -------
     str
         ``"the LTE window's upper end: the written drive bearing kept 60 urad from about
-        <low> to <high> N m only"``; empty where no window was recorded.
+        <low> to <high> N m only"`` (``"the LTE window's geometric middle below <T> N m:
+        … only; the drive developed at <T> N m: at <T> N m <reading>"`` with
+        ``middle``); empty where no window was recorded.
 
     Notes
     -----
@@ -638,10 +724,15 @@ def window_name(setup: dict[str, Any]) -> str:
     if window is None:
         return ""
     low, high = float(window[0]), float(window[1])
-    return (f"the LTE window's upper end: the written drive bearing kept "
-            f"{verdict_lte_limit():g} urad at every torque from about "
-            f"{plain_number(round(low, 1))} to {plain_number(round(high, 1))} N m only "
-            "(contact.optimize.development_written_lte)")
+    kept = (f"the written drive bearing kept {verdict_lte_limit():g} urad at every torque "
+            f"from about {plain_number(round(low, 1))} to {plain_number(round(high, 1))} N m "
+            "only")
+    if middle is not None:
+        return (f"the LTE window's geometric middle below {plain_number(middle[0])} N m: "
+                f"{kept}; the drive developed at {plain_number(middle[0])} N m: at "
+                f"{plain_number(middle[0])} N m {middle[1]} "
+                "(contact.optimize.development_written_lte)")
+    return f"the LTE window's upper end: {kept} (contact.optimize.development_written_lte)"
 
 
 def lte_window(torques: Sequence[float], lte: Sequence[float], limit: float

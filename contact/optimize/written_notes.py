@@ -12,7 +12,8 @@ Public names
 ------------
 FACE_CONTACT_RATIO_NOTE, PROFILE_CONTACT_RATIO_NOTE, header_text, noted_case,
 with_record, contact_ratios, low_overlap_lte, reach_text, first_lines, gear_process_note,
-fe_level_notes, synthesis_fe_level, checked_basic_rating
+fe_level_notes, synthesis_fe_level, checked_basic_rating, written_lte_lines,
+written_floor
 """
 
 from __future__ import annotations
@@ -603,7 +604,32 @@ def written_lte_lines(case, development) -> list[str]:
                                              "analysed: %s", exc)
         else:
             drive = {"torques": tuple(found.torques), "lte": tuple(found.lte)}
-    return lte_lines(development, drive_between=drive)
+    return lte_lines(development, drive_between=drive, drive_floor=written_floor(
+        case, development))
+
+
+def written_floor(case, development) -> float:
+    """The written drive flank's load-sharing floor between its light and design torque
+    [µrad] (:func:`contact.optimize.development_lte_floor.load_sharing_floor`, one
+    analysis at ``ltca run``'s sampling) where its LTE p-p misses the development's target
+    at those torques within the verdict's limit; NaN elsewhere or where the analysis fails
+    (logged)."""
+    from contact.optimize.development_lte_floor import load_sharing_floor
+    from contact.study.verdicts import LTE_LIMIT
+    from geometry.core.errors import InputError
+
+    lte = [float(x) for x in development.best.metrics["lte_peak_to_peak"]]
+    worst = max(lte[0], lte[-1])
+    if not float(development.targets.max_lte) < worst <= LTE_LIMIT:
+        return math.nan
+    try:
+        return load_sharing_floor(case, *(float(t) for t in development.torque))
+    except (InputError, ValueError, KeyError) as exc:
+        import logging
+
+        logging.getLogger(__name__).info("the drive LTE's load-sharing floor not "
+                                         "analysed: %s", exc)
+        return math.nan
 
 
 def deflection_note(case, development) -> str | None:

@@ -911,6 +911,30 @@ def bin_table(ds: xr.Dataset) -> list[Mapping[str, Any]]:
     return rows
 
 
+def share_percent(share: float) -> str:
+    """A share of the torque as the percentage text the duty cycle's summary prints.
+
+    Parameters
+    ----------
+    share : float — a fraction of the torque [1] (0.0022 % is 2.2e-5)
+
+    Returns
+    -------
+    str — 100 × ``share`` with two decimals, or with two significant digits where two
+        decimals would print "0.00" (0 < 100 × share < 0.005), without the % sign
+
+    Notes
+    -----
+    Why: a trace edge share was printed as "0.00 %" beside its pressure (issue 71 round 34:
+    the FM hypoid 5×48's top bin read "up to 0.00 % of the torque in bin 2, edge peak
+    pressure up to 1214 MPa"; its share was 0.0022 %).
+    """
+    pct = 100.0 * float(share)
+    if 0.0 < pct < 0.005:
+        return f"{pct:.2g}"
+    return f"{pct:.2f}"
+
+
 def edge_note(ds: xr.Dataset) -> str | None:
     """The sentence a duty cycle's summary prints about its edge contact: edge pressures
     are not counted as pitting damage, with the bins' largest edge share of the torque [%]
@@ -933,7 +957,7 @@ def edge_note(ds: xr.Dataset) -> str | None:
         if trace:
             count += f" ({trace} more {below})"
     return (f"edge contact {count} (up to "
-            f"{100 * share[i]:.2f} % of the torque in bin {i}, edge peak pressure up to "
+            f"{share_percent(share[i])} % of the torque in bin {i}, edge peak pressure up to "
             f"{np.max(peak):.0f} MPa): edge pressures are NOT counted in the pitting damage "
             "(the ISO 6336-2 S-N curve is of Hertzian flank contact; the LTCA caps edges at "
             "the shakedown limit) — judge the edges by their own limit")
