@@ -27,27 +27,57 @@ conjugate: the criterion"):
   Below 1 (a coarse trial that reads higher, the Formate miter 0.06) the search erred on the
   safe side and is not flagged.
 
+* :data:`GENERATED_SHARE_MIN`: the share of the pinion's drive-flank blank grid (41 × 21)
+  the cutter generates (:func:`geometry.machine.flank.flank_surface`, reason 0): the 18
+  bundled cases and the tests' written cases 0.99–1.00 but the spiral bevel 14×35 at Σ 70°
+  (0.83, its ease-off 0.67 valid, analysed); the undeveloped syntheses of 194 of issue 71's
+  unseen designs (benchmarks/data/unseen_designs, 8 more without a synthesis) 0.81–1.00
+  (0.81: the spiral bevel 7×29, analysed, drive LTE 41 µrad) but one: the 1:1 hypoid 15×15
+  (branch ratio95, ε_vβ 0.29), 0.64 developed, 0.67 undeveloped (undercut at the heel's root, no
+  envelope solution towards the toe's tip). Below it the few valid ease-off nodes come from
+  the flank the cutter does not make, not from a mismatch the development or
+  ``--no-development`` would change: the generation limit is said first and the
+  "far from conjugate" note defers to it (docs/synthesis.md, "A pinion not generated over
+  its working depth").
+
 Public names
 ------------
-VALID_NODE_FRACTION_MIN, TRIAL_LTE_FACTOR, Conjugacy, conjugacy, trial_lte_ratio,
-non_conjugate_text, misjudged_trial_text
+VALID_NODE_FRACTION_MIN, TRIAL_LTE_FACTOR, GENERATED_SHARE_MIN, Conjugacy, conjugacy,
+Generation, generation, TeethCheck, teeth_for_generation, trial_lte_ratio,
+non_conjugate_text, generation_limit_text, misjudged_trial_text
 """
 
 from __future__ import annotations
 
+import dataclasses
+import logging
 import math
+import time
 from typing import Any, NamedTuple
 
 import numpy as np
 
 from geometry.case import Case
 
-__all__ = ["TRIAL_LTE_FACTOR", "VALID_NODE_FRACTION_MIN", "Conjugacy", "conjugacy", "conjugacy_of",
-           "misjudged_trial_text", "non_conjugate_text", "trial_lte_ratio"]
+__all__ = ["GENERATED_SHARE_MIN", "TRIAL_LTE_FACTOR", "VALID_NODE_FRACTION_MIN", "Conjugacy",
+           "Generation", "TeethCheck", "checked_teeth_text", "conjugacy", "conjugacy_of",
+           "generation", "generation_limit_text", "misjudged_trial_text", "non_conjugate_text",
+           "teeth_for_generation", "teeth_text", "trial_lte_ratio"]
 
 #: least share [1] of valid ease-off nodes of flanks that are near conjugate (module
 #: docstring: 0.65-0.84 on every working case measured, 0.19 on the non-conjugate one)
 VALID_NODE_FRACTION_MIN = 0.5
+
+#: least share [1] of the pinion's drive-flank blank grid the cutter generates on a pinion
+#: taken as generated over its working depth (module docstring: 0.99-1.00 on every bundled
+#: case, 0.81-1.00 on 194 unseen designs but the 15x15 hypoid of issue 71, 0.64 / 0.67)
+GENERATED_SHARE_MIN = 0.75
+
+#: pinion tooth counts tried above the design's by :func:`teeth_for_generation` (steps of
+#: 5, at most 6 syntheses of 2-5 s each)
+TEETH_STEP, TEETH_TRIALS = 5, 6
+
+log = logging.getLogger(__name__)
 
 #: largest ratio [1] of the checked LTE p-p to the coarse trial's of one design that the
 #: development's search is taken to have judged right (module docstring: 99 % within 1.39)
@@ -131,6 +161,252 @@ def conjugacy_of(eo: Any) -> Conjugacy:
     valid = eo.valid
     span = (1e3 * float(np.max(eo.ease_off[valid])) if valid.any() else math.nan)
     return Conjugacy(int(np.count_nonzero(valid)), int(valid.size), span)
+
+
+class Generation(NamedTuple):
+    """How much of the pinion's working flank its cutter generates (:func:`generation`)."""
+
+    flank: str  # the pinion flank ("concave" / "convex")
+    generated: int  # [1] grid points the cutter generates (reason 0)
+    nodes: int  # [1] points of the blank's projection-plane grid
+    undercut: int  # [1] points cut away beyond the envelope's singular line
+    no_envelope: int  # [1] points no smooth blade section generates
+    undercut_u: float  # [1] mean lengthwise fraction of the undercut points (NaN: none)
+    no_envelope_u: float  # [1] mean lengthwise fraction of the no-envelope points (NaN: none)
+
+    @property
+    def fraction(self) -> float:
+        """Share [1] of generated points."""
+        return self.generated / self.nodes if self.nodes else 0.0
+
+    @property
+    def complete(self) -> bool:
+        """At least :data:`GENERATED_SHARE_MIN` of the blank's grid generated."""
+        return self.fraction >= GENERATED_SHARE_MIN
+
+
+def generation(case: Case, flank: str = "drive") -> Generation:
+    """How much of the pinion's working flank (``flank``'s role) its cutter generates.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    flank : str
+        ``"drive"`` (default) or ``"coast"``.
+
+    Returns
+    -------
+    Generation
+        The generated points of the pinion flank's 41 × 21 projection-plane grid over its
+        blank (seed §2.2) and the counts of the two reasons that leave a point ungenerated
+        here (undercut, no envelope solution), with where along the face they lie.
+
+    Raises
+    ------
+    InputError
+        A bad ``flank`` (the accepted names), or settings with no envelope inside the
+        blank (:func:`geometry.machine.flank.flank_surface`).
+
+    Notes
+    -----
+    :func:`geometry.machine.flank.flank_surface` (memoised per case) and its mask reasons
+    (:data:`geometry.machine.meshing.REASONS`); the criterion :data:`GENERATED_SHARE_MIN`
+    is calibrated in the module docstring. CPU 0.1-0.5 s.
+    """
+    from contact.utca.easeoff import working_flanks
+    from geometry.machine.flank import flank_surface
+
+    pinion_flank, _ = working_flanks(case, flank)
+    fs = flank_surface(case, "pinion", pinion_flank)
+    reason = np.asarray(fs.reason)
+    u = np.broadcast_to(np.linspace(0.0, 1.0, reason.shape[0])[:, None], reason.shape)
+
+    def mean_u(code: int) -> float:
+        at = reason == code
+        return float(np.mean(u[at])) if at.any() else math.nan
+
+    return Generation(pinion_flank, int(np.count_nonzero(reason == 0)), int(reason.size),
+                      int(np.count_nonzero(reason == 4)), int(np.count_nonzero(reason == 1)),
+                      mean_u(4), mean_u(1))
+
+
+class TeethCheck(NamedTuple):
+    """The least tooth count :func:`teeth_for_generation` found with a complete pinion."""
+
+    z1: int  # [1] pinion teeth
+    z2: int  # [1] gear teeth (the ratio kept)
+    generated: float  # [1] share of the pinion's drive-flank blank grid generated
+    valid: float  # [1] share of valid ease-off nodes
+    tried: tuple[str, ...]  # the counts tried before it, each with why it was not kept
+    seconds: float  # [s] CPU of the search
+
+
+def teeth_for_generation(basic, current: int | None = None) -> TeethCheck | None:
+    """The least pinion tooth count (same size, ratio kept) whose synthesis generates the
+    pinion's drive flank over its working depth, meets near conjugate and can be analysed.
+
+    Parameters
+    ----------
+    basic : geometry.synthesis.basic_design.BasicDesign
+        The basic file's data (its own prescriptions: the ``--no-development`` synthesis).
+    current : int, optional
+        The pinion tooth count to start above (default ``basic.design.z1``).
+
+    Returns
+    -------
+    TeethCheck or None
+        The first of z1 + 5, z1 + 10, … (at most :data:`TEETH_TRIALS`; z2 = round(z1 u))
+        whose synthesis has at least :data:`GENERATED_SHARE_MIN` of its pinion drive flank
+        generated, at least :data:`VALID_NODE_FRACTION_MIN` valid ease-off nodes and an
+        unloaded cycle ``ltca run`` computes; None where none of them has.
+
+    Notes
+    -----
+    One :func:`geometry.synthesis.case_synthesis.synthesize` (``tip_planes=False``) per
+    count, 2-5 s of CPU each on the 2-core machine; the checks are :func:`generation`,
+    :func:`conjugacy` and :func:`contact.optimize.written_contact.
+    unloaded_contact_failure`. Measured on the 15x15 hypoid of issue 71 (docs/synthesis.md,
+    'A pinion not generated over its working depth'): 20 and 25 teeth generated but far
+    from conjugate, 30 or 35 kept.
+    """
+    from contact.optimize.written_contact import unloaded_contact_failure
+    from geometry.core.errors import LTCAError
+    from geometry.synthesis.case_synthesis import synthesize
+
+    t0 = time.process_time()
+    design = basic.design
+    z1 = int(design.z1 if current is None else current)
+    ratio = design.z2 / design.z1
+    tried: list[str] = []
+    for k in range(1, TEETH_TRIALS + 1):
+        n1 = z1 + k * TEETH_STEP
+        n2 = max(n1, round(n1 * ratio))
+        if n2 > 500:
+            break
+        try:
+            changed = dataclasses.replace(basic, design=dataclasses.replace(design, z1=n1,
+                                                                            z2=n2))
+            case = synthesize(changed, tip_planes=False)[0]
+            gen = generation(case)
+            eo = conjugacy(case)
+            lost = (unloaded_contact_failure(case, "drive")
+                    if gen.complete and eo.near else None)
+        except (LTCAError, ValueError, ArithmeticError) as exc:
+            log.info("%dx%d not checked: %s", n1, n2, exc)
+            tried.append(f"{n1}x{n2}: no synthesis")
+            continue
+        if not gen.complete:
+            tried.append(f"{n1}x{n2}: pinion generated {100 * gen.fraction:.0f} %")
+        elif not eo.near:
+            tried.append(f"{n1}x{n2}: far from conjugate, {100 * eo.fraction:.0f} % valid "
+                         "ease-off nodes")
+        elif lost is not None:
+            tried.append(f"{n1}x{n2}: unloaded contact not computed")
+        else:
+            return TeethCheck(n1, n2, gen.fraction, eo.fraction, tuple(tried),
+                              time.process_time() - t0)
+    return None
+
+
+def teeth_text(found: TeethCheck | None, z1: int, z2: int, seconds: float = math.nan) -> str:
+    """The checked tooth count in words, for :func:`generation_limit_text`'s lever.
+
+    Parameters
+    ----------
+    found : TeethCheck or None
+        :func:`teeth_for_generation`'s answer.
+    z1, z2 : int
+        The design's tooth counts [1].
+    seconds : float
+        [s] CPU of a search that found none (NaN: not measured).
+
+    Returns
+    -------
+    str
+        "; checked by a synthesis …: z1 … and z2 …" or "; no count from … checked …".
+    """
+    if found is None:
+        return (f"; no count from {z1 + TEETH_STEP} to {z1 + TEETH_TRIALS * TEETH_STEP} "
+                "pinion teeth checked by a synthesis here generates it and meets near "
+                f"conjugate ({seconds:.0f} s of CPU)")
+    before = f"; not {', '.join(found.tried)}" if found.tried else ""
+    return (f"; checked by a synthesis at the file's prescriptions: z1 {found.z1} and z2 "
+            f"{found.z2} (now {z1} and {z2}) generate {100 * found.generated:.0f} % of it, "
+            f"{100 * found.valid:.0f} % valid ease-off nodes, an unloaded cycle `ltca run` "
+            f"computes{before} ({found.seconds:.0f} s of CPU)")
+
+
+def checked_teeth_text(basic) -> str:
+    """:func:`teeth_for_generation` of ``basic`` in words (:func:`teeth_text`).
+
+    Parameters
+    ----------
+    basic : geometry.synthesis.basic_design.BasicDesign
+
+    Returns
+    -------
+    str
+        The lever's check, for :func:`generation_limit_text`'s ``teeth``.
+    """
+    t0 = time.process_time()
+    found = teeth_for_generation(basic)
+    return teeth_text(found, int(basic.design.z1), int(basic.design.z2),
+                      time.process_time() - t0)
+
+
+def _end(u: float) -> str:
+    """"toe", "heel" or "mid-face" for a mean lengthwise fraction [1]."""
+    return "toe" if u < 0.4 else ("heel" if u > 0.6 else "mid-face")
+
+
+def generation_limit_text(found: Generation, valid: Conjugacy | None = None,
+                          teeth: str = "") -> str | None:
+    """``ltca synthesize``'s first note where the pinion's drive flank is not generated over
+    its working depth (fewer than :data:`GENERATED_SHARE_MIN` of its blank's grid).
+
+    Parameters
+    ----------
+    found : Generation
+        The written case's pinion drive flank (:func:`generation`).
+    valid : Conjugacy, optional
+        Its ease-off's valid nodes (:func:`conjugacy`), named as a consequence, not as a
+        mismatch of the synthesis.
+    teeth : str
+        :func:`teeth_text` of the tooth count checked (default: none checked, the lever
+        named as a trial).
+
+    Returns
+    -------
+    str or None
+        The finding, what it does to the analysis, and why neither the development nor
+        ``--no-development`` is the remedy; None where the flank is generated over at least
+        :data:`GENERATED_SHARE_MIN` of its blank.
+    """
+    if found.complete:
+        return None
+    parts = []
+    if found.undercut:
+        parts.append(f"undercut over {found.undercut} points (towards the "
+                     f"{_end(found.undercut_u)}, at the root)")
+    if found.no_envelope:
+        parts.append(f"no envelope solution over {found.no_envelope} points (towards the "
+                     f"{_end(found.no_envelope_u)})")
+    why = f" ({', '.join(parts)})" if parts else ""
+    eo = ("" if valid is None else
+          f"; the ease-off's {valid.valid} of {valid.nodes} valid nodes "
+          f"({100 * valid.fraction:.0f} %) are not read as a mismatch of the synthesis while "
+          "the flank is incomplete, and `ltca synthesize --no-development` (the bearing's "
+          "prescriptions) is not the step to take: the blank is changed first")
+    return (f"the pinion's drive flank ({found.flank}) is not generated over its working "
+            f"depth: its cutter generates {found.generated} of the blank's {found.nodes} grid "
+            f"points ({100 * found.fraction:.0f} %, at least "
+            f"{100 * GENERATED_SHARE_MIN:.0f} %; 99-100 % on every bundled case){why}: the "
+            "contact, its unloaded TE and the root stress are not modelled where the flank is "
+            "missing (`ltca run` leaves the root stress out), and no bearing prescription "
+            f"changes it{eo}; the blank is the lever: more teeth at the same size (a smaller "
+            "module)"
+            + (teeth or ", checked by `ltca synthesize --no-development` of the changed file")
+            + " (docs/synthesis.md, 'A pinion not generated over its working depth')")
 
 
 def trial_lte_ratio(development: Any) -> tuple[float, float, float] | None:

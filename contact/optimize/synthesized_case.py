@@ -227,7 +227,7 @@ def synthesize_case(basic, *, fe_level: str | None = None, development: bool = T
     # a case no analysis accepts is not written: its drive flank's unloaded contact
     # computed as `ltca run` computes it first (the 12x12 miter with a 5-in cutter of
     # round 17 was written and then refused); the coast flank's noted
-    coast = checked_contact(case, basic.design)
+    coast = checked_contact(case, basic.design, basic)
     case, ratios, notes, record = noted_case(basic, case, found)
     notes += coast + fe_level_notes(found, case)
     text = header_text(shown, case.gear.process) + case.to_toml()

@@ -16,8 +16,10 @@ from __future__ import annotations
 def unloaded_contact_failure(case, flank: str = "drive") -> str | None:
     """Why the unloaded contact of one flank of ``case`` cannot be computed, or None where
     it can: the ease-off (:func:`contact.utca.easeoff.ease_off`, the case's own
-    misalignment) and its splines (:func:`contact.utca.fields.fields_of`), the first steps
-    of ``ltca run``'s and ``ltca utca``'s analysis, which raise the same errors.
+    misalignment), its splines (:func:`contact.utca.fields.fields_of`) and the unloaded
+    cycle (:func:`contact.utca.datasets.unloaded_tca` as ``ltca run``'s chain calls it:
+    a roll where no tooth pair is in contact), the first steps of ``ltca run``'s and
+    ``ltca utca``'s analysis, which raise the same errors.
 
     Parameters
     ----------
@@ -46,6 +48,7 @@ def unloaded_contact_failure(case, flank: str = "drive") -> str | None:
     0.20 s (the 12×12 miter's refusal), 0.24 s (the default 11×41 without the
     development), 0.18 s (after its development, of 40.7 s).
     """
+    from contact.utca.datasets import unloaded_tca
     from contact.utca.easeoff import ease_off
     from contact.utca.fields import fields_of
     from geometry.core.errors import InputError, ModelUnavailableError
@@ -53,13 +56,20 @@ def unloaded_contact_failure(case, flank: str = "drive") -> str | None:
     if flank not in ("drive", "coast"):
         raise InputError(f"flank: must be 'drive' or 'coast', got {flank!r}")
     try:
-        fields_of(ease_off(case, flank=flank))
+        eo = ease_off(case, flank=flank)
+        fields_of(eo)
+        # the unloaded cycle as `ltca run`'s chain computes it (its defaults, memoised):
+        # the 15x15 hypoid's --no-development case had an ease-off and its splines, and
+        # `ltca run` then stopped at "no tooth pair in contact at roll 0.414909 rad"
+        # (issue 71, branch ratio95: its pinion's drive flank generated over 67 % of
+        # the blank)
+        unloaded_tca(case, flank=flank, easeoff=eo)
     except (ValueError, ModelUnavailableError) as exc:  # InputError is a ValueError
         return str(exc)
     return None
 
 
-def refusal_text(case, design, why: str) -> str:
+def refusal_text(case, design, why: str, basic=None) -> str:
     """``ltca synthesize``'s error where the drive flank's unloaded contact of the case it
     made cannot be computed: what failed, that no case is written, and the remedies the
     notes know — the contact ratios below their limits with the basic-file changes that
@@ -74,6 +84,10 @@ def refusal_text(case, design, why: str) -> str:
         The basic design's ISO 23509 data (``rc0`` [mm], for the contact ratios).
     why : str
         :func:`unloaded_contact_failure`'s message.
+    basic : geometry.synthesis.basic_design.BasicDesign, optional
+        The basic data: where the pinion's drive flank is not generated over its working
+        depth (said first, "First: …"), the tooth count that generates it is checked by
+        syntheses of it (:func:`contact.optimize.development_conjugacy.checked_teeth_text`).
 
     Returns
     -------
@@ -101,6 +115,7 @@ def refusal_text(case, design, why: str) -> str:
         ratios = low_ratio_text(design, FACE_CONTACT_RATIO_NOTE, PROFILE_CONTACT_RATIO_NOTE)
     except (InputError, ValueError, ZeroDivisionError):
         ratios = None
+    limited = _generation_cause(case, basic)
     changes = [ratios] if ratios else []
     rc0 = getattr(design, "rc0", None)
     if rc0 is not None:
@@ -108,8 +123,34 @@ def refusal_text(case, design, why: str) -> str:
                        "lengthwise curvature and the bearing's path follow it)")
     return (f"the unloaded contact of the synthesised case's drive flank "
             f"(pinion {flank}) cannot be computed, so `ltca run` and `ltca utca` would "
-            f"refuse the case: {why}; no case written. Changes to try: "
+            f"refuse the case: {why}; no case written. "
+            + ("" if limited is None else f"First: {limited}. ")
+            + "Changes to try: "
             + "; ".join(changes) + " (docs/own_gear_set.md, round 17)")
+
+
+def _generation_cause(case, basic=None) -> str | None:
+    """The generation limit of the case's pinion drive flank in words
+    (:func:`contact.optimize.development_conjugacy.generation_limit_text`), said before the
+    changes to try; None where the flank is generated over its working depth or cannot be
+    generated at all. Found on the 15x15 hypoid of issue 71 (branch ratio95): its
+    ``--no-development`` case lost contact at a roll, its pinion's drive flank generated
+    over 67 % of the blank."""
+    from contact.optimize.development_conjugacy import (
+        checked_teeth_text,
+        generation,
+        generation_limit_text,
+    )
+    from geometry.core.errors import InputError, ModelUnavailableError
+
+    try:
+        found = generation(case)
+    except (InputError, ModelUnavailableError):
+        return None
+    if found.complete:
+        return None
+    return generation_limit_text(found, None,
+                                 "" if basic is None else checked_teeth_text(basic))
 
 
 def coast_note(case) -> str | None:
@@ -136,7 +177,7 @@ def coast_note(case) -> str | None:
             "--flank coast` refuses the case (the drive flank is analysed)")
 
 
-def checked_contact(case, design) -> list[str]:
+def checked_contact(case, design, basic=None) -> list[str]:
     """``ltca synthesize``'s check of the case it is about to write: refused where its
     drive flank's unloaded contact cannot be computed (:func:`unloaded_contact_failure`,
     :func:`refusal_text`), the coast flank's failure a note.
@@ -145,6 +186,8 @@ def checked_contact(case, design) -> list[str]:
     ----------
     case : geometry.case.Case
     design : geometry.iso23509.design_data.BevelGearDesign
+    basic : geometry.synthesis.basic_design.BasicDesign, optional
+        For :func:`refusal_text`'s checked lever.
 
     Returns
     -------
@@ -165,6 +208,6 @@ def checked_contact(case, design) -> list[str]:
 
     why = unloaded_contact_failure(case, "drive")
     if why is not None:
-        raise InputError(refusal_text(case, design, why))
+        raise InputError(refusal_text(case, design, why, basic))
     coast = coast_note(case)
     return [] if coast is None else [coast]

@@ -295,7 +295,10 @@ def _lte_notes(basic, case, development, ratios) -> tuple[list[str], object]:
     """
     lines: list[str] = []
     record = None
-    far, misjudged = _conjugacy_notes(case, development, ratios)
+    limited = _generation_note(case, basic)
+    if limited is not None:  # said first: the flank the contact needs is not there
+        lines.append(limited)
+    far, misjudged = _conjugacy_notes(case, development, ratios, limited is None)
     if far is not None:
         lines.append(far)
     elif ratios is not None and (ratios[1] < FACE_CONTACT_RATIO_NOTE
@@ -675,11 +678,40 @@ def deflection_note(case, development) -> str | None:
                                                   float(gear.pitch_angle)))
 
 
-def _conjugacy_notes(case, development, ratios) -> tuple[str | None, str | None]:
+def _generation_note(case, basic=None) -> str | None:
+    """``ltca synthesize``'s first note where the written pinion's drive flank is not
+    generated over its working depth (:func:`contact.optimize.development_conjugacy.
+    generation_limit_text`, with and without the development), its lever (more teeth)
+    checked by syntheses of ``basic`` where given (:func:`~contact.optimize.
+    development_conjugacy.checked_teeth_text`); None where it is, or where the flank cannot
+    be generated at all (the analysis' own check says so)."""
+    from contact.optimize.development_conjugacy import (
+        checked_teeth_text,
+        conjugacy,
+        generation,
+        generation_limit_text,
+    )
+    from geometry.core.errors import InputError, ModelUnavailableError
+
+    try:
+        found = generation(case)
+    except (InputError, ModelUnavailableError):
+        return None
+    if found.complete:
+        return None
+    teeth = "" if basic is None else checked_teeth_text(basic)
+    return generation_limit_text(found, conjugacy(case), teeth)
+
+
+def _conjugacy_notes(case, development, ratios, generated: bool = True
+                     ) -> tuple[str | None, str | None]:
     """(flanks far from conjugate, coarse trial misjudged): ``ltca synthesize``'s notes of
     a developed case whose drive LTE p-p is above the verdict's limit
     (:mod:`contact.optimize.development_conjugacy`: the criteria and their calibration),
-    each None where it does not apply; the first replaces the contact-ratio note."""
+    each None where it does not apply; the first replaces the contact-ratio note. Where
+    the pinion's drive flank is not ``generated`` over its working depth the first is
+    None: the generation limit (:func:`_generation_note`) is the cause of the few valid
+    ease-off nodes, said before the contact ratios (issue 71, the 15x15 hypoid)."""
     if development is None:
         return None, None
     from contact.optimize.development_conjugacy import (
@@ -690,7 +722,7 @@ def _conjugacy_notes(case, development, ratios) -> tuple[str | None, str | None]
     from contact.study.verdicts import LTE_LIMIT
 
     far = None
-    if float(max(development.best.metrics["lte_peak_to_peak"])) > LTE_LIMIT:
+    if generated and float(max(development.best.metrics["lte_peak_to_peak"])) > LTE_LIMIT:
         far = non_conjugate_text(conjugacy(case), ratios)
     return far, misjudged_trial_text(development)
 
