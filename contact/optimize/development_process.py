@@ -20,13 +20,16 @@ Formate design's (:class:`Outclassed`): it could only rank below it (issue 75). 
 Formate development itself stops at its static-capacity step where the upper estimate of its
 bearing's local pitting capacity (no FE) is already below :data:`FORESEEN_CUT_MARGIN` ×
 :data:`TORQUE_CUT_FRACTION` × the rated torque (:class:`CutForeseen`): its outcome would be a
-design torque cut, and the generated gear is developed at once; only where that fails too is
-the Formate development run in full, so the design kept is the one the two full
-developments rank first (issue 71/75: the spiral bevel 14x36 at Σ 70°). A design torque
-the drive LTE window lowered (:mod:`contact.optimize.development_written_lte`) is the
-contact ratio's, not the gear process's: a cut is judged against it
-(:func:`cut_reference`), and a design within ``ltca run``'s LTE limit ranks above one
-beyond it (:func:`lte_over`; the FM spiral bevel 17x23, issue 71, branch half88).
+design torque cut, and the generated gear is developed at once — as where the static-capacity
+step has lowered the design torque below half the rated one already
+(:func:`static_cut_foreseen`: the torque is only lowered from there; the FM miter 18x18,
+branch cpu95); only where that fails too is the Formate development run in full, so the
+design kept is the one the two full developments rank first (issue 71/75: the spiral bevel
+14x36 at Σ 70°). A design torque the drive LTE window lowered
+(:mod:`contact.optimize.development_written_lte`) is the contact ratio's, not the gear
+process's: a cut is judged against it (:func:`cut_reference`), and a design within ``ltca
+run``'s LTE limit ranks above one beyond it (:func:`lte_over`; the FM spiral bevel 17x23,
+issue 71, branch half88).
 
 Public names
 ------------
