@@ -406,3 +406,151 @@ def test_a_cut_foreseen_at_the_check_gives_the_same_choice(monkeypatch):
     kept = with_generated_gear(failing, basic)
     assert given == [("auto", {"foresee_cut": True}), ("Generate", BOUND), ("auto", {})]
     assert kept is not formate and kept.torque[1] == 102.3
+
+
+#: the FM miter 18x18 by Method 0 (benchmarks/data/unseen_designs/
+#: spiral_bevel_18x18_miter_m0.toml, round 33): its Formate gear's rated torque (the ISO
+#: 10300 capacity) and the static capacity its developed bearing was lowered to, N m
+MITER_RATED, MITER_STATIC = 636.1, 130.0
+
+
+def test_a_static_capacity_below_half_the_rated_torque_foresees_the_cut():
+    """Branch cpu95: ``static_cut_foreseen`` is ``static < TORQUE_CUT_FRACTION x rated``
+    with no margin — the static capacity bounds the design torque from above (the
+    development only lowers it after a cut), it is no estimate. The miter's 130 of 636.1
+    N m (half: 318.05) is foreseen; 0.1 N m either side of half decides exactly; an unknown
+    rated torque (NaN: already lowered before the step) or a non-finite capacity never."""
+    from contact.optimize.development_process import static_cut_foreseen
+
+    half = TORQUE_CUT_FRACTION * MITER_RATED
+    assert half == pytest.approx(318.05, abs=1e-9)
+    assert static_cut_foreseen(MITER_STATIC, MITER_RATED)
+    assert static_cut_foreseen(half - 0.1, MITER_RATED)
+    assert not static_cut_foreseen(half + 0.1, MITER_RATED)
+    assert not static_cut_foreseen(half, MITER_RATED)  # at half: no cut (cut_below's <)
+    assert not static_cut_foreseen(MITER_STATIC, math.nan)
+    assert not static_cut_foreseen(math.nan, MITER_RATED)
+    # the 14x36's static capacity (319.5 of 361.8 N m) is no such stop: its pitting bound
+    # decides there (the tests above)
+    assert not static_cut_foreseen(STATIC, RATED)
+
+
+def _static_stand_ins(monkeypatch, *, static: float | None, rated: float, process="Formate"):
+    """``_at_capacity`` with the static capacity lowering the rated torque to ``static``
+    (None: not lowered); the LTE capacity, the pitting step, the bound (inf: no
+    pitting stop) and the steps recorded."""
+    calls: list[str] = []
+    case = types.SimpleNamespace(gear=types.SimpleNamespace(process=process))
+    chosen = DevelopmentEvaluation(0, {}, {}, 1.0, {}, False, "", 0.0, case=case,
+                                   full=(1.0, {}, False), checked=True)
+
+    def lowered(best, targets, setup, teeth, say):
+        if static is not None:
+            setup.update(torques=[0.15 * static, static], lowered=True)
+        return best
+
+    def lte(best, *a):
+        calls.append("lte capacity")
+        return best
+
+    def bound_at(case, torques, measured=False):
+        calls.append(f"bound at {torques[1]:g}")
+        return math.inf
+
+    monkeypatch.setattr(development, "static_capacity", lowered)
+    monkeypatch.setattr(development, "lte_capacity", lte)
+    monkeypatch.setattr(development, "checked_pitting", lambda best, *a, **k: best)
+    monkeypatch.setattr(development_root, "pitting_capacity_bound", bound_at)
+
+    def run(foresee: bool):
+        setup = {"torques": [0.15 * rated, rated], "lowered": False}
+        said: list[str] = []
+
+        def steps(best):
+            calls.append("steps")
+            return best
+
+        development._at_capacity(chosen, None, setup, None, said.append, steps, None, {},
+                                 math.nan, foresee)
+        return said
+
+    return calls, run
+
+
+def test_a_formate_development_stops_where_its_static_capacity_is_below_half(monkeypatch):
+    """The miter's Formate bearing lowered to its static capacity 130 of 636.1 N m stops
+    there (CutForeseen, bound "static", stage AT_STATIC, its torque the static capacity):
+    no LTE capacity, no pitting bound (its analysis lost contact on the miter), no steps.
+    Where the static capacity is half the rated torque or more (320 N m), or the step does
+    not lower it, the development goes on as before (the pitting bound, then the steps);
+    without ``foresee_cut`` or with a generated gear nothing is foreseen."""
+    from contact.optimize.development_process import AT_STATIC
+
+    calls, run = _static_stand_ins(monkeypatch, static=MITER_STATIC, rated=MITER_RATED)
+    with pytest.raises(CutForeseen) as info:
+        run(True)
+    assert calls == []
+    stop = info.value
+    assert (stop.torque, stop.rated, stop.stage, stop.bound) == (
+        MITER_STATIC, MITER_RATED, AT_STATIC, "static")
+    assert stop.said() == ("its flank's static capacity 130 N m, below 0.5 of its rated "
+                           "636.1 N m")
+    calls, run = _static_stand_ins(monkeypatch, static=320.0, rated=MITER_RATED)
+    run(True)
+    assert calls == ["lte capacity", "bound at 320", "steps"]
+    calls, run = _static_stand_ins(monkeypatch, static=None, rated=MITER_RATED)
+    run(True)
+    assert calls == ["lte capacity", f"bound at {MITER_RATED:g}"]
+    calls, run = _static_stand_ins(monkeypatch, static=MITER_STATIC, rated=MITER_RATED)
+    run(False)
+    assert calls == ["lte capacity", "steps"]
+    calls, run = _static_stand_ins(monkeypatch, static=MITER_STATIC, rated=MITER_RATED,
+                                   process="Generate")
+    run(True)
+    assert calls == ["lte capacity", "steps"]
+
+
+def test_a_static_stop_keeps_the_generated_gear_where_it_fails_nothing(monkeypatch):
+    """After the static stop, ``with_generated_gear`` develops the generated gear at once,
+    stopped below the static capacity (``outclassed_below`` 130 N m: a generated design
+    below it could rank under the Formate's, which only the full Formate development
+    tells), and keeps it where it fails nothing — the miter's generated gear at 317.5 N m
+    (its LTE window's torque) — its text naming the static capacity; where it fails too,
+    the Formate gear is developed in full and the two ranked (as after a pitting stop)."""
+    import contact.load_capacity.iso10300.capacity as capacity
+    from contact.optimize.development_process import AT_STATIC
+
+    monkeypatch.setattr(capacity, "with_design_torque",
+                        lambda case, t: (case, MITER_RATED, ""))
+    basic = load_basic(UNSEEN / "spiral_bevel_18x18_miter_m0.toml")
+    given: list = []
+    formate = _outcome("Formate", torque=MITER_STATIC)
+
+    def runner(generated):
+        def run(b, **kw):
+            given.append((b.options.gear_process, kw))
+            if b.options.gear_process == "Generate":
+                return generated
+            if kw.get("foresee_cut"):
+                raise CutForeseen(MITER_STATIC, MITER_RATED, AT_STATIC, bound="static")
+            return formate
+        return run
+
+    lines: list[str] = []
+    kept = with_generated_gear(runner(replace(_outcome("Generate", torque=317.5),
+                                              lte_torque=317.5)), basic, lines.append)
+    assert given == [("auto", {"foresee_cut": True}),
+                     ("Generate", {"outclassed_below": MITER_STATIC})]
+    assert kept.report.gear.settings.process == "Generate"
+    assert kept.gear_process_text.startswith(
+        "Gear process (auto): generated. The Formate gear's development was stopped at its "
+        "static capacity, before the steps at the lowered torque, its flank's static "
+        "capacity 130 N m, below 0.5 of its rated 636.1 N m (a design torque cut, a failed "
+        "outcome: contact.optimize.development_process.static_cut_foreseen)")
+    assert lines[0].startswith("development: the Formate gear's flank's static capacity is "
+                               "130 N m, below 0.5 of its rated 636.1 N m")
+    given.clear()
+    kept = with_generated_gear(runner(_outcome("Generate", torque=100.0)), basic)
+    assert given == [("auto", {"foresee_cut": True}),
+                     ("Generate", {"outclassed_below": MITER_STATIC}), ("auto", {})]
+    assert kept is not None and kept.torque[1] == MITER_STATIC  # both cut: the higher

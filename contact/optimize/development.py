@@ -1528,6 +1528,8 @@ def _at_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     foresee = foresee_cut and _formate(best.case)
     rated = _rated(setup)
     best = static_capacity(best, targets, setup, teeth, say)
+    if foresee:  # the static capacity itself below half the rated torque (branch cpu95)
+        _static_cut_foreseen(setup, rated, say)
     # where the chosen design's LTE still FAILs ltca run's verdict (no design checked
     # passed it: the 16x16 at Sigma 60 deg, 122 urad at its ISO capacity), the torque
     # up to which its bearing keeps the verdict's limit (development_lte_capacity)
@@ -1589,6 +1591,32 @@ def _cut_foreseen_at_check(best: DevelopmentEvaluation, basic: BasicDesign,
     if foresee and not basic.gives_design_torque and _formate(best.case):
         _cut_foreseen(best.case, setup, _rated(setup), say, stage=AT_CHECK,
                       margin=AT_CHECK_MARGIN)
+
+
+def _static_cut_foreseen(setup: dict[str, Any], rated: float,
+                         say: Callable[[str], None]) -> None:
+    """Raise :class:`~contact.optimize.development_process.CutForeseen` (bound
+    ``"static"``, stage :data:`~contact.optimize.development_process.AT_STATIC`) where the
+    static-capacity step lowered the design torque ``setup["torques"][1]`` [N·m] below
+    half the rated ``rated`` [N·m]
+    (:func:`~contact.optimize.development_process.static_cut_foreseen`): the design torque
+    the development would end at is at most that, a cut, so neither the steps at the
+    lowered torque, the coast flank, the synthesis nor the FE build are run for it (the FM
+    miter 18x18's Formate gear, static capacity 130 of 636.1 N m: about half its
+    synthesize CPU, docs/performance.md). No analysis is made (the local pitting bound
+    :func:`_cut_foreseen` takes after it needs one, and lost contact on that miter)."""
+    from contact.optimize.development_process import (
+        AT_STATIC,
+        CutForeseen,
+        static_cut_foreseen,
+    )
+
+    torque = float(setup["torques"][1])
+    if setup.get("lowered") and static_cut_foreseen(torque, rated):
+        say(f"  the flank's static capacity {plain_number(torque)} N m is below half the rated "
+            f"{plain_number(rated)} N m (the design torque is only lowered from here): a design "
+            "torque cut foreseen, stopped at its static capacity")
+        raise CutForeseen(torque, rated, AT_STATIC, bound="static")
 
 
 def _cut_foreseen(case: Case | None, setup: dict[str, Any], rated: float,

@@ -20,19 +20,23 @@ Formate design's (:class:`Outclassed`): it could only rank below it (issue 75). 
 Formate development itself stops at its static-capacity step where the upper estimate of its
 bearing's local pitting capacity (no FE) is already below :data:`FORESEEN_CUT_MARGIN` ×
 :data:`TORQUE_CUT_FRACTION` × the rated torque (:class:`CutForeseen`): its outcome would be a
-design torque cut, and the generated gear is developed at once; only where that fails too is
-the Formate development run in full, so the design kept is the one the two full
-developments rank first (issue 71/75: the spiral bevel 14x36 at Σ 70°). A design torque
-the drive LTE window lowered (:mod:`contact.optimize.development_written_lte`) is the
-contact ratio's, not the gear process's: a cut is judged against it
-(:func:`cut_reference`), and a design within ``ltca run``'s LTE limit ranks above one
-beyond it (:func:`lte_over`; the FM spiral bevel 17x23, issue 71, branch half88).
+design torque cut, and the generated gear is developed at once — as where the static-capacity
+step has lowered the design torque below half the rated one already
+(:func:`static_cut_foreseen`: the torque is only lowered from there; the FM miter 18x18,
+branch cpu95); only where that fails too is the Formate development run in full, so the
+design kept is the one the two full developments rank first (issue 71/75: the spiral bevel
+14x36 at Σ 70°). A design torque the drive LTE window lowered
+(:mod:`contact.optimize.development_written_lte`) is the contact ratio's, not the gear
+process's: a cut is judged against it (:func:`cut_reference`), and a design within ``ltca
+run``'s LTE limit ranks above one beyond it (:func:`lte_over`; the FM spiral bevel 17x23,
+issue 71, branch half88).
 
 Public names
 ------------
 TORQUE_CUT_FRACTION   design torque below this share of the rated one: a failed outcome
 FORESEEN_CUT_MARGIN   the share of that torque a Formate pitting bound must fall below
 cut_foreseen          whether a pitting bound foresees the Formate design's torque cut
+static_cut_foreseen   whether the flank's static capacity foresees it (an upper bound)
 CutForeseen           a Formate development stopped there
 failed_outcome        why a developed design fails its own check (empty where it does not)
 cut_reference         the torque a cut is judged against: the rated one or the LTE window's
@@ -58,10 +62,10 @@ from contact.ltca.plausibility import LTE_SPREAD_LIMIT, PLASTIC_SHARE_LIMIT
 from geometry.core.errors import InputError
 from geometry.core.text import plain_number
 
-__all__ = ["AT_CHECK", "AT_CHECK_MARGIN", "FORESEEN_CUT_MARGIN", "TORQUE_CUT_FRACTION",
-           "CutForeseen", "Outclassed", "better_outcome", "cut_below", "cut_foreseen",
-           "cut_reference", "failed_outcome", "lte_over", "outclassing_torque",
-           "with_generated_gear"]
+__all__ = ["AT_CHECK", "AT_CHECK_MARGIN", "AT_STATIC", "FORESEEN_CUT_MARGIN",
+           "TORQUE_CUT_FRACTION", "CutForeseen", "Outclassed", "better_outcome", "cut_below",
+           "cut_foreseen", "cut_reference", "failed_outcome", "lte_over", "outclassing_torque",
+           "static_cut_foreseen", "with_generated_gear"]
 
 log = logging.getLogger(__name__)
 
@@ -331,18 +335,44 @@ class CutForeseen(Exception):
         Where it stopped, as the case's ``gear_process_text`` says it: ``"its static
         capacity"`` (after the check's steps) or ``"its check, before the check's steps"``
         (:data:`AT_CHECK`, branch cpu89).
+    bound : str
+        ``"pitting"`` (``torque`` the local pitting estimate,
+        :func:`cut_foreseen`) or ``"static"`` (``torque`` the flank's static capacity, an
+        upper bound of the design torque: :func:`static_cut_foreseen`, branch cpu95).
     """
 
-    def __init__(self, torque: float, rated: float, stage: str = "its static capacity"
-                 ) -> None:
-        super().__init__(f"local pitting capacity about {plain_number(torque)} of "
+    def __init__(self, torque: float, rated: float, stage: str = "its static capacity",
+                 bound: str = "pitting") -> None:
+        super().__init__(f"{_BOUND_WORDS[bound]} {plain_number(torque)} of "
                          f"{plain_number(rated)} N m")
         self.torque, self.rated, self.stage = float(torque), float(rated), str(stage)
+        self.bound = bound
+
+    def said(self) -> str:
+        """The stop in words, as ``ltca synthesize`` says it and the case's
+        ``gear_process_text`` writes it: ``"its local pitting capacity about 156.6 N m,
+        below 0.9 of 0.5 of its rated 361.8 N m"`` (:attr:`bound` ``"pitting"``) or ``"its
+        flank's static capacity 130 N m, below 0.5 of its rated 636.1 N m"``
+        (``"static"``, :data:`AT_STATIC`)."""
+        share = (f"{TORQUE_CUT_FRACTION:g}" if self.bound == "static"
+                 else f"{FORESEEN_CUT_MARGIN:g} of {TORQUE_CUT_FRACTION:g}")
+        return (f"its {_BOUND_WORDS[self.bound]} {plain_number(self.torque)} N m, below "
+                f"{share} of its rated {plain_number(self.rated)} N m")
+
+
+#: what a :class:`CutForeseen` bound is, in words (its ``bound``)
+_BOUND_WORDS = {"pitting": "local pitting capacity about",
+                "static": "flank's static capacity"}
 
 
 #: :attr:`CutForeseen.stage` of a Formate development stopped on its checked design, before
 #: the check's steps (:func:`contact.optimize.development.develop`, branch cpu89)
 AT_CHECK = "its check, before the check's steps"
+
+#: :attr:`CutForeseen.stage` of a Formate development stopped where its flank's static
+#: capacity is below half the rated torque already (:func:`static_cut_foreseen`, branch
+#: cpu95)
+AT_STATIC = "its static capacity, before the steps at the lowered torque"
 
 #: The share of :func:`cut_foreseen`'s stop below which the bound taken on the checked
 #: design, before the check's steps, stops a Formate development there (branch cpu91).
@@ -388,6 +418,47 @@ def cut_foreseen(bound: float, rated: float, margin: float = 1.0) -> bool:
     """
     return (math.isfinite(rated) and rated > 0.0 and not math.isnan(bound)
             and bound < margin * FORESEEN_CUT_MARGIN * TORQUE_CUT_FRACTION * rated)
+
+
+def static_cut_foreseen(static: float, rated: float) -> bool:
+    """Whether a Formate bearing's flank static capacity foresees its design torque cut
+    below :data:`TORQUE_CUT_FRACTION` × ``rated`` (a failed outcome, :func:`failed_outcome`).
+
+    Parameters
+    ----------
+    static : float — [N·m]
+        The design torque the static-capacity step lowered the rated torque to
+        (:func:`contact.optimize.development_check.static_capacity`: the LTCA's flank peak
+        pressure within the static strength).
+    rated : float — [N·m]
+        The rated torque it was lowered from (NaN: none known, never foreseen).
+
+    Returns
+    -------
+    bool
+        ``static < TORQUE_CUT_FRACTION × rated`` (no margin: ``static`` bounds the design
+        torque from above, it is no estimate).
+
+    Notes
+    -----
+    Why no margin: once lowered, a development only lowers its design torque (the LTE
+    capacity, the root-stress and pitting capacity of the written case, the LTE window), and
+    a raise after a capacity cut ends at the torque before that cut
+    (:func:`contact.optimize.development._regained`'s ceiling), so the design torque the
+    development ends at is at most ``static`` (as :func:`outclassing_torque` argues). The one
+    way such a design is no failed outcome: the drive LTE window sets its torque (its cut is
+    then judged against the window's torque, :func:`cut_reference`) and it fails no verdict
+    criterion — the same exposure as :func:`cut_foreseen`'s stop, and the generated gear is
+    kept only where it fails nothing (:func:`with_generated_gear`). Measured on the FM miter
+    18x18 by Method 0 (benchmarks/data/unseen_designs, issue 71 round 33): its Formate
+    bearing (root relief 0: its root line not generated) read 5177 MPa at the rated 636.1
+    N m, its static capacity 130 N m; the full Formate development ended there, cut (its
+    local pitting bound inf: the analysis lost contact), and the generated gear was kept
+    (docs/performance.md, "The miter's Formate development stopped at its static
+    capacity"). Source: issue 71/75 (branch cpu95).
+    """
+    return (math.isfinite(rated) and rated > 0.0 and math.isfinite(static)
+            and static < TORQUE_CUT_FRACTION * rated)
 
 
 def outclassing_torque(first: Any, rated: float) -> float:
@@ -614,10 +685,11 @@ def _generated_after_foreseen(run: Callable[..., Any], basic: Any, foreseen: Cut
     whatever the Formate design ends at, which fails as foreseen), else None: the caller
     develops the Formate gear in full and ranks the two as :func:`with_generated_gear`
     does without the foresight)."""
-    say(f"development: the Formate gear's local pitting capacity is about "
-        f"{plain_number(foreseen.torque)} N m, below {FORESEEN_CUT_MARGIN:g} of "
-        f"{TORQUE_CUT_FRACTION:g} of its rated {plain_number(foreseen.rated)} N m (a design "
-        "torque cut foreseen); developing the pair with a generated gear (gear_process 'auto')")
+    what = ("flank's static capacity is" if foreseen.bound == "static"
+            else "local pitting capacity is about")
+    say(f"development: the Formate gear's {what} {plain_number(foreseen.torque)} N m, "
+        f"{foreseen.said().split(' N m, ', 1)[1]} (a design torque cut foreseen); developing "
+        "the pair with a generated gear (gear_process 'auto')")
     second = _developed(run, _generated(basic), foreseen.torque)
     other = (failed_outcome(second, foreseen.rated)
              if not isinstance(second, (Outclassed, InputError)) else str(second))
@@ -626,10 +698,9 @@ def _generated_after_foreseen(run: Callable[..., Any], basic: Any, foreseen: Cut
             "Formate gear in full")
         return second, None
     text = (f"Gear process (auto): generated. The Formate gear's development was stopped at "
-            f"{foreseen.stage}, its local pitting capacity about "
-            f"{plain_number(foreseen.torque)} N m, below {FORESEEN_CUT_MARGIN:g} of "
-            f"{TORQUE_CUT_FRACTION:g} of its rated {plain_number(foreseen.rated)} N m (a design "
-            f"torque cut, a failed outcome: contact.optimize.development_process.cut_foreseen); "
+            f"{foreseen.stage}, {foreseen.said()} (a design torque cut, a failed outcome: "
+            f"contact.optimize.development_process."
+            f"{'static_cut_foreseen' if foreseen.bound == 'static' else 'cut_foreseen'}); "
             f"the generated gear's does not fail at {plain_number(second.torque[1])} N m"
             + _window_said(second) + "; kept the generated gear " + _RULE)
     say("development: " + text)
