@@ -200,3 +200,63 @@ def test_the_edge_pressures_are_the_segments_peaks():
     assert m["edge_pressure_gear_toe"].tolist() == [0.0, 0.0]  # no such segment
     assert np.array_equal(np.max([m[f"edge_pressure_{k}"] for k in EDGE_KINDS], axis=0),
                           m["pressure_max_edge"])
+
+
+def test_the_readings_are_not_written():
+    """The per-kind readings stay out of the case's ``[development]`` tables (the table's
+    ``pressure_max_edge`` is their largest): a case written where the step keeps nothing
+    is the same as before it."""
+    from contact.optimize import development_result as dr
+
+    m = _thirteen_by_33(dict(COAST), TORQUES)[0]
+    assert set(dr.UNWRITTEN_METRICS) <= set(m)
+    rows = dr._rounded(m)
+    assert not set(rows) & set(dr.UNWRITTEN_METRICS)
+    assert rows["pressure_max_edge"] == [949.0, 0.0]
+
+
+def _capacity(torque, root=2.0):
+    from contact.optimize.development_coast import CoastCapacity, CoastCheck
+
+    check = CoastCheck(torque, 1500.0, 2400.0, 0.0, root, 1.5, "gear", math.nan, math.nan,
+                       None, 0.0, 1.2, 1.0, "pinion")
+    return CoastCapacity(torque, torque, (check,), "", True)
+
+
+def test_the_development_writes_the_relief_where_the_flank_holds(monkeypatch):
+    """The development's call (``development._coast_edges_relieved`` with
+    :func:`coast_light_edge`): the design kept written and analysed at the coast design
+    torque; kept where it fails no criterion the design before it held there, else the
+    written design stays (said) and its FE models are built again. A step that keeps
+    nothing writes nothing."""
+    from contact.optimize import development as dev
+
+    Outcome = collections.namedtuple("Outcome", "basic best torques")
+    relieved = Outcome("relieved basic", "relieved best", TORQUES)
+    written = ("coast", "developed", "case", "report")
+    writes, builds, lines = [], [], []
+
+    def write(basic):
+        writes.append(basic)
+        return "new case", "new report"
+
+    def run(after):
+        def relieve(developed, drive, targets, setup, teeth, memo, say, coast, cap):
+            assert (developed, coast) == ("developed", "coast")
+            return relieved if after is not None else None
+
+        monkeypatch.setattr(dev, "coast_flank_capacity",
+                            lambda case, basic, edged, *a, **k: (edged, after))
+        return dev._coast_edges_relieved(written, None, None, {}, None, {}, lines.append,
+                                         _capacity(221.0), None, True, write,
+                                         builds.append, relieve,
+                                         "the coast light-edge relief")
+
+    assert run(_capacity(221.0)) == (relieved, "relieved basic", "new case", "new report")
+    assert writes == ["relieved basic"] and builds == ["new case"]
+    assert run(_capacity(221.0, root=1.2)) == written  # the root fails where it held
+    assert builds == ["new case", "new case", "case"]
+    assert "the coast light-edge relief fails a criterion" in lines[-1]
+    writes.clear()
+    assert run(None) == written and writes == []
+
