@@ -260,3 +260,45 @@ def test_the_development_writes_the_relief_where_the_flank_holds(monkeypatch):
     writes.clear()
     assert run(None) == written and writes == []
 
+
+
+def _two_edges(case, torques, misalignment=None, **kw):
+    """The 13x17 at Σ 50°'s coast light torque (18.4 / 122.7 N m, 2026-11-29): its gear
+    tip (1640 MPa, 0.23 % on edges) and gear toe (900 MPa, made up) loaded at the light
+    torque; the tip cleared by the root relief started at 0.2, the toe by an ellipse of at
+    most 0.4 (made up)."""
+    tip = 0.0 if float(case["relief_start"]) <= 0.2 + 1e-9 else 1640.0
+    toe = 0.0 if float(case["ellipse_length"]) <= 0.4 + 1e-9 else 900.0
+    pressure = {f"edge_pressure_{k}": [0.0, 0.0] for k in EDGE_KINDS}
+    pressure["edge_pressure_gear_tip"] = [tip, 0.0]
+    pressure["edge_pressure_gear_toe"] = [toe, 0.0]
+    m = _metrics(pressure_max_edge=[max(tip, toe), 0.0],
+                 edge_contact_share=[0.0023 if tip or toe else 0.0, 0.0],
+                 edge_peak=[0.0, 0.0], edge_static_strength=[2400.0, 2400.0], **pressure)
+    return m, (0.0, 1.0, 0.0, 1.0, 2400.0)
+
+
+def test_two_loaded_edges_relieved_together(monkeypatch):
+    """Two edges loaded at the light torque (gear tip above gear toe): each design grows
+    both levers at once, since a design clearing one edge alone is never kept. The first
+    (root relief from 0.2, the bound; ellipse 0.5 × 0.85) clears the tip but not the toe:
+    not kept, said with the edge left. The second (the start at its bound, so the root
+    relief deeper, 40 → 60 µm; the ellipse × 0.85 again) clears both: kept."""
+    seen, fake = seen_designs(_two_edges)
+    targets, setup, chosen = stand_in(monkeypatch, fake, (18.4, 122.7))
+    start = chosen(dict(COAST))
+    assert dcl.coast_light_edge_kinds(start) == ("gear_tip", "gear_toe")
+    seen.clear()
+    lines = []
+    got = dcl.checked_coast_light_edge(start, targets, setup, None, lines.append, dict,
+                                       bound=math.inf, key_prefix=PREFIX)
+    first = round(0.85 * 0.5, 4)
+    second = round(0.85 * first, 4)
+    tried = [(d["relief_start"], d["root_relief"], d["ellipse_length"]) for d in seen]
+    assert tried[0] == (0.2, 40.0, first) and tried[-1] == (0.2, 60.0, second)
+    assert set(tried) == {(0.2, 40.0, first), (0.2, 60.0, second)}
+    assert got.values == COAST | {"relief_start": 0.2, "root_relief": 60.0,
+                                  "ellipse_length": second}
+    assert not light_edge_loaded(got)
+    assert any("not kept: it still loads an edge at the light torque (p_max edge 900 MPa"
+               in s and "gear toe" in s for s in lines), lines

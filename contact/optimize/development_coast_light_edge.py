@@ -12,17 +12,18 @@ docs/own_gear_set.md): the FM hypoid 13×33 at Σ 85° (benchmarks/data/unseen_d
 wrote a coast flank with 949 MPa on an edge carrying 0.028 % of the torque at its light
 torque 33.1 N·m, 15 % of its coast design torque 221 N·m.
 
-:func:`checked_coast_light_edge` runs the drive step's generator and rule on the coast
+:func:`checked_coast_light_edge` runs the drive step's levers and rule on the coast
 flank through the check's one relief loop
 (:func:`~contact.optimize.development_relief_lte.checked_relief_variants`, ``flank="coast"``,
 the coast's kept-teeth key, the mounting tolerance not asked: the drive flank's, as every
 coast step's): the edge kinds the light torque loads (:func:`coast_light_edge_kinds`: the
 ``edge_pressure_<kind>`` readings at the light torque, largest first; else the drive
-step's rows or tip edges), each kind's lever grown from the design in the drive step's
-order (:data:`~contact.optimize.development_light_edge_relief.LEVER_ORDER`: the relief
-longer before deeper), at most :data:`COAST_LIGHT_EDGE_STEPS` designs in all, the first
-clear of the light torque's edge kept where it loses no coast target the design met nor
-its capacity bound (:func:`~contact.optimize.development_edge_peak.pitting_lost` with
+step's rows or tip edges), the levers of every such kind grown together from the design,
+each in the drive step's order (:data:`~contact.optimize.development_light_edge_relief.
+LEVER_ORDER`: the relief longer before deeper), at most :data:`COAST_LIGHT_EDGE_STEPS`
+designs, the first clear of the light torque's edges kept where it loses no coast target
+the design met nor its capacity bound
+(:func:`~contact.optimize.development_edge_peak.pitting_lost` with
 :func:`~contact.optimize.development_coast_edge_peak.coast_edge_bound`), does not raise
 its LTE above the verdict's limit at its torques where the design kept it within
 (:func:`~contact.optimize.development_light_edge_relief.lte_limit_lost`), nor between its
@@ -78,8 +79,9 @@ STAGE = "coast light edge"
 #: side's steps each cost an analysis at ``ltca run``'s sampling (and its LTE between the
 #: torques), and a design kept one more write, FE build and capacity check; the drive's
 #: step tries up to :data:`~contact.optimize.development_light_edge_relief.
-#: LIGHT_EDGE_STEPS` per kind. Two: the lever of the edge the light torque loads grown
-#: twice (the relief longer, then longer or deeper), or one design each of two kinds
+#: LIGHT_EDGE_STEPS` per kind. Two: the levers of the edges the light torque loads grown
+#: twice (the relief longer, then longer or deeper), all of them in each design (a design
+#: is kept only where no edge is loaded at the light torque)
 COAST_LIGHT_EDGE_STEPS = 2
 
 
@@ -156,33 +158,60 @@ def coast_light_edge_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTa
 
 def _coast_light_edge_designs(start: DevelopmentEvaluation, targets: DevelopmentTargets
                               ) -> Generator[Try, Sent, None]:
-    # Why: as the drive step's (development_light_edge_relief._light_edge_designs): the
+    # Why: as the drive step's (development_light_edge_relief._light_edge_designs): an
     # edge carries load at the light torque where the flank's ease-off there is less than
     # the light torque's approach; the relief at that edge longer (then deeper), or the
     # lengthwise crowning for toe and heel, keeps it out of the light-load pattern (Litvin
-    # & Fuentes 2004, §9.4; Stadtfeld 1993, ch. 3). Each kind's lever grows from the
-    # design kept so far; at most COAST_LIGHT_EDGE_STEPS designs in all.
-    best, left = start, COAST_LIGHT_EDGE_STEPS
+    # & Fuentes 2004, §9.4; Stadtfeld 1993, ch. 3). A design is kept only where no edge is
+    # loaded at the light torque (_cleared), so where the light torque loads two edges
+    # (the spiral bevel 13x17 at Σ 50°'s gear tip and toe) one lever alone cannot be
+    # kept: each design grows the lever of every loaded edge at once (a lever two kinds
+    # share, the ellipse of toe and heel, once), from the design before it; at most
+    # COAST_LIGHT_EDGE_STEPS designs.
     p, s = light_edge(start) or (math.nan, math.nan)
-    for kind in coast_light_edge_kinds(start):
-        values = dict(best.values)
-        while left > 0 and light_edge_loaded(best):
+    kinds = coast_light_edge_kinds(start)
+    values = dict(start.values)
+    best = start
+    for _ in range(COAST_LIGHT_EDGE_STEPS):
+        if not light_edge_loaded(best):
+            return
+        changes: list[tuple[str, str, float]] = []
+        for kind in kinds:
             designs = sorted(lever_designs(kind, values, targets),
                              key=lambda d: LEVER_ORDER.index(d[0]))
-            if not designs:
-                break
-            name, x = designs[0]
-            values[name] = x
-            left -= 1
-            unit = " um" if name.endswith("relief") else ""
-            change = f"{name} {x:.4g}{unit}"
-            best, _ = yield Try(
-                dict(values),
-                f"with {change} (the coast {EDGE_WORDS[kind]}: {LIGHT_EDGE} p_max edge "
-                f"{np.nan_to_num(p):.0f} MPa, edge share {100.0 * np.nan_to_num(s):.2g} %)",
-                f"the coast {change} for the light torque's {EDGE_WORDS[kind]}")
-        if left == 0 or not light_edge_loaded(best):
+            if designs and designs[0][0] not in {n for _, n, _ in changes}:
+                changes.append((kind, *designs[0]))
+        if not changes:
             return
+        for _, name, x in changes:
+            values[name] = x
+        change = ", ".join(f"{name} {x:.4g}{' um' if name.endswith('relief') else ''}"
+                           for _, name, x in changes)
+        edges = " and ".join(EDGE_WORDS[k] for k, _, _ in changes)
+        best, _ = yield Try(
+            dict(values),
+            f"with {change} (the coast {edges}: {LIGHT_EDGE} p_max edge "
+            f"{np.nan_to_num(p):.0f} MPa, edge share {100.0 * np.nan_to_num(s):.2g} %)",
+            f"the coast {change} for the light torque's {edges}")
+
+
+def _cleared_said(say: Callable[[str], None]
+                  ) -> Callable[[DevelopmentEvaluation, DevelopmentEvaluation], bool]:
+    def better(kept: DevelopmentEvaluation, e: DevelopmentEvaluation) -> bool:
+        # the drive step's rule (LIGHT_EDGE_RELIEF.better), the design left said: its
+        # line of metrics does not show the light torque's edge
+        if light_edge_loaded(kept) and not light_edge_loaded(e):
+            return True
+        p, s = light_edge(e) or (math.nan, math.nan)
+        loaded = [EDGE_WORDS[k] for k in EDGE_KINDS
+                  if float(np.nan_to_num(np.asarray(
+                      (e.metrics or {}).get(f"edge_pressure_{k}", [0.0]), float)[0])) > 0.0]
+        say(f"  not kept: it still loads an edge at the light torque (p_max edge "
+            f"{np.nan_to_num(p):.0f} MPa, edge share {100.0 * np.nan_to_num(s):.2g} %"
+            + (f"; {', '.join(loaded)}" if loaded else "") + ")")
+        return False
+
+    return better
 
 
 def _coast_lost(bound: float, setup: Mapping[str, Any], teeth: KeptTeeth | None,
@@ -257,6 +286,7 @@ def checked_coast_light_edge(best: DevelopmentEvaluation, targets: DevelopmentTa
     relief = dataclasses.replace(LIGHT_EDGE_RELIEF, stage=STAGE,
                                  runs_on=coast_light_edge_runs_on,
                                  tries=_coast_light_edge_designs,
+                                 better=_cleared_said(say),
                                  lost=_coast_lost(bound, setup, teeth, key_prefix))
     return checked_relief_variants(best, targets, setup, teeth, say, placed,
                                    reliefs=(relief,), eps=(math.nan, math.nan),
