@@ -136,13 +136,18 @@ def test_a_relief_above_the_capacity_bound_is_refused(monkeypatch):
 
 def test_two_designs_at_most(monkeypatch):
     """Nothing clears the edge: two designs tried (the tip relief from 0.75, then 0.65),
-    not the drive step's six per kind; the design returned as it was."""
+    not the drive step's six per kind, each analysed at its two torques only (refused for
+    the edge it leaves, its LTE between the torques is not analysed); said; the design
+    returned as it was."""
     seen, targets, setup, start = _start(monkeypatch, clear_start=0.0)
-    got = dcl.checked_coast_light_edge(start, targets, setup, None, lambda s: None, dict,
+    lines = []
+    got = dcl.checked_coast_light_edge(start, targets, setup, None, lines.append, dict,
                                        bound=math.inf, key_prefix=PREFIX)
     assert got is start
-    assert sorted({d["tip_relief_start"] for d in seen}) == [0.65, 0.75]
-    assert len({d["tip_relief_start"] for d in seen}) == dcl.COAST_LIGHT_EDGE_STEPS
+    assert [d["tip_relief_start"] for d in seen] == [0.75, 0.65]
+    assert len(seen) == dcl.COAST_LIGHT_EDGE_STEPS
+    assert sum("not kept: it still loads an edge at the light torque (p_max edge 949 MPa"
+               in s for s in lines) == 2, lines
 
 
 def test_no_light_edge_no_design(monkeypatch):

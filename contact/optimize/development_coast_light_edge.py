@@ -228,6 +228,10 @@ def _coast_lost(bound: float, setup: Mapping[str, Any], teeth: KeptTeeth | None,
         if any(k not in SOFT_TARGETS for k in gone):  # refused whatever its LTE between
             # the torques (kept_why refuses on a target beyond the soft ones): not analysed
             return gone
+        if light_edge_loaded(e):  # refused by the step's rule (_cleared_said, asked
+            # next) whatever its LTE between the torques: not analysed either (the 13x17
+            # at Σ 50°'s two designs, 2026-11-29: their range analysed, then refused on it)
+            return gone
         peak = coast_range_peak(e, setup, teeth, key_prefix)[0]
         if peak > LTE_LIMIT:
             was = coast_range_peak(kept, setup, teeth, key_prefix)[0]
