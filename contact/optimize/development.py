@@ -159,6 +159,7 @@ from contact.optimize.development_coast_flank import (  # noqa: F401
     coast_start,
     coast_torque_searched,
 )
+from contact.optimize.development_coast_light_edge import coast_light_edge
 from contact.optimize.development_edge_peak import checked_edge_peak
 from contact.optimize.development_evaluate import (  # noqa: F401
     CHECK_LTCA,
@@ -763,14 +764,21 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
                 _both_flanks_built(case, root_stress, built, say, setup)
             else:
                 coast, coast_cap = holds
-        # an edge above the static strength at the coast design torque: its relief
-        # (development_coast_edge_peak), written where the coast flank holds as before
+        # edge contact at the coast light torque, as ltca run --flank coast reads it
+        # (p_max edge above 0): the relief of the edge it loads, at most two designs
+        # (development_coast_light_edge), then an edge above the static strength at the
+        # coast design torque: its relief (development_coast_edge_peak); each written
+        # where the coast flank holds as before (the drive's order: light edge first)
+        write = functools.partial(synthesize, progress=synthesis_progress, memo=memo)
+        rebuilt = functools.partial(_both_flanks_built, wanted=root_stress, built=built,
+                                    say=say, setup=setup)
         coast, developed, case, report = _coast_edges_relieved(
             (coast, developed, case, report), best, targets, setup, teeth, memo, say,
-            coast_cap, basic, root_stress, functools.partial(
-                synthesize, progress=synthesis_progress, memo=memo),
-            functools.partial(_both_flanks_built, wanted=root_stress, built=built, say=say,
-                              setup=setup))
+            coast_cap, basic, root_stress, write, rebuilt, coast_light_edge,
+            "the coast light-edge relief")
+        coast, developed, case, report = _coast_edges_relieved(
+            (coast, developed, case, report), best, targets, setup, teeth, memo, say,
+            coast_cap, basic, root_stress, write, rebuilt)
     coast_seconds += time.process_time() - c_cap
     # a root-limited torque decided on the default FE model: the case written names it
     # (ltca run reads the model the torque was decided with)
@@ -934,17 +942,21 @@ def _coast_edges_relieved(written: tuple, drive: DevelopmentEvaluation,
                           targets: DevelopmentTargets, setup: dict[str, Any],
                           teeth: KeptTeeth, memo: dict, say: Callable[[str], None],
                           cap: CoastCapacity | None, basic: BasicDesign, root_stress: bool,
-                          write: Callable[[BasicDesign], tuple], built: Callable[[Case], None]
-                          ) -> tuple:
-    """The written (coast outcome, basic design, case, report) with the coast edges'
-    relief of :func:`~contact.optimize.development_coast_edge_peak.coast_edge_peak` where
-    it keeps one: written (``write``, ``built``) and analysed as ``ltca run --flank coast``
-    does at the coast design torque (:func:`coast_flank_capacity`), kept where it fails no
-    criterion the design before it held there
+                          write: Callable[[BasicDesign], tuple], built: Callable[[Case], None],
+                          relieve: Callable[..., Any] = coast_edge_peak,
+                          what: str = "the coast edges' relief") -> tuple:
+    """The written (coast outcome, basic design, case, report) with a coast edge relief
+    ``relieve`` — :func:`~contact.optimize.development_coast_edge_peak.coast_edge_peak`
+    (default) or :func:`~contact.optimize.development_coast_light_edge.coast_light_edge`,
+    called as ``relieve(developed, drive, targets, setup, teeth, memo, say, coast, cap)``
+    — where it keeps one: written (``write``, ``built``) and analysed as ``ltca run
+    --flank coast`` does at the coast design torque (:func:`coast_flank_capacity`), kept
+    where it fails no criterion the design before it held there
     (:func:`~contact.optimize.development_coast_edge_peak.holds_as_before`); else
-    ``written`` (its FE models built again)."""
+    ``written`` (its FE models built again). ``what`` names the relief in the refusal's
+    line."""
     coast, developed = written[0], written[1]
-    edged = coast_edge_peak(developed, drive, targets, setup, teeth, memo, say, coast, cap)
+    edged = relieve(developed, drive, targets, setup, teeth, memo, say, coast, cap)
     if edged is None:
         return written
     case, report = write(edged.basic)
@@ -953,8 +965,8 @@ def _coast_edges_relieved(written: tuple, drive: DevelopmentEvaluation,
                                         float(edged.torques[1]), root_stress, True, say)
     if holds_as_before(after, cap):
         return again, edged.basic, case, report
-    say("development: the coast edges' relief fails a criterion of the coast design "
-        "torque the design before it held; that design written")
+    say(f"development: {what} fails a criterion of the coast design torque the design "
+        "before it held; that design written")
     built(written[2])
     return written
 

@@ -177,7 +177,14 @@ def light_edge_metrics(ltca) -> dict[str, np.ndarray]:
     segment is loaded) and ``edge_contact_share`` [1] (the ``edge_contact`` check's
     counted share, :func:`contact.study.verdicts.edge_contact_share`); none where the
     dataset has neither. The edge-peak steps' light-torque rule reads them
-    (:mod:`contact.optimize.development_light_edge`)."""
+    (:mod:`contact.optimize.development_light_edge`). Where the dataset has its
+    segments' kinds and peaks, also ``edge_pressure_<kind>`` [MPa] for each edge kind
+    (:data:`contact.ltca.edges.EDGE_KINDS`): the peak of ``pressure_max`` over that kind's
+    segments, whatever share of the torque they carry (0 where none is loaded) — which
+    edge ``p_max edge`` is on, read by the coast flank's light-edge step
+    (:mod:`contact.optimize.development_coast_light_edge`; the case's ``[development]``
+    tables leave them out: :data:`~contact.optimize.development_result.
+    UNWRITTEN_METRICS`)."""
     from contact.study.verdicts import edge_contact_share  # imports contact.ltca
 
     out = {}
@@ -186,6 +193,14 @@ def light_edge_metrics(ltca) -> dict[str, np.ndarray]:
             np.asarray(ltca["pressure_max_edge"].values, float))
     if {"force", "moment_arm", "segment_kind"} <= set(ltca.variables):
         out["edge_contact_share"] = np.asarray(edge_contact_share(ltca), float)
+    if {"pressure_max", "segment_kind"} <= set(ltca.variables):
+        kind = np.asarray(ltca["segment_kind"].values).astype(str)
+        pressure = np.nan_to_num(np.asarray(
+            ltca["pressure_max"].transpose("torque", ...).values, float))
+        for k in EDGE_KINDS:
+            on = pressure[..., kind == k].reshape(pressure.shape[0], -1)
+            out[f"edge_pressure_{k}"] = (on.max(axis=1) if on.size
+                                         else np.zeros(pressure.shape[0]))
     return out
 
 

@@ -26,6 +26,7 @@ from typing import Any
 
 import numpy as np
 
+from contact.ltca.edges import EDGE_KINDS
 from contact.ltca.plausibility import LTE_SPREAD_LIMIT
 from contact.optimize.development_targets import DevelopmentTargets, development_score
 from contact.pipeline import case_torques, floor_torque  # the coast's light torque's rule
@@ -33,8 +34,17 @@ from geometry.case import Case
 from geometry.core.text import plain_number
 from geometry.synthesis.basic_design import FLANK_OPTION_UNITS, BasicDesign
 
-__all__ = ["COAST_STATUS", "STATIC_MARGIN", "TOLERANCE_KEYS", "DevelopmentEvaluation",
-           "DevelopmentResult", "case_torques", "floor_torque", "metrics_text", "scored"]
+__all__ = ["COAST_STATUS", "STATIC_MARGIN", "TOLERANCE_KEYS", "UNWRITTEN_METRICS",
+           "DevelopmentEvaluation", "DevelopmentResult", "case_torques", "floor_torque",
+           "metrics_text", "scored"]
+
+#: the development's metrics its ``[development]`` tables leave out: each edge kind's peak
+#: pressure per torque whatever its share (``edge_pressure_<kind>`` [MPa],
+#: :func:`~contact.optimize.development_evaluate.light_edge_metrics`), the reading by which
+#: the coast light-edge step chooses its lever, not a result the case records (the table's
+#: ``pressure_max_edge`` is their largest); the case written stays as before where the step
+#: keeps nothing
+UNWRITTEN_METRICS = tuple(f"edge_pressure_{k}" for k in EDGE_KINDS)
 
 
 # --------------------------------------------------------------------------- evaluation
@@ -625,7 +635,7 @@ class DevelopmentResult:
     def table(self) -> dict[str, Any]:
         """The case's informational ``[development]`` table (TOML-safe values)."""
         b = self.best
-        m = {k: [round(float(x), 6) for x in v] for k, v in b.metrics.items()}
+        m = _rounded(b.metrics)
         return {
             "note": "informational (contact.optimize.development): the developed drive-flank "
                     "prescriptions and what the LTCA gave at [light, design] torque "
@@ -670,7 +680,8 @@ class DevelopmentResult:
 
 
 def _rounded(metrics: Mapping[str, np.ndarray]) -> dict[str, list[float]]:
-    return {k: [round(float(x), 6) for x in v] for k, v in metrics.items()}
+    return {k: [round(float(x), 6) for x in v] for k, v in metrics.items()
+            if k not in UNWRITTEN_METRICS}
 
 
 def _met_text(full: tuple[float, dict[str, float], bool]) -> str:

@@ -1,0 +1,357 @@
+"""The coast flank's light-edge step (issue 71, Done-when "no edge contact at 15 % of the
+design torque", both flanks): the written case's coast flank that loads an edge at its
+light torque, as ``ltca run --flank coast`` reads it, given the relief (or the crowning)
+that takes the light torque off that edge.
+
+The drive flank's step (:mod:`contact.optimize.development_light_edge_relief`) ran on the
+drive flank only; on the coast flank the steps only refused a relief that *brought* edge
+contact to the light torque (:func:`~contact.optimize.development_light_edge.
+light_edge_lost`, in :mod:`contact.optimize.development_coast_edge_peak`), so an edge the
+coast search's design carried there stayed. Measured (2026-11-29, round 33 of
+docs/own_gear_set.md): the FM hypoid 13×33 at Σ 85° (benchmarks/data/unseen_designs)
+wrote a coast flank with 949 MPa on an edge carrying 0.028 % of the torque at its light
+torque 33.1 N·m, 15 % of its coast design torque 221 N·m.
+
+:func:`checked_coast_light_edge` runs the drive step's levers and rule on the coast
+flank through the check's one relief loop
+(:func:`~contact.optimize.development_relief_lte.checked_relief_variants`, ``flank="coast"``,
+the coast's kept-teeth key, the mounting tolerance not asked: the drive flank's, as every
+coast step's): the edge kinds the light torque loads (:func:`coast_light_edge_kinds`: the
+``edge_pressure_<kind>`` readings at the light torque, largest first; else the drive
+step's rows or tip edges), the levers of every such kind grown together from the design,
+each in the drive step's order (:data:`~contact.optimize.development_light_edge_relief.
+LEVER_ORDER`: the relief longer before deeper), at most :data:`COAST_LIGHT_EDGE_STEPS`
+designs, the first clear of the light torque's edges kept where it loses no coast target
+the design met nor its capacity bound
+(:func:`~contact.optimize.development_edge_peak.pitting_lost` with
+:func:`~contact.optimize.development_coast_edge_peak.coast_edge_bound`), does not raise
+its LTE above the verdict's limit at its torques where the design kept it within
+(:func:`~contact.optimize.development_light_edge_relief.lte_limit_lost`), nor between its
+torques (``ltca run --flank coast``'s ``lte_range``, as the coast edge-peak step's rule).
+:func:`coast_light_edge` runs it on the written case's coast flank after every other coast
+step but the edge peak's; the development writes the design kept and keeps it where its
+coast flank, analysed as ``ltca run --flank coast`` does at its design torque, fails no
+capacity criterion the design before it held
+(:func:`~contact.optimize.development_coast_edge_peak.holds_as_before`).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Callable, Generator, Mapping
+from typing import Any
+
+import numpy as np
+
+from contact.ltca.edges import EDGE_KINDS
+from contact.optimize.development_coast import CoastCapacity
+from contact.optimize.development_coast_capacity_lte import coast_range_peak
+from contact.optimize.development_coast_edge_peak import coast_edge_bound
+from contact.optimize.development_coast_flank import written_coast
+from contact.optimize.development_edge_peak import EDGE_WORDS, lever_designs, pitting_lost
+from contact.optimize.development_evaluate import KeptTeeth
+from contact.optimize.development_keep import SOFT_TARGETS
+from contact.optimize.development_light_edge import LIGHT_EDGE, light_edge
+from contact.optimize.development_light_edge_relief import (
+    LEVER_ORDER,
+    LIGHT_EDGE_RELIEF,
+    light_edge_kinds,
+    light_edge_loaded,
+    lte_limit_lost,
+)
+from contact.optimize.development_range_lte import SAME_PEAK
+from contact.optimize.development_relief_lte import Sent, Try, checked_relief_variants
+from contact.optimize.development_result import DevelopmentEvaluation
+from contact.optimize.development_targets import DevelopmentTargets
+from contact.study.verdicts import LTE_LIMIT
+from geometry.case import Case
+from geometry.core.text import plain_number
+from geometry.synthesis.basic_design import BasicDesign
+
+__all__ = ["COAST_LIGHT_EDGE_STEPS", "STAGE", "checked_coast_light_edge",
+           "coast_light_edge", "coast_light_edge_kinds", "coast_light_edge_runs_on"]
+
+#: the check stage of the step's designs (:attr:`DevelopmentEvaluation.stage`)
+STAGE = "coast light edge"
+
+#: [1] most designs the step tries on the coast flank, over every edge kind: the coast
+#: side's steps each cost an analysis at ``ltca run``'s sampling (and its LTE between the
+#: torques), and a design kept one more write, FE build and capacity check; the drive's
+#: step tries up to :data:`~contact.optimize.development_light_edge_relief.
+#: LIGHT_EDGE_STEPS` per kind. Two: the levers of the edges the light torque loads grown
+#: twice (the relief longer, then longer or deeper), all of them in each design (a design
+#: is kept only where no edge is loaded at the light torque)
+COAST_LIGHT_EDGE_STEPS = 2
+
+
+def coast_light_edge_kinds(e: DevelopmentEvaluation) -> tuple[str, ...]:
+    """The edge kinds whose lever the step tries for ``e``, in turn: those whose segments
+    peak above 0 at its light torque (``edge_pressure_<kind>`` [MPa], the first torque),
+    the highest first; where the metrics carry no such reading, the drive step's
+    (:func:`~contact.optimize.development_light_edge_relief.light_edge_kinds`: the rows
+    the light-load pattern is on, else the tip edges).
+
+    Parameters
+    ----------
+    e : DevelopmentEvaluation
+        A checked design (its metrics per torque, light first;
+        :func:`~contact.optimize.development_evaluate.light_edge_metrics`).
+
+    Returns
+    -------
+    tuple of str
+        Kinds of :data:`contact.ltca.edges.EDGE_KINDS`.
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Why the reading, not the rows alone: an edge can carry load at the light torque
+    inside the pattern's extent (the 13×33's coast light torque, 0.028 % of the torque on
+    an edge: too little to move the pattern onto a row), and with two designs the lever
+    must be the loaded edge's. Source: ``ltca run``'s ``p_max edge`` (the peak over the
+    edge segments of each kind, :func:`contact.study.verdicts.edge_peaks`).
+    """
+    m = e.metrics or {}
+    read = {k: float(np.nan_to_num(np.asarray(m[f"edge_pressure_{k}"], float)[0]))
+            for k in EDGE_KINDS if f"edge_pressure_{k}" in m}
+    loaded = sorted((k for k, p in read.items() if p > 0.0), key=lambda k: -read[k])
+    return tuple(loaded) if loaded else light_edge_kinds(e)
+
+
+def coast_light_edge_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                             ratios: Callable[[], tuple[float, float]] | None = None) -> bool:
+    """The step's gate: ``best`` is checked at ``ltca run``'s sampling, loads an edge at
+    its light torque (:func:`~contact.optimize.development_light_edge_relief.
+    light_edge_loaded`: ``p_max edge`` above 0 or a counted edge share) and the
+    development varies a lever of one of its kinds (:func:`coast_light_edge_kinds`).
+    Asked without an analysis: no design is tried where it does not hold.
+
+    Parameters
+    ----------
+    best : DevelopmentEvaluation
+        The coast design written.
+    targets : DevelopmentTargets
+        The development's targets (``variables``: the levers' bounds).
+    ratios : callable, optional
+        Unused (the relief table's gate signature).
+
+    Returns
+    -------
+    bool
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: issue 71 (module docstring).
+    """
+    if not best.checked_full or not light_edge_loaded(best):
+        return False
+    return any(lever_designs(k, best.values, targets) for k in coast_light_edge_kinds(best))
+
+
+def _coast_light_edge_designs(start: DevelopmentEvaluation, targets: DevelopmentTargets
+                              ) -> Generator[Try, Sent, None]:
+    # Why: as the drive step's (development_light_edge_relief._light_edge_designs): an
+    # edge carries load at the light torque where the flank's ease-off there is less than
+    # the light torque's approach; the relief at that edge longer (then deeper), or the
+    # lengthwise crowning for toe and heel, keeps it out of the light-load pattern (Litvin
+    # & Fuentes 2004, §9.4; Stadtfeld 1993, ch. 3). A design is kept only where no edge is
+    # loaded at the light torque (_cleared), so where the light torque loads two edges
+    # (the spiral bevel 13x17 at Σ 50°'s gear tip and toe) one lever alone cannot be
+    # kept: each design grows the lever of every loaded edge at once (a lever two kinds
+    # share, the ellipse of toe and heel, once), from the design before it; at most
+    # COAST_LIGHT_EDGE_STEPS designs.
+    p, s = light_edge(start) or (math.nan, math.nan)
+    kinds = coast_light_edge_kinds(start)
+    values = dict(start.values)
+    best = start
+    for _ in range(COAST_LIGHT_EDGE_STEPS):
+        if not light_edge_loaded(best):
+            return
+        changes: list[tuple[str, str, float]] = []
+        for kind in kinds:
+            designs = sorted(lever_designs(kind, values, targets),
+                             key=lambda d: LEVER_ORDER.index(d[0]))
+            if designs and designs[0][0] not in {n for _, n, _ in changes}:
+                changes.append((kind, *designs[0]))
+        if not changes:
+            return
+        for _, name, x in changes:
+            values[name] = x
+        change = ", ".join(f"{name} {x:.4g}{' um' if name.endswith('relief') else ''}"
+                           for _, name, x in changes)
+        edges = " and ".join(EDGE_WORDS[k] for k, _, _ in changes)
+        best, _ = yield Try(
+            dict(values),
+            f"with {change} (the coast {edges}: {LIGHT_EDGE} p_max edge "
+            f"{np.nan_to_num(p):.0f} MPa, edge share {100.0 * np.nan_to_num(s):.2g} %)",
+            f"the coast {change} for the light torque's {edges}")
+
+
+def _cleared_said(say: Callable[[str], None]
+                  ) -> Callable[[DevelopmentEvaluation, DevelopmentEvaluation], bool]:
+    def better(kept: DevelopmentEvaluation, e: DevelopmentEvaluation) -> bool:
+        # the drive step's rule (LIGHT_EDGE_RELIEF.better), the design left said: its
+        # line of metrics does not show the light torque's edge
+        if light_edge_loaded(kept) and not light_edge_loaded(e):
+            return True
+        p, s = light_edge(e) or (math.nan, math.nan)
+        loaded = [EDGE_WORDS[k] for k in EDGE_KINDS
+                  if float(np.nan_to_num(np.asarray(
+                      (e.metrics or {}).get(f"edge_pressure_{k}", [0.0]), float)[0])) > 0.0]
+        say(f"  not kept: it still loads an edge at the light torque (p_max edge "
+            f"{np.nan_to_num(p):.0f} MPa, edge share {100.0 * np.nan_to_num(s):.2g} %"
+            + (f"; {', '.join(loaded)}" if loaded else "") + ")")
+        return False
+
+    return better
+
+
+def _coast_lost(bound: float, setup: Mapping[str, Any], teeth: KeptTeeth | None,
+                key_prefix: tuple
+                ) -> Callable[[DevelopmentEvaluation, DevelopmentEvaluation], list[str]]:
+    pitting = pitting_lost(bound)
+    lte = lte_limit_lost(float(LTE_LIMIT))
+
+    def lost(kept: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:
+        # no coast target the design met lost and its capacity bound kept (pitting_lost),
+        # its LTE not raised above the verdict's limit at its torques where it was within
+        # (the drive step's rule), then between its torques (the coast edge-peak step's)
+        gone = pitting(kept, e) + lte(kept, e)
+        if any(k not in SOFT_TARGETS for k in gone):  # refused whatever its LTE between
+            # the torques (kept_why refuses on a target beyond the soft ones): not analysed
+            return gone
+        if light_edge_loaded(e):  # refused by the step's rule (_cleared_said, asked
+            # next) whatever its LTE between the torques: not analysed either (the 13x17
+            # at Σ 50°'s two designs, 2026-11-29: their range analysed, then refused on it)
+            return gone
+        peak = coast_range_peak(e, setup, teeth, key_prefix)[0]
+        if peak > LTE_LIMIT:
+            was = coast_range_peak(kept, setup, teeth, key_prefix)[0]
+            if not was > LTE_LIMIT:
+                gone = [*gone, f"LTE p-p {peak:.1f} urad between the torques"]
+            elif peak > was + SAME_PEAK:
+                gone = [*gone, f"LTE p-p {peak:.1f} urad between the torques (the design "
+                               f"kept {was:.1f})"]
+        return gone
+
+    return lost
+
+
+def checked_coast_light_edge(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                             setup: Mapping[str, Any], teeth: KeptTeeth | None,
+                             say: Callable[[str], None],
+                             placed: Callable[[Mapping[str, float]], Case], *,
+                             bound: float, key_prefix: tuple = ()) -> DevelopmentEvaluation:
+    """The coast design ``best`` without edge contact at its light torque where a relief
+    (or a shorter ellipse) of the edge does it (module docstring), at most
+    :data:`COAST_LIGHT_EDGE_STEPS` designs tried, none where it loads no edge there.
+
+    Parameters
+    ----------
+    best : DevelopmentEvaluation
+        The coast design, checked at the coast flank's light and design torque (its
+        metrics carry ``pressure_max_edge`` [MPa], ``edge_contact_share`` [1] and
+        ``edge_pressure_<kind>`` [MPa] per torque, light first).
+    targets, setup, teeth, say, placed
+        As every coast check step's (:func:`~contact.optimize.development_coast_steps.
+        checked_coast_lte`; ``setup["torques"]``: the coast flank's own [N·m]).
+    bound : float — [MPa]
+        The flank peak at the coast design torque a design may not rise above where it
+        is above ``best``'s (:func:`~contact.optimize.development_coast_edge_peak.
+        coast_edge_bound`; inf: none).
+    key_prefix : tuple, optional
+        The kept pinion tooth's key before the design's bearing.
+
+    Returns
+    -------
+    DevelopmentEvaluation
+        The design kept (stage :data:`STAGE`); ``best`` itself where the gate
+        (:func:`coast_light_edge_runs_on`) does not hold or no design was kept.
+
+    Raises
+    ------
+    Nothing: a design whose synthesis or analysis fails is not kept (logged).
+
+    Notes
+    -----
+    Source: issue 71 (Done-when: no edge contact at 15 % of the design torque, each flank
+    at its own); ``ltca run --flank coast``'s ``p_max edge``; the levers: Litvin &
+    Fuentes, *Gear Geometry and Applied Theory*, 2nd ed., 2004, §9.4; Stadtfeld,
+    *Handbook of Bevel and Hypoid Gears*, 1993, ch. 3.
+    """
+    relief = dataclasses.replace(LIGHT_EDGE_RELIEF, stage=STAGE,
+                                 runs_on=coast_light_edge_runs_on,
+                                 tries=_coast_light_edge_designs,
+                                 better=_cleared_said(say),
+                                 lost=_coast_lost(bound, setup, teeth, key_prefix))
+    return checked_relief_variants(best, targets, setup, teeth, say, placed,
+                                   reliefs=(relief,), eps=(math.nan, math.nan),
+                                   flank="coast", key_prefix=key_prefix, tolerant=False)
+
+
+def coast_light_edge(developed: BasicDesign, drive: DevelopmentEvaluation,
+                     targets: DevelopmentTargets, setup: dict[str, Any], teeth: KeptTeeth,
+                     memo: dict, say: Callable[[str], None], coast: Any,
+                     cap: CoastCapacity | None) -> Any | None:
+    """:func:`checked_coast_light_edge` on the written case's coast flank at its own
+    torques (``coast.torques``, as ``ltca run --flank coast`` analyses it).
+
+    Parameters
+    ----------
+    developed : BasicDesign
+        The basic design written (both flanks' prescriptions).
+    drive : DevelopmentEvaluation
+        The drive design written (its bearing keys the kept pinion teeth).
+    targets, setup, teeth, memo, say
+        The development's.
+    coast : NamedTuple
+        The coast outcome of :func:`~contact.optimize.development_coast_flank.
+        coast_flank_capacity` (its ``best`` checked at its ``torques`` [N·m]).
+    cap : CoastCapacity or None
+        The coast capacity search's result (the flank peak bound,
+        :func:`~contact.optimize.development_coast_edge_peak.coast_edge_bound`; None or
+        without one: the flank's static strength, ``edge_static_strength`` [MPa]).
+
+    Returns
+    -------
+    NamedTuple or None
+        The coast outcome with the design kept (its ``basic`` carrying its coast
+        prescriptions), or None (nothing kept; nothing analysed where the coast flank
+        loads no edge at its light torque or the coast development is off).
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: issue 71; docs/synthesis.md, "The coast flank's light-torque edge".
+    """
+    old = coast.best if coast is not None else None
+    if (old is None or len(coast.torques) != 2 or targets.coast_max_evaluations == 0
+            or not coast_light_edge_runs_on(old, targets)):
+        return None
+    bound = coast_edge_bound(cap)
+    if not math.isfinite(bound) and "edge_static_strength" in old.metrics:
+        bound = float(old.metrics["edge_static_strength"][-1])
+    p, s = light_edge(old) or (math.nan, math.nan)
+    kinds = ", ".join(EDGE_WORDS[k] for k in coast_light_edge_kinds(old))
+    say(f"development: coast flank's edge at its light torque "
+        f"{plain_number(coast.torques[0])} N m (p_max edge {np.nan_to_num(p):.0f} MPa, "
+        f"edge share {100.0 * np.nan_to_num(s):.2g} %; {kinds}): its relief, at most "
+        f"{COAST_LIGHT_EDGE_STEPS} designs")
+    written = written_coast(developed, drive, memo)
+    got = checked_coast_light_edge(old, targets, dict(setup, torques=list(coast.torques)),
+                                   teeth, say, written.placed, bound=bound,
+                                   key_prefix=written.key_prefix)
+    if got is old:
+        return None
+    return written.outcome(coast, got)
