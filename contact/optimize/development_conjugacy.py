@@ -358,8 +358,8 @@ def counts_basic(basic, z1: int, z2: int):
     """The basic data with other tooth counts, as the file edited to them reads: its TOML
     re-read and validated (:func:`geometry.synthesis.basic_design.basic_from_dict`, so the
     defaults that follow the module, :func:`~geometry.synthesis.basic_design.size_scale`,
-    follow the new one) where ``basic.path`` names a readable file; else ``basic.design``
-    with the counts replaced.
+    follow the new one) where ``basic.path`` names a readable file (a bundled one by its
+    ``cases/basic/<name>``); else ``basic.design`` with the counts replaced.
 
     Parameters
     ----------
@@ -382,8 +382,13 @@ def counts_basic(basic, z1: int, z2: int):
     from geometry.synthesis.basic_design import basic_from_dict
 
     path = getattr(basic, "path", "") or ""
-    if path and Path(path).is_file():
-        raw = read_toml(path, "basic file")
+    file = Path(path)
+    if path and not file.is_file() and file.parent.parts[-2:] == ("cases", "basic"):
+        from contact.catalogue import bundled_case_path  # a bundled file, as load_basic
+                                                          # names it
+        file = bundled_case_path().parent / "basic" / file.name
+    if path and file.is_file():
+        raw = read_toml(file, "basic file")
         if isinstance(raw.get("design"), dict):
             raw["design"] = dict(raw["design"], z1=int(z1), z2=int(z2))
             return dataclasses.replace(basic_from_dict(raw), path=path)
