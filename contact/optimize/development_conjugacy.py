@@ -53,6 +53,7 @@ import dataclasses
 import logging
 import math
 import time
+from collections.abc import Callable
 from typing import Any, NamedTuple
 
 import numpy as np
@@ -396,7 +397,7 @@ def counts_basic(basic, z1: int, z2: int):
                                                                  z2=int(z2)))
 
 
-def teeth_checker(basic):
+def teeth_checker(basic) -> Callable[[int, int], str | None]:
     """A check of tooth counts offered as a remedy, for
     :func:`contact.load_capacity.iso10300.face_contact.overlap_text`'s ``teeth_check``.
 

@@ -43,6 +43,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 __all__ = [
@@ -320,6 +321,9 @@ def _none_text(design, r: OverlapRemedy) -> str:
             f"{_SPIRAL_ANGLE_MAX:g} deg{beta_said}")
 
 
+#: ``check(z1, z2) -> str | None`` of a tooth-count remedy (:func:`overlap_text`)
+_CountsCheck = Callable[[int, int], "str | None"]
+
 #: tooth counts tried by :func:`_teeth_text`'s check: the least that reaches the target,
 #: then steps of :data:`_TEETH_STEP` pinion teeth (ratio kept), at most
 #: :data:`_TEETH_TRIALS` syntheses of 1-2 s of CPU each (issue 71, round 96: the 15x15
@@ -327,7 +331,7 @@ def _none_text(design, r: OverlapRemedy) -> str:
 _TEETH_STEP, _TEETH_TRIALS = 5, 4
 
 
-def _teeth_text(design, target: float, check=None) -> str:
+def _teeth_text(design, target: float, check: _CountsCheck | None = None) -> str:
     """"; " and the tooth numbers of :func:`teeth_remedy` as the note's last clause, or
     "" where none is found; with ``check`` (``check(z1, z2) -> str | None``: None where
     the counts synthesise into a case whose unloaded contact is computed, else what
@@ -443,7 +447,7 @@ def overlap_changes(r: OverlapRemedy, design) -> list[RatioChange]:
 
 
 def overlap_text(design, target: float = FACE_CONTACT_RATIO_MIN, judge=None,
-                 teeth_check=None) -> str | None:
+                 teeth_check: _CountsCheck | None = None) -> str | None:
     """The cause and the remedy of a low face contact ratio in one sentence (``ltca
     synthesize``'s note, the LTE-spread next step of ``ltca run`` and ``ltca duty-cycle``);
     None where ε_vβ meets ``target`` or the blank cannot be computed.
@@ -731,7 +735,7 @@ def _profile_text(r: ProfileRemedy, judge=None) -> str:
 
 def low_ratio_text(design, face_target: float = FACE_CONTACT_RATIO_MIN,
                    profile_target: float = PROFILE_CONTACT_RATIO_MIN,
-                   judge=None, teeth_check=None) -> str | None:
+                   judge=None, teeth_check: _CountsCheck | None = None) -> str | None:
     """The cause and the remedy, in basic-file fields, of every contact ratio of a design
     below its limit: the face contact ratio (:func:`overlap_text`) and the profile contact
     ratio (:func:`profile_remedy`: the depth factor ``k_d``, the pressure angle
