@@ -405,6 +405,40 @@ def test_the_12x12_miters_note_names_the_teeth_where_no_width_nor_angle_reaches(
     assert "the ratio then" not in text
 
 
+def test_the_module_remedy_is_checked_before_it_is_offered():
+    """The 12x12 miter's module remedy (27x27, the least count reaching 1.25 by ISO
+    10300-1 A.2) with a stand-in of the synthesis check (issue 71, round 96: the 15x15
+    hypoid's 57x57 was offered "not checked by a synthesis" and has none): where the least
+    count fails, the next count 5 pinion teeth up that passes is offered with what failed
+    before it, and it reaches the target by hand; where every count tried fails, no count
+    is offered as reaching it: what failed is said, and that the cutter radius limits it."""
+    design = load_basic(ROOT / "tests" / "data" / "limits"
+                        / "spiral_bevel_12x12_miter_b35.toml").design
+    asked = []
+
+    def check(z1, z2):
+        asked.append((z1, z2))
+        return None if z1 >= 32 else "machine settings: no envelope solution (stand-in)"
+
+    text = overlap_text(design, teeth_check=check)
+    assert asked == [(27, 27), (32, 32)]
+    assert _eps_vb(dataclasses.replace(design, z1=32, z2=32)) >= FACE_CONTACT_RATIO_MIN
+    assert "z1 32 and z2 32 (now 12 and 12; m_mn " in text
+    assert ("reach 1.25, checked by a synthesis of the file with these counts "
+            "(`--no-development`): its unloaded contact is computed; not 27x27: machine "
+            "settings: no envelope solution (stand-in)") in text
+    assert "not checked" not in text and "z1 27 and z2 27" not in text
+    asked.clear()
+    text = low_ratio_text(design, teeth_check=lambda z1, z2: asked.append(z1) or "lost")
+    assert asked == [27, 32, 37, 42]
+    assert ("z1 27 and z2 27 would reach 1.25, but no synthesis of the file with 4 counts "
+            "from 27x27 up has an unloaded contact `ltca run` computes (27x27: lost; "
+            "32x32: lost; 37x37: lost; 42x42: lost); at the cutter radius rc0") in text
+    assert "reach 1.25, checked" not in text and "not checked" not in text
+    # without a check (ltca run's next steps, which record none) the offer says so
+    assert "reach 1.25 (not checked by a synthesis)" in overlap_text(design)
+
+
 def test_the_teeth_remedy_keeps_the_ratio_as_near_as_whole_teeth_allow():
     """A non-miter below its target (the 17x29 at Σ 100°, ε_vβ 0.96 at b2 24 mm): the
     tooth numbers returned keep z2 = round(z1 u) and reach 1.25 by hand, the pinion one

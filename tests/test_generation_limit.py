@@ -129,6 +129,39 @@ def test_synthesize_no_development_refuses_the_15x15(tmp_path, capsys):
     assert first < err.index("Changes to try: face contact ratio eps_vb 0.29")
     assert "z1 30 and z2 30 (now 15 and 15) generate 100 % of it" in err
     assert "not 20x20: far from conjugate" in err
+    # the module remedy of the low eps_vb checked before it is offered (issue 71, round
+    # 96): 57x57, the least count that reaches 1.25, has no envelope solution as `ltca
+    # synthesize --no-development` makes it at rc0 76.2; 62x62 (eps_vb 1.39) has its
+    # unloaded contact (that file's `ltca synthesize --no-development` writes its case)
+    assert "not checked by a synthesis" not in err
+    assert ("z1 62 and z2 62 (now 15 and 15; m_mn 2.01 mm, now 8.30) reach 1.25, checked "
+            "by a synthesis of the file with these counts") in err
+    assert "not 57x57: machine settings: no envelope solution" in err
+
+
+def test_the_module_remedys_counts_are_checked_as_the_edited_file_synthesises():
+    """teeth_checker on the user's 15x15 (1-2 s of CPU per count): the least count the
+    eps_vb formula names (57x57, ISO 10300-1 A.2, teeth_remedy) has no unloaded contact
+    as the edited file synthesises (tip planes placed, the um-sized defaults scaled to
+    its module 2.18 mm); 62x62 synthesises with its contact computed. The check reads the
+    file with the counts as the user would edit it: the same counts put into the loaded
+    design (defaults of the 8.30 mm module kept) is another synthesis."""
+    from contact.load_capacity.iso10300.face_contact import teeth_remedy
+    from contact.optimize.development_conjugacy import counts_basic, teeth_checker
+    from geometry.synthesis.basic_design import EDGE_BREAK_RADIUS, load_basic
+
+    basic = load_basic(BASIC)
+    assert teeth_remedy(basic.design) == (57, 57)
+    edited = counts_basic(basic, 57, 57)
+    assert (edited.design.z1, edited.design.z2, edited.path) == (57, 57, basic.path)
+    # the defaults follow the module as in the file edited by hand (the CLI's note says
+    # "the um-sized defaults x 0.669" at 62 teeth; at 57, m_mn 2.18 / 3)
+    assert basic.options.edge_break_radius is None  # scale 1 at 8.30 mm: the case's own
+    assert 0 < edited.options.edge_break_radius < EDGE_BREAK_RADIUS
+    check = teeth_checker(basic)
+    why = check(57, 57)
+    assert why is not None and "no envelope solution at the middle of the flank" in why
+    assert check(62, 62) is None
 
 
 def test_ltca_runs_next_step_names_the_generation_limit_first():

@@ -15,6 +15,7 @@ with ``tomllib``/xarray, the edge shares summed against
 from __future__ import annotations
 
 import json
+import math
 import tomllib
 from importlib import resources
 
@@ -816,6 +817,64 @@ def test_a_duty_cycle_judges_the_ratings_safeties_it_prints_as_ltca_run():
     old = rated.drop_vars("contact_safety_min")
     assert "rating" not in verdict(old).checks
     assert ("rating", "the result lacks its data") in verdict(old).unchecked
+
+
+def test_a_coast_spectrum_above_the_coast_design_torque_says_so():
+    """Issue 71 (round 96): ``ltca duty-cycle --flank coast`` with a spectrum above the
+    case's ``[rating] coast_design_torque`` got ATTENTION and never said the spectrum is
+    above it. The bins' rating keeps which field its design torque is (the coast side's
+    own where given, ISO 10300 rated at long life up to it), and the verdict names the
+    coast design torque and the bins above it: a note (the severity is the findings'),
+    and in the rating's attention "the rating's coast design torque". Measured on the
+    hypoid 5x43 (coast design torque 80.45 N·m): its 40/90 N·m spectrum's verdict notes
+    bin 1. Stand-in datasets below; the bins' rating on the real case."""
+    from pathlib import Path
+
+    from contact.load_capacity.iso10300.beside import bin_ratings
+    from contact.study.verdicts import COAST_DESIGN_FIELD, duty_above_coast_design
+    from geometry.case import load_case
+
+    path = Path(__file__).resolve().parent / "data" / "hypoid_5x43_case.toml"
+    table = tomllib.loads(path.read_text(encoding="utf-8"))["rating"]
+    case = load_case(path)
+    coast, _ = bin_ratings(case, [40.0, 90.0], [1500.0, 600.0], "coast")
+    drive, _ = bin_ratings(case, [40.0, 90.0], [1500.0, 600.0], "drive")
+    # the file's own fields, read independently of the rating
+    assert float(coast["design_torque"]) == table["coast_design_torque"] == 80.45
+    assert coast["design_torque"].attrs["clause"] == COAST_DESIGN_FIELD
+    assert float(drive["design_torque"]) == table["design_torque"] == 83.86
+    assert drive["design_torque"].attrs["clause"] == "[rating] design_torque"
+
+    def ds(design: float, clause: str | None) -> xr.Dataset:
+        var = xr.DataArray(design, attrs={} if clause is None else {"clause": clause})
+        return _duty().assign(rating_design_torque=var)
+
+    above = ds(300.0, COAST_DESIGN_FIELD)  # bins at 250 and 500 N·m
+    note = duty_above_coast_design(above)
+    assert note.startswith("the spectrum is above the coast design torque 300 N·m ([rating] "
+                           "coast_design_torque, the coast side's long-life capacity")
+    assert note.endswith("in bin 1 (500 N·m): the coast side is rated at long life only up "
+                         "to it; above it the bins' findings and the damage over the cycle "
+                         "judge the loads")
+    v = verdict(above)
+    assert v.notes == (note,) and v.severity == "pass"  # said, not judged twice
+    both = duty_above_coast_design(ds(200.0, COAST_DESIGN_FIELD))
+    assert "in bins 0 (250 N·m), 1 (500 N·m):" in both
+    # none above it, the drive side's design torque, a file written before the clause: none
+    for quiet in (ds(500.0, COAST_DESIGN_FIELD), ds(300.0, "[rating] design_torque"),
+                  ds(300.0, "[rating]"), ds(300.0, None), ds(math.nan, COAST_DESIGN_FIELD)):
+        assert duty_above_coast_design(quiet) is None and verdict(quiet).notes == ()
+    # the rating's attention names the coast design torque as such
+    rated = above.assign(
+        iso_contact_safety=(("bin", "member"), [[1.33, 1.33], [0.93, 0.93]]),
+        contact_safety_min=((), 1.0), bending_safety_min=((), 1.3))
+    reason = next(f.reason for f in verdict(rated).findings if f.check == "rating")
+    assert ("in bin 1 (lowest: bin 1, 500 N·m); above the rating's coast design torque "
+            "300 N·m ([rating] coast_design_torque): a load of finite life") in reason
+    drive_rated = rated.assign(rating_design_torque=xr.DataArray(
+        300.0, attrs={"clause": "[rating] design_torque"}))
+    assert "above the rating's design torque 300 N·m: a load" in next(
+        f.reason for f in verdict(drive_rated).findings if f.check == "rating")
 
 
 def test_a_duty_bin_above_the_static_strength_is_told_apart_from_a_finite_life():

@@ -74,7 +74,9 @@ def refusal_text(case, design, why: str, basic=None) -> str:
     made cannot be computed: what failed, that no case is written, and the remedies the
     notes know — the contact ratios below their limits with the basic-file changes that
     reach them (:func:`contact.load_capacity.iso10300.face_contact.low_ratio_text` at the
-    limits of ``ltca synthesize``'s note, not checked by a synthesis here), and the cutter radius.
+    limits of ``ltca synthesize``'s note; a tooth-count remedy checked by a synthesis of
+    the counts where ``basic`` is given, :func:`contact.optimize.development_conjugacy.
+    teeth_checker`), and the cutter radius.
 
     Parameters
     ----------
@@ -104,6 +106,7 @@ def refusal_text(case, design, why: str, basic=None) -> str:
     contact ratio (docs/own_gear_set.md, round 17) are what the notes know to change.
     """
     from contact.load_capacity.iso10300.face_contact import low_ratio_text
+    from contact.optimize.development_conjugacy import teeth_checker
     from contact.optimize.written_notes import (
         FACE_CONTACT_RATIO_NOTE,
         PROFILE_CONTACT_RATIO_NOTE,
@@ -112,7 +115,8 @@ def refusal_text(case, design, why: str, basic=None) -> str:
 
     flank = case.pair.drive_flank
     try:
-        ratios = low_ratio_text(design, FACE_CONTACT_RATIO_NOTE, PROFILE_CONTACT_RATIO_NOTE)
+        ratios = low_ratio_text(design, FACE_CONTACT_RATIO_NOTE, PROFILE_CONTACT_RATIO_NOTE,
+                                teeth_check=None if basic is None else teeth_checker(basic))
     except (InputError, ValueError, ZeroDivisionError):
         ratios = None
     limited = _generation_cause(case, basic)

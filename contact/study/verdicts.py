@@ -192,12 +192,14 @@ from geometry.core.text import plain_number
 if TYPE_CHECKING:
     from contact.load_capacity.durability import StaticContactStrength
 
-__all__ = ["CHECKS", "CHECK_ORDER", "DUTY_EFFICIENCY", "DUTY_MIN_SAFETY", "EDGE_SHARE_MIN",
+__all__ = ["CHECKS", "CHECK_ORDER", "COAST_DESIGN_FIELD", "DUTY_EFFICIENCY", "DUTY_MIN_SAFETY",
+           "EDGE_SHARE_MIN",
            "EFFICIENCY_NOT_JUDGED", "GRADE", "LTE_FAIL_FACTOR", "LTE_LIMIT",
            "MICROPITTING_MIN", "PRINTED_NOT_JUDGED", "SCUFFING_MIN", "SEVERITIES",
            "STUDY_NOT_CHECKED_ATTR", "STUDY_NOT_JUDGED",
            "STUDY_PRINTED", "VH_SAME_POSITION", "VH_TARGET_TOLERANCE", "EdgePeaks", "Finding",
-           "Verdict", "duty_static_bins", "edge_contact_share", "edge_peaks",
+           "Verdict", "duty_above_coast_design", "duty_static_bins", "edge_contact_share",
+           "edge_peaks",
            "efficiency_not_judged",
            "flank_static_strength",
            "not_checked_line", "quiet_transfer", "shown_above", "shown_below",
@@ -297,7 +299,9 @@ class Verdict:
         edges, their shares and ``p_max edge``); a duty-cycle bin's above the
         static strength only through them (the ``static`` check); the FE level of a
         root stress computed on a named cheaper model and its accuracy against the
-        default model (:func:`contact.ltca.root_stress.fe_level_note`).
+        default model (:func:`contact.ltca.root_stress.fe_level_note`); a coast-flank
+        duty spectrum's bins above the coast design torque
+        (:func:`duty_above_coast_design`).
     """
 
     kind: str
@@ -1457,6 +1461,68 @@ def _duty_lte(ds: xr.Dataset, limit: float = LTE_LIMIT) -> list[Finding]:
                     "run` judges the design's own LTE)")]
 
 
+#: the ``clause`` of a duty cycle's ``rating_design_torque`` where it is the coast side's
+#: (:func:`contact.load_capacity.iso10300.beside.bin_ratings`)
+COAST_DESIGN_FIELD = "[rating] coast_design_torque"
+
+
+def _coast_design(ds: xr.Dataset) -> bool:
+    """Whether the duty cycle's ``rating_design_torque`` is the case's ``[rating]
+    coast_design_torque`` (the coast side rated at its own design torque; a file written
+    before its clause said so: False)."""
+    return ("rating_design_torque" in ds
+            and ds["rating_design_torque"].attrs.get("clause") == COAST_DESIGN_FIELD)
+
+
+def _design_words(ds: xr.Dataset, design: float) -> str:
+    """"the rating's design torque 250 N·m", or on the coast side rated at its own
+    "the rating's coast design torque 80.45 N·m ([rating] coast_design_torque)"."""
+    if _coast_design(ds):
+        return f"the rating's coast design torque {_t(design)} ({COAST_DESIGN_FIELD})"
+    return f"the rating's design torque {_t(design)}"
+
+
+def duty_above_coast_design(ds: xr.Dataset) -> str | None:
+    """The duty verdict's note where a coast-flank spectrum has bins above the coast design
+    torque; None where it has none or the rating's design torque is not the coast side's.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        The ``/duty_cycle`` dataset: ``torque`` (bin) [N·m] and ``rating_design_torque``
+        [N·m] whose ``clause`` is :data:`COAST_DESIGN_FIELD`.
+
+    Returns
+    -------
+    str or None
+        E.g. "the spectrum is above the coast design torque 80.45 N·m ([rating]
+        coast_design_torque, the coast side's long-life capacity; …) in bin 1 (90 N·m):
+        the coast side is rated at long life only up to it; …".
+
+    Notes
+    -----
+    ``ltca run --flank coast`` runs its torques up to the coast design torque
+    (:func:`contact.pipeline.flank_torques`) and the bundled illustrative spectrum tops
+    at it; a spectrum of the user's above it got the duty verdict's attention without
+    saying so (issue 71, round 96), where ``ltca run``'s rating says "above the design
+    torque" for the drive side's.
+    """
+    if not _coast_design(ds) or "torque" not in ds:
+        return None
+    design = float(ds["rating_design_torque"])
+    torques = np.asarray(ds["torque"].values, float)
+    above = np.flatnonzero(np.isfinite(torques) & (torques > design)) if np.isfinite(
+        design) else np.array([], int)
+    if not above.size:
+        return None
+    bins = ", ".join(f"{i} ({_t(float(torques[i]))})" for i in above)
+    return (f"the spectrum is above the coast design torque {_t(design)} "
+            f"({COAST_DESIGN_FIELD}, the coast side's long-life capacity; `ltca run --flank "
+            f"coast` analyses up to it) in bin{'s' * (above.size > 1)} {bins}: the coast "
+            "side is rated at long life only up to it; above it the bins' findings and the "
+            "damage over the cycle judge the loads")
+
+
 def _duty_root_stress(ds: xr.Dataset) -> list[Finding]:
     """Each bin's S_F,FE (``root_stress_safety``) against the rating's S_F,min, judged by
     ``ltca run``'s rule (:func:`contact.study.verdict_checks.root_safety_severity`): the
@@ -1480,7 +1546,7 @@ def _duty_root_stress(ds: xr.Dataset) -> list[Finding]:
             why = (f"at or below the rating's design torque, the rule `ltca run` fails by, "
                    f"at the bin's misalignment{_bin_misalignment(ds, i)}"
                    if severity == "fail" else
-                   f"above the rating's design torque {_t(design)}: a load of finite life, "
+                   f"above {_design_words(ds, design)}: a load of finite life, "
                    "the root damage over the cycle decides")
             out.append(Finding(
                 severity, "root_stress",
@@ -1558,7 +1624,7 @@ def _duty_rating(ds: xr.Dataset) -> list[Finding]:
             bins = [i for i in bins if i not in above]
             if bins:
                 i = min(bins, key=lambda b: safety[b, k])
-                why = (f"above the rating's design torque {_t(design)}: a load of finite "
+                why = (f"above {_design_words(ds, design)}: a load of finite "
                        "life, the damage over the cycle decides"
                        if torques[i] > design else
                        "at or below the rating's design torque, at the bin's speed (the "
@@ -1830,6 +1896,8 @@ def verdict(result: xr.DataTree | xr.Dataset, *, lte_limit: float = LTE_LIMIT) -
     elif kind == "duty cycle":
         ds = result["duty_cycle"].to_dataset() if isinstance(result, xr.DataTree) else result
         notes = (_duty_static(ds) or ([], []))[1]
+        coast = duty_above_coast_design(ds)
+        notes += [coast] if coast is not None else []
     unchecked = _unchecked(result, kind, checks) + tuple(_printed_not_judged(result, kind))
     return Verdict(kind, _worst_first(findings), tuple(checks), unchecked, tuple(notes))
 

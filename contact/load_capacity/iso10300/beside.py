@@ -277,7 +277,11 @@ def bin_ratings(case, torque: Any, speed: Any, flank: str | None = None
         "design_torque": data_var((), float(ratings[0]["design_torque"])
                                   if "design_torque" in ratings[0] else np.nan, "N m",
                                   "the rating's design torque (NaN: every torque)",
-                                  clause="[rating]"),
+                                  # the field it is: [rating] coast_design_torque on the
+                                  # coast side where given (the duty verdict names it)
+                                  clause=str(ratings[0]["design_torque"].attrs.get(
+                                      "clause", "[rating]"))
+                                  if "design_torque" in ratings[0] else "[rating]"),
     }
     members = list(ratings[0]["member"].values)
     return xr.Dataset(out, coords={"member": data_var(("member",), members, None,

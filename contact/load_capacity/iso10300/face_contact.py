@@ -43,6 +43,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 __all__ = [
@@ -320,9 +321,22 @@ def _none_text(design, r: OverlapRemedy) -> str:
             f"{_SPIRAL_ANGLE_MAX:g} deg{beta_said}")
 
 
-def _teeth_text(design, target: float) -> str:
+#: ``check(z1, z2) -> str | None`` of a tooth-count remedy (:func:`overlap_text`)
+_CountsCheck = Callable[[int, int], "str | None"]
+
+#: tooth counts tried by :func:`_teeth_text`'s check: the least that reaches the target,
+#: then steps of :data:`_TEETH_STEP` pinion teeth (ratio kept), at most
+#: :data:`_TEETH_TRIALS` syntheses of 1-2 s of CPU each (issue 71, round 96: the 15x15
+#: hypoid's 57x57 has no unloaded contact at rc0 76.2 mm, 62x62 has)
+_TEETH_STEP, _TEETH_TRIALS = 5, 4
+
+
+def _teeth_text(design, target: float, check: _CountsCheck | None = None) -> str:
     """"; " and the tooth numbers of :func:`teeth_remedy` as the note's last clause, or
-    "" where none is found."""
+    "" where none is found; with ``check`` (``check(z1, z2) -> str | None``: None where
+    the counts synthesise into a case whose unloaded contact is computed, else what
+    failed) the offer is checked: the least count that reaches ``target`` and passes,
+    of :data:`_TEETH_TRIALS` tried, or what failed and no offer."""
     z = teeth_remedy(design, target)
     if z is None:
         return ""
@@ -331,12 +345,50 @@ def _teeth_text(design, target: float) -> str:
              f", the ratio then {z[1] / z[0]:.3f} (now {z2 / z1:.3f})")
     from geometry.iso23509.blank import blank_geometry
 
+    lever = ("; the module is the lever left: more teeth at the same d_e2, b2 and beta_m "
+             "lower the mean normal module and raise eps_vb in proportion")
     m_now = float(blank_geometry(design).m_mn)
-    m_then = float(blank_geometry(dataclasses.replace(design, z1=z[0], z2=z[1])).m_mn)
-    return (f"; the module is the lever left: more teeth at the same d_e2, b2 and beta_m "
-            f"lower the mean normal module and raise eps_vb in proportion, z1 {z[0]} and "
-            f"z2 {z[1]} (now {z1} and {z2}{ratio}; m_mn {m_then:.2f} mm, now {m_now:.2f}) "
-            f"reach {target:g} (not checked by a synthesis)")
+    if check is None:
+        m_then = float(blank_geometry(dataclasses.replace(design, z1=z[0], z2=z[1])).m_mn)
+        return (f"{lever}, z1 {z[0]} and z2 {z[1]} (now {z1} and {z2}{ratio}; m_mn "
+                f"{m_then:.2f} mm, now {m_now:.2f}) reach {target:g} (not checked by a "
+                "synthesis)")
+    failed = []
+    for n1, n2 in _teeth_trials(design, z, target):
+        why = check(n1, n2)
+        if why is None:
+            m_then = float(blank_geometry(dataclasses.replace(design, z1=n1, z2=n2)).m_mn)
+            ratio = ("" if n2 * z1 == n1 * z2 else
+                     f", the ratio then {n2 / n1:.3f} (now {z2 / z1:.3f})")
+            before = f"; not {'; '.join(failed)}" if failed else ""
+            return (f"{lever}, z1 {n1} and z2 {n2} (now {z1} and {z2}{ratio}; m_mn "
+                    f"{m_then:.2f} mm, now {m_now:.2f}) reach {target:g}, checked by a "
+                    "synthesis of the file with these counts (`--no-development`): its "
+                    f"unloaded contact is computed{before}")
+        failed.append(f"{n1}x{n2}: {why}")
+    rc0 = getattr(design, "rc0", None)
+    limit = ("" if rc0 is None else
+             f"; at the cutter radius rc0 {rc0:g} mm the tooth count does not reach it")
+    return (f"{lever}, z1 {z[0]} and z2 {z[1]} would reach {target:g}, but no synthesis "
+            f"of the file with {len(failed)} counts from {z[0]}x{z[1]} up has an unloaded "
+            f"contact `ltca run` computes ({'; '.join(failed)}){limit}")
+
+
+def _teeth_trials(design, z: tuple[int, int], target: float) -> list[tuple[int, int]]:
+    """The tooth counts :func:`_teeth_text` checks: ``z`` (the least that reaches
+    ``target``) and those :data:`_TEETH_STEP` pinion teeth apart that reach it too, the
+    ratio kept, at most :data:`_TEETH_TRIALS`."""
+    u = z[1] / z[0]
+    out = [z]
+    n1 = z[0]
+    while len(out) < _TEETH_TRIALS:
+        n1 += _TEETH_STEP
+        n2 = max(n1, round(n1 * u))
+        if n2 > 500:
+            break
+        if _eps_vb_or_nan(design, z1=n1, z2=n2) >= target:
+            out.append((n1, n2))
+    return out
 
 
 def _profile_after(design, **change) -> str:
@@ -394,7 +446,8 @@ def overlap_changes(r: OverlapRemedy, design) -> list[RatioChange]:
     return ways
 
 
-def overlap_text(design, target: float = FACE_CONTACT_RATIO_MIN, judge=None) -> str | None:
+def overlap_text(design, target: float = FACE_CONTACT_RATIO_MIN, judge=None,
+                 teeth_check: _CountsCheck | None = None) -> str | None:
     """The cause and the remedy of a low face contact ratio in one sentence (``ltca
     synthesize``'s note, the LTE-spread next step of ``ltca run`` and ``ltca duty-cycle``);
     None where ε_vβ meets ``target`` or the blank cannot be computed.
@@ -409,6 +462,13 @@ def overlap_text(design, target: float = FACE_CONTACT_RATIO_MIN, judge=None) -> 
         :class:`RatioChange` list (:func:`overlap_changes`), where each change is checked
         before it is offered (:func:`low_ratio_text`); by default they are offered as
         equals.
+    teeth_check : callable, optional
+        ``teeth_check(z1, z2) -> str | None``: where no face width nor spiral angle
+        reaches ``target``, the tooth counts offered are checked by it (None: they
+        synthesise into a case whose unloaded contact is computed; else what failed) and
+        the least count that reaches ``target`` and passes is offered, or none with what
+        failed (:func:`contact.optimize.development_conjugacy.teeth_checker`); by default
+        the least count is offered "not checked by a synthesis".
 
     Returns
     -------
@@ -433,7 +493,7 @@ def overlap_text(design, target: float = FACE_CONTACT_RATIO_MIN, judge=None) -> 
         f"no face width up to R_e2/2 nor spiral angle up to {_SPIRAL_ANGLE_MAX:g} deg"
     remedy = (judge(changes, r.target, none) if judge is not None and changes
               else _either([c.text for c in changes], r.target, none)
-              + ("" if changes else _teeth_text(design, r.target)))
+              + ("" if changes else _teeth_text(design, r.target, teeth_check)))
     return (f"face contact ratio eps_vb {_below(r.eps_vb, r.target)} is below {r.target:g}, "
             "the least "
             "bevel-gear design practice asks for (AGMA 2005-D03): a localised bearing then "
@@ -675,7 +735,7 @@ def _profile_text(r: ProfileRemedy, judge=None) -> str:
 
 def low_ratio_text(design, face_target: float = FACE_CONTACT_RATIO_MIN,
                    profile_target: float = PROFILE_CONTACT_RATIO_MIN,
-                   judge=None) -> str | None:
+                   judge=None, teeth_check: _CountsCheck | None = None) -> str | None:
     """The cause and the remedy, in basic-file fields, of every contact ratio of a design
     below its limit: the face contact ratio (:func:`overlap_text`) and the profile contact
     ratio (:func:`profile_remedy`: the depth factor ``k_d``, the pressure angle
@@ -693,6 +753,8 @@ def low_ratio_text(design, face_target: float = FACE_CONTACT_RATIO_MIN,
         offered (``ltca synthesize``: :func:`contact.optimize.remedy_check.
         checked_remedy_text`; ``ltca run``: the checks the case records); by default the
         changes are offered as equals ("… or …, the other kept, reaches 1").
+    teeth_check : callable, optional
+        The face contact ratio's tooth-count check (:func:`overlap_text`).
 
     Returns
     -------
@@ -704,7 +766,7 @@ def low_ratio_text(design, face_target: float = FACE_CONTACT_RATIO_MIN,
     from geometry.core.errors import InputError
 
     parts = []
-    face = overlap_text(design, face_target, judge)
+    face = overlap_text(design, face_target, judge, teeth_check)
     if face is not None:
         parts.append(face)
     try:
