@@ -346,7 +346,8 @@ def coast_light_edge(developed: BasicDesign, drive: DevelopmentEvaluation,
     kinds = ", ".join(EDGE_WORDS[k] for k in coast_light_edge_kinds(old))
     say(f"development: coast flank's edge at its light torque "
         f"{plain_number(coast.torques[0])} N m (p_max edge {np.nan_to_num(p):.0f} MPa, "
-        f"edge share {100.0 * np.nan_to_num(s):.2g} %; {kinds}): its relief, at most "
+        f"edge share {100.0 * np.nan_to_num(s):.2g} %; {kinds}; the coast design as the "
+        f"earlier coast steps left it, at ltca run's default sampling): its relief, at most "
         f"{COAST_LIGHT_EDGE_STEPS} designs")
     written = written_coast(developed, drive, memo)
     got = checked_coast_light_edge(old, targets, dict(setup, torques=list(coast.torques)),
@@ -355,3 +356,67 @@ def coast_light_edge(developed: BasicDesign, drive: DevelopmentEvaluation,
     if got is old:
         return None
     return written.outcome(coast, got)
+
+
+def written_coast_light_edge_line(read: DevelopmentEvaluation | None,
+                                  written: DevelopmentEvaluation | None,
+                                  torque: float) -> str | None:
+    """The development's line on the coast flank *written* at its light torque, where a
+    later coast step (the coast edge-peak step, :mod:`~contact.optimize.
+    development_coast_edge_peak`) changed the design whose light-torque edge this step
+    read (``read``): its ``p_max edge`` [MPa], edge share [%] and loaded edge kinds, as
+    ``ltca run --flank coast`` reads the written case (the same torque, the same default
+    sampling), beside the reading of the design before that step.
+
+    Parameters
+    ----------
+    read : DevelopmentEvaluation or None
+        The coast design the light-edge step read (its metrics per torque, light first).
+    written : DevelopmentEvaluation or None
+        The coast design written (after every coast step).
+    torque : float
+        The coast light torque [N·m].
+
+    Returns
+    -------
+    str or None
+        The line; None where ``read`` loads no edge at the light torque (the light-edge
+        step said nothing), where the prescriptions did not change after it (its line is
+        the written case's), or where ``written`` carries no light-torque edge reading.
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Why: on the FM spiral bevel 13×17 at Σ 50° the light-edge step read 1640 MPa and
+    0.23 % at 18.4 N·m on the coast design with relief_start 0.5 and root relief 15 µm;
+    the coast edge-peak step then wrote relief_start 0.4 and root relief 22.5 µm, whose
+    light torque ``ltca run --flank coast`` reads as 1061 MPa on the gear toe and
+    3.2·10⁻⁵ % (the same torque, the same sampling: LTE 51.1 / 91.1 µrad in both). Both
+    readings are right for the design each measured; the line names the written one so
+    that it is not taken for the run's. Source: issue 71; docs/synthesis.md, "The coast
+    flank's light-torque edge".
+    """
+    if read is None or written is None or not light_edge_loaded(read):
+        return None
+    changed = {k: (v, written.values[k]) for k, v in read.values.items()
+               if k in written.values and not math.isclose(float(v), float(written.values[k]),
+                                                            rel_tol=1e-9, abs_tol=1e-12)}
+    got = light_edge(written)
+    if not changed or got is None:
+        return None
+    before = light_edge(read) or (math.nan, math.nan)
+    m = written.metrics or {}
+    kinds = [EDGE_WORDS[k] for k in EDGE_KINDS if f"edge_pressure_{k}" in m
+             and float(np.nan_to_num(np.asarray(m[f"edge_pressure_{k}"], float)[0])) > 0.0]
+    steps = ", ".join(f"{k} {plain_number(a)} -> {plain_number(b)}"
+                      for k, (a, b) in changed.items())
+    where = f"; {', '.join(kinds)}" if kinds else ""
+    return (f"development: the coast flank written ({steps} after the light-edge step) "
+            f"at its light torque {plain_number(torque)} N m, as ltca run --flank coast "
+            f"reads it (the same torque and default sampling): p_max edge "
+            f"{np.nan_to_num(got[0]):.0f} MPa, edge share {100.0 * np.nan_to_num(got[1]):.2g} %"
+            f"{where}; the light-edge step's {np.nan_to_num(before[0]):.0f} MPa, "
+            f"{100.0 * np.nan_to_num(before[1]):.2g} % were of the design before it")
