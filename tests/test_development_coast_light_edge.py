@@ -307,3 +307,84 @@ def test_two_loaded_edges_relieved_together(monkeypatch):
     assert not light_edge_loaded(got)
     assert any("not kept: it still loads an edge at the light torque (p_max edge 900 MPa"
                in s and "gear toe" in s for s in lines), lines
+
+
+#: the 13x17's coast flank (the FM spiral bevel at Sigma 50 deg): the design the light-edge
+#: step read, and the one the coast edge-peak step wrote after it
+COAST_17_READ = dict(COAST, ellipse_length=0.75, tip_relief_start=0.5, root_relief=15.0,
+                     relief_start=0.5)
+COAST_17_WRITTEN = dict(COAST_17_READ, root_relief=22.5, relief_start=0.4)
+
+
+def _read_and_written():
+    from development_stand_ins import checked
+
+    from contact.optimize.development import DevelopmentTargets
+
+    # the readings logged by branch coastedge95 (docs/synthesis.md, "The coast flank's
+    # light-torque edge"), the readings of contact.optimize.development_evaluate.
+    # light_edge_metrics on `ltca run --flank coast` of both designs (this branch's
+    # /work/wt/coastread96_runs): the step's 1640 MPa / 0.23 % on gear tip (1640) and toe
+    # (400); the case written 1061 MPa on the gear toe, 3.2e-5 % of the torque: a counted
+    # share of 0 (below the verdict's 0.05 %)
+    read = checked(dict(COAST_17_READ), _metrics(
+        pressure_max_edge=[1640.0, 4994.0], edge_contact_share=[0.0023, 0.01],
+        edge_pressure_gear_tip=[1640.0, 4994.0], edge_pressure_gear_toe=[400.0, 4607.0]),
+        DevelopmentTargets(), 0.6)
+    written = checked(dict(COAST_17_WRITTEN), _metrics(
+        pressure_max_edge=[1061.0, 4575.0], edge_contact_share=[0.0, 0.0082],
+        edge_pressure_gear_tip=[0.0, 4575.0], edge_pressure_gear_toe=[1061.0, 4467.0]),
+        DevelopmentTargets(), 0.6)
+    return read, written
+
+
+def test_the_written_coast_light_edge_is_said_after_a_later_step():
+    """Issue 71 (13x17): the light-edge step's line read the coast design before the
+    coast edge-peak step (relief_start 0.5, root relief 15 um: 1640 MPa, 0.23 %); the
+    case written carries that step's relief_start 0.4, root relief 22.5 um, which `ltca
+    run --flank coast` reads as 1061 MPa on the gear toe, 3.2e-5 %. The development says
+    the written flank's reading, its changed prescriptions and that the step's was of the
+    design before: the numbers are the metrics' own (formatted, no tolerance: exact)."""
+    read, written = _read_and_written()
+    line = dcl.written_coast_light_edge_line(read, written, 18.4)
+    assert line is not None
+    assert "relief_start 0.5 -> 0.4" in line and "root_relief 15 -> 22.5" in line, line
+    assert "18.4 N m" in line and "ltca run --flank coast" in line, line
+    assert ("p_max edge 1061 MPa, edge share below the 0.05 % of the torque the verdict "
+            "counts; gear toe;") in line, line
+    assert "gear tip" not in line, line  # cleared at the light torque by the later step
+    assert "p_max edge 1640 MPa, edge share 0.23 % were of the design before it" in line, line
+
+
+def test_no_written_line_where_the_read_design_is_written_or_edge_free():
+    """Nothing said where the design the step read is the one written (its line is the
+    written case's), where it loaded no edge at the light torque (the step said nothing),
+    or where the written design carries no light-torque reading."""
+
+
+    read, written = _read_and_written()
+    assert dcl.written_coast_light_edge_line(read, read, 18.4) is None
+    clear = dataclasses.replace(read, metrics=_metrics(
+        pressure_max_edge=[0.0, 4994.0], edge_contact_share=[0.0, 0.01]))
+    assert dcl.written_coast_light_edge_line(clear, written, 18.4) is None
+    bare = dataclasses.replace(written, metrics={
+        k: v for k, v in written.metrics.items()
+        if k not in ("pressure_max_edge", "edge_contact_share")})
+    assert dcl.written_coast_light_edge_line(read, bare, 18.4) is None
+    assert dcl.written_coast_light_edge_line(None, written, 18.4) is None
+
+
+def test_the_development_says_the_written_coast_light_edge():
+    """The development's wiring: after the coast edge-peak step, the line is said for the
+    coast outcome written at its two torques, and nothing for one without them."""
+    from contact.optimize import development as dev
+
+    read, written = _read_and_written()
+    Outcome = collections.namedtuple("Outcome", "basic best torques")
+    lines = []
+    dev._say_written_coast_light_edge(read, Outcome(None, written, (18.4, 122.7)),
+                                      lines.append)
+    assert len(lines) == 1 and "p_max edge 1061 MPa" in lines[0], lines
+    dev._say_written_coast_light_edge(read, Outcome(None, written, (18.4,)), lines.append)
+    dev._say_written_coast_light_edge(read, None, lines.append)
+    assert len(lines) == 1

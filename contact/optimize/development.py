@@ -159,7 +159,10 @@ from contact.optimize.development_coast_flank import (  # noqa: F401
     coast_start,
     coast_torque_searched,
 )
-from contact.optimize.development_coast_light_edge import coast_light_edge
+from contact.optimize.development_coast_light_edge import (
+    coast_light_edge,
+    written_coast_light_edge_line,
+)
 from contact.optimize.development_edge_peak import checked_edge_peak
 from contact.optimize.development_evaluate import (  # noqa: F401
     CHECK_LTCA,
@@ -776,9 +779,13 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
             (coast, developed, case, report), best, targets, setup, teeth, memo, say,
             coast_cap, basic, root_stress, write, rebuilt, coast_light_edge,
             "the coast light-edge relief")
+        read = coast.best if coast is not None else None
         coast, developed, case, report = _coast_edges_relieved(
             (coast, developed, case, report), best, targets, setup, teeth, memo, say,
             coast_cap, basic, root_stress, write, rebuilt)
+        # the light-edge step read the design before the edge-peak step: where that step
+        # changed it, the written flank's light torque said as ltca run reads it
+        _say_written_coast_light_edge(read, coast, say)
     coast_seconds += time.process_time() - c_cap
     # a root-limited torque decided on the default FE model: the case written names it
     # (ltca run reads the model the torque was decided with)
@@ -936,6 +943,20 @@ def _root_tree_of(case: Case, torques: list[float]):
     from contact.optimize import development_root
 
     return development_root._root_tree(case, torques)
+
+
+def _say_written_coast_light_edge(read: DevelopmentEvaluation | None, coast: Any,
+                                  say: Callable[[str], None]) -> None:
+    """Say the written coast flank's light-torque edge where a coast step after the
+    light-edge step changed the design it read (``read``; ``coast``: the coast outcome
+    written, its ``best`` checked at its two ``torques`` [N·m];
+    :func:`~contact.optimize.development_coast_light_edge.written_coast_light_edge_line`).
+    Raises nothing."""
+    if coast is None or len(coast.torques) != 2:
+        return
+    line = written_coast_light_edge_line(read, coast.best, float(coast.torques[0]))
+    if line:
+        say(line)
 
 
 def _coast_edges_relieved(written: tuple, drive: DevelopmentEvaluation,

@@ -64,7 +64,7 @@ from contact.optimize.development_range_lte import SAME_PEAK
 from contact.optimize.development_relief_lte import Sent, Try, checked_relief_variants
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import DevelopmentTargets
-from contact.study.verdicts import LTE_LIMIT
+from contact.study.verdicts import EDGE_SHARE_MIN, LTE_LIMIT
 from geometry.case import Case
 from geometry.core.text import plain_number
 from geometry.synthesis.basic_design import BasicDesign
@@ -346,7 +346,8 @@ def coast_light_edge(developed: BasicDesign, drive: DevelopmentEvaluation,
     kinds = ", ".join(EDGE_WORDS[k] for k in coast_light_edge_kinds(old))
     say(f"development: coast flank's edge at its light torque "
         f"{plain_number(coast.torques[0])} N m (p_max edge {np.nan_to_num(p):.0f} MPa, "
-        f"edge share {100.0 * np.nan_to_num(s):.2g} %; {kinds}): its relief, at most "
+        f"edge share {100.0 * np.nan_to_num(s):.2g} %; {kinds}; the coast design as the "
+        f"earlier coast steps left it, at ltca run's default sampling): its relief, at most "
         f"{COAST_LIGHT_EDGE_STEPS} designs")
     written = written_coast(developed, drive, memo)
     got = checked_coast_light_edge(old, targets, dict(setup, torques=list(coast.torques)),
@@ -355,3 +356,79 @@ def coast_light_edge(developed: BasicDesign, drive: DevelopmentEvaluation,
     if got is old:
         return None
     return written.outcome(coast, got)
+
+
+def written_coast_light_edge_line(read: DevelopmentEvaluation | None,
+                                  written: DevelopmentEvaluation | None,
+                                  torque: float) -> str | None:
+    """The development's line on the coast flank *written* at its light torque, where a
+    later coast step (the coast edge-peak step, :mod:`~contact.optimize.
+    development_coast_edge_peak`) changed the design whose light-torque edge this step
+    read (``read``): its ``p_max edge`` [MPa], edge share [%] and loaded edge kinds, as
+    ``ltca run --flank coast`` reads the written case (the same torque, the same default
+    sampling), beside the reading of the design before that step.
+
+    Parameters
+    ----------
+    read : DevelopmentEvaluation or None
+        The coast design the light-edge step read (its metrics per torque, light first).
+    written : DevelopmentEvaluation or None
+        The coast design written (after every coast step).
+    torque : float
+        The coast light torque [N·m].
+
+    Returns
+    -------
+    str or None
+        The line; None where ``read`` loads no edge at the light torque (the light-edge
+        step said nothing), where the prescriptions did not change after it (its line is
+        the written case's), or where ``written`` carries no light-torque edge reading.
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Why: on the FM spiral bevel 13×17 at Σ 50° the light-edge step read 1640 MPa and
+    0.23 % at 18.4 N·m on the coast design with relief_start 0.5 and root relief 15 µm;
+    the coast edge-peak step then wrote relief_start 0.4 and root relief 22.5 µm, whose
+    light torque ``ltca run --flank coast`` reads as 1061 MPa on the gear toe and
+    3.2·10⁻⁵ % of the torque (below the verdict's floor: a counted share of 0). The same
+    torque, the same sampling: ``ltca run`` of the design before that step reads 1640 MPa
+    and 0.23 %, LTE 46.4 / 98.4 µrad, as the development did (docs/synthesis.md). Both
+    readings are right for the design each measured; the line names the written one so
+    that it is not taken for the run's. Source: issue 71; docs/synthesis.md, "The coast
+    flank's light-torque edge".
+    """
+    if read is None or written is None or not light_edge_loaded(read):
+        return None
+    changed = {k: (v, written.values[k]) for k, v in read.values.items()
+               if k in written.values and not math.isclose(float(v), float(written.values[k]),
+                                                            rel_tol=1e-9, abs_tol=1e-12)}
+    got = light_edge(written)
+    if not changed or got is None:
+        return None
+    before = light_edge(read) or (math.nan, math.nan)
+    m = written.metrics or {}
+    kinds = [EDGE_WORDS[k] for k in EDGE_KINDS if f"edge_pressure_{k}" in m
+             and float(np.nan_to_num(np.asarray(m[f"edge_pressure_{k}"], float)[0])) > 0.0]
+    steps = ", ".join(f"{k} {plain_number(a)} -> {plain_number(b)}"
+                      for k, (a, b) in changed.items())
+    where = f"; {', '.join(kinds)}" if kinds else ""
+    return (f"development: the coast flank written ({steps} after the light-edge step) "
+            f"at its light torque {plain_number(torque)} N m, as ltca run --flank coast "
+            f"reads it (the same torque and default sampling): p_max edge "
+            f"{np.nan_to_num(got[0]):.0f} MPa, {_share_words(got[1])}{where}; the "
+            f"light-edge step's p_max edge {np.nan_to_num(before[0]):.0f} MPa, "
+            f"{_share_words(before[1])} were of the design before it")
+
+
+def _share_words(share: float) -> str:
+    """``edge share <s> %`` of a counted share [1] (the verdict's ``edge_contact_share``),
+    or that it is below the floor the verdict counts from where it is 0."""
+    s = float(np.nan_to_num(share))
+    if s > 0.0:
+        return f"edge share {100.0 * s:.2g} %"
+    return (f"edge share below the {100.0 * EDGE_SHARE_MIN:.2g} % of the torque the "
+            "verdict counts")
