@@ -57,7 +57,7 @@ from geometry.core.text import plain_number
 from geometry.synthesis.basic_design import BasicDesign
 
 __all__ = ["STAGE", "checked_coast_edge_peak", "coast_edge_bound", "coast_edge_peak",
-           "holds_as_before"]
+           "coast_peak_bound", "holds_as_before"]
 
 #: the check stage of the step's designs (:attr:`DevelopmentEvaluation.stage`)
 STAGE = "coast edge peak"
@@ -97,6 +97,40 @@ def coast_edge_bound(cap: CoastCapacity | None) -> float:
         return math.inf
     known = [x for x in (pitting_pressure(cap), float(final.limit)) if math.isfinite(x)]
     return min(known) if known else math.inf
+
+
+def coast_peak_bound(cap: CoastCapacity | None, best: DevelopmentEvaluation) -> float:
+    """The flank peak bound [MPa] a coast edge step's designs are held to:
+    :func:`coast_edge_bound`, else (no capacity search: a coast design torque given) the
+    flank's static strength at the coast design torque, the verdict's FAIL limit, as
+    ``best``'s metrics read it (``edge_static_strength``, the last torque's).
+
+    Parameters
+    ----------
+    cap : CoastCapacity or None
+        The coast capacity search's result.
+    best : DevelopmentEvaluation
+        The coast design written (its metrics per torque, light first).
+
+    Returns
+    -------
+    float — [MPa]
+        inf where neither is known.
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: :func:`coast_edge_bound`; ISO 6336-2 Z_NT at the static end × ISO 6336-5
+    σ_Hlim (``ltca run``'s ``edge_pressure`` limit).
+    """
+    bound = coast_edge_bound(cap)
+    m = best.metrics or {}
+    if not math.isfinite(bound) and "edge_static_strength" in m:
+        bound = float(m["edge_static_strength"][-1])
+    return bound
 
 
 def checked_coast_edge_peak(best: DevelopmentEvaluation, targets: DevelopmentTargets,
@@ -228,10 +262,7 @@ def coast_edge_peak(developed: BasicDesign, drive: DevelopmentEvaluation,
     if (old is None or not old.checked_full or len(coast.torques) != 2
             or targets.coast_max_evaluations == 0 or not edge_peak_runs_on(old, targets)):
         return None
-    bound = coast_edge_bound(cap)
-    if not math.isfinite(bound):  # no capacity search (a coast design torque given): the
-        # flank's static strength, the verdict's FAIL limit
-        bound = float(old.metrics["edge_static_strength"][-1])
+    bound = coast_peak_bound(cap, old)
     above = ", ".join(f"{k} {p:.0f} MPa" for k, p in edges_above(old).items())
     say(f"development: coast flank's edges above the static strength at "
         f"{plain_number(coast.torques[1])} N m ({above}): their relief, the flank peak bound "

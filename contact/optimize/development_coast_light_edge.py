@@ -47,7 +47,7 @@ import numpy as np
 from contact.ltca.edges import EDGE_KINDS
 from contact.optimize.development_coast import CoastCapacity
 from contact.optimize.development_coast_capacity_lte import coast_range_peak
-from contact.optimize.development_coast_edge_peak import coast_edge_bound
+from contact.optimize.development_coast_edge_peak import coast_peak_bound
 from contact.optimize.development_coast_flank import written_coast
 from contact.optimize.development_edge_peak import EDGE_WORDS, lever_designs, pitting_lost
 from contact.optimize.development_evaluate import KeptTeeth
@@ -115,11 +115,24 @@ def coast_light_edge_kinds(e: DevelopmentEvaluation) -> tuple[str, ...]:
     must be the loaded edge's. Source: ``ltca run``'s ``p_max edge`` (the peak over the
     edge segments of each kind, :func:`contact.study.verdicts.edge_peaks`).
     """
-    m = e.metrics or {}
-    read = {k: float(np.nan_to_num(np.asarray(m[f"edge_pressure_{k}"], float)[0]))
-            for k in EDGE_KINDS if f"edge_pressure_{k}" in m}
+    read = _light_edge_pressures(e)
     loaded = sorted((k for k, p in read.items() if p > 0.0), key=lambda k: -read[k])
     return tuple(loaded) if loaded else light_edge_kinds(e)
+
+
+def _light_edge_pressures(e: DevelopmentEvaluation) -> dict[str, float]:
+    """``p_max edge`` [MPa] of each edge kind at ``e``'s light torque (its first
+    ``edge_pressure_<kind>``; NaN read as 0), in :data:`EDGE_KINDS`' order, for the kinds
+    its metrics carry a reading of."""
+    m = e.metrics or {}
+    return {k: float(np.nan_to_num(np.asarray(m[f"edge_pressure_{k}"], float)[0]))
+            for k in EDGE_KINDS if f"edge_pressure_{k}" in m}
+
+
+def _loaded_edge_words(e: DevelopmentEvaluation) -> list[str]:
+    """The edges ``e``'s light torque loads (``p_max edge`` above 0), in words, in
+    :data:`EDGE_KINDS`' order."""
+    return [EDGE_WORDS[k] for k, p in _light_edge_pressures(e).items() if p > 0.0]
 
 
 def coast_light_edge_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
@@ -203,9 +216,7 @@ def _cleared_said(say: Callable[[str], None]
         if light_edge_loaded(kept) and not light_edge_loaded(e):
             return True
         p, s = light_edge(e) or (math.nan, math.nan)
-        loaded = [EDGE_WORDS[k] for k in EDGE_KINDS
-                  if float(np.nan_to_num(np.asarray(
-                      (e.metrics or {}).get(f"edge_pressure_{k}", [0.0]), float)[0])) > 0.0]
+        loaded = _loaded_edge_words(e)
         say(f"  not kept: it still loads an edge at the light torque (p_max edge "
             f"{np.nan_to_num(p):.0f} MPa, edge share {100.0 * np.nan_to_num(s):.2g} %"
             + (f"; {', '.join(loaded)}" if loaded else "") + ")")
@@ -339,9 +350,7 @@ def coast_light_edge(developed: BasicDesign, drive: DevelopmentEvaluation,
     if (old is None or len(coast.torques) != 2 or targets.coast_max_evaluations == 0
             or not coast_light_edge_runs_on(old, targets)):
         return None
-    bound = coast_edge_bound(cap)
-    if not math.isfinite(bound) and "edge_static_strength" in old.metrics:
-        bound = float(old.metrics["edge_static_strength"][-1])
+    bound = coast_peak_bound(cap, old)
     p, s = light_edge(old) or (math.nan, math.nan)
     kinds = ", ".join(EDGE_WORDS[k] for k in coast_light_edge_kinds(old))
     say(f"development: coast flank's edge at its light torque "
@@ -410,9 +419,7 @@ def written_coast_light_edge_line(read: DevelopmentEvaluation | None,
     if not changed or got is None:
         return None
     before = light_edge(read) or (math.nan, math.nan)
-    m = written.metrics or {}
-    kinds = [EDGE_WORDS[k] for k in EDGE_KINDS if f"edge_pressure_{k}" in m
-             and float(np.nan_to_num(np.asarray(m[f"edge_pressure_{k}"], float)[0])) > 0.0]
+    kinds = _loaded_edge_words(written)
     steps = ", ".join(f"{k} {plain_number(a)} -> {plain_number(b)}"
                       for k, (a, b) in changed.items())
     where = f"; {', '.join(kinds)}" if kinds else ""
