@@ -74,14 +74,38 @@ def test_a_bound_below_the_margin_s_share_of_half_the_rated_torque_foresees_the_
     assert not cut_foreseen(math.nan, RATED)
 
 
+def _chosen(process: str) -> DevelopmentEvaluation:
+    """A checked stand-in design whose case's gear is cut by ``process``."""
+    case = types.SimpleNamespace(gear=types.SimpleNamespace(process=process))
+    return DevelopmentEvaluation(0, {}, {}, 1.0, {}, False, "", 0.0, case=case,
+                                 full=(1.0, {}, False), checked=True)
+
+
+def _capacity_runner(calls: list[str], chosen: DevelopmentEvaluation, rated: float):
+    """``run(foresee)``: ``_at_capacity`` of ``chosen`` at the rated torque ``rated``
+    [N m] (its light torque 0.15 of it), the steps again recorded in ``calls``; returns
+    the lines it said."""
+    def run(foresee: bool):
+        setup = {"torques": [0.15 * rated, rated], "lowered": False}
+        said: list[str] = []
+
+        def steps(best):
+            calls.append("steps")
+            return best
+
+        development._at_capacity(chosen, None, setup, None, said.append, steps, None, {},
+                                 math.nan, foresee)
+        return said
+
+    return run
+
+
 def _capacity_stand_ins(monkeypatch, *, lowered: bool, bound: float, process="Formate"):
     """Stand-ins for the capacity steps of ``_at_capacity``: the static capacity lowers
     the torque to the 14x36's 319.5 N m (or not), the LTE capacity keeps it, the pitting
     step and the steps again are recorded; the bound is ``bound``."""
     calls: list[str] = []
-    case = types.SimpleNamespace(gear=types.SimpleNamespace(process=process))
-    chosen = DevelopmentEvaluation(0, {}, {}, 1.0, {}, False, "", 0.0, case=case,
-                                   full=(1.0, {}, False), checked=True)
+    chosen = _chosen(process)
 
     def static(best, targets, setup, teeth, say):
         if lowered:
@@ -102,19 +126,7 @@ def _capacity_stand_ins(monkeypatch, *, lowered: bool, bound: float, process="Fo
     monkeypatch.setattr(development, "checked_pitting", pitting)
     monkeypatch.setattr(development_root, "pitting_capacity_bound", bound_at)
 
-    def run(foresee: bool):
-        setup = {"torques": [0.15 * RATED, RATED], "lowered": False}
-        said: list[str] = []
-
-        def steps(best):
-            calls.append("steps")
-            return best
-
-        development._at_capacity(chosen, None, setup, None, said.append, steps, None, {},
-                                 math.nan, foresee)
-        return said
-
-    return calls, run
+    return calls, _capacity_runner(calls, chosen, RATED)
 
 
 def test_a_formate_development_stops_at_its_static_capacity_where_the_cut_is_foreseen(
@@ -314,9 +326,7 @@ def _at_check(monkeypatch, *, bound: float, process="Formate", lowered=False, gi
     """``development._cut_foreseen_at_check`` on a stand-in checked design of the 14x36
     (rated 361.8 N m), its bound ``bound``; returns the bounds taken."""
     calls: list[str] = []
-    case = types.SimpleNamespace(gear=types.SimpleNamespace(process=process))
-    chosen = DevelopmentEvaluation(0, {}, {}, 1.0, {}, False, "", 0.0, case=case,
-                                   full=(1.0, {}, False), checked=True)
+    chosen = _chosen(process)
 
     def bound_at(case, torques, measured=False):
         assert measured
@@ -440,9 +450,7 @@ def _static_stand_ins(monkeypatch, *, static: float | None, rated: float, proces
     (None: not lowered); the LTE capacity, the pitting step, the bound (inf: no
     pitting stop) and the steps recorded."""
     calls: list[str] = []
-    case = types.SimpleNamespace(gear=types.SimpleNamespace(process=process))
-    chosen = DevelopmentEvaluation(0, {}, {}, 1.0, {}, False, "", 0.0, case=case,
-                                   full=(1.0, {}, False), checked=True)
+    chosen = _chosen(process)
 
     def lowered(best, targets, setup, teeth, say):
         if static is not None:
@@ -462,19 +470,7 @@ def _static_stand_ins(monkeypatch, *, static: float | None, rated: float, proces
     monkeypatch.setattr(development, "checked_pitting", lambda best, *a, **k: best)
     monkeypatch.setattr(development_root, "pitting_capacity_bound", bound_at)
 
-    def run(foresee: bool):
-        setup = {"torques": [0.15 * rated, rated], "lowered": False}
-        said: list[str] = []
-
-        def steps(best):
-            calls.append("steps")
-            return best
-
-        development._at_capacity(chosen, None, setup, None, said.append, steps, None, {},
-                                 math.nan, foresee)
-        return said
-
-    return calls, run
+    return calls, _capacity_runner(calls, chosen, rated)
 
 
 def test_a_formate_development_stops_where_its_static_capacity_is_below_half(monkeypatch):
