@@ -217,6 +217,7 @@ def floor_line(case, torques, options, flank: str) -> str:
     import numpy as np
 
     from contact.chain import AnalysisChain
+    from contact.optimize.development_lte_floor import te_floor
     from contact.pipeline import run_analysis
 
     tree = run_analysis(case, [float(t) for t in torques], flank=flank, options=options,
@@ -226,12 +227,11 @@ def floor_line(case, torques, options, flank: str) -> str:
     lt = tree["/ltca"]
     k = np.asarray(tree["/mesh_interface"]["torsional_mesh_stiffness"].values, float)
     g = np.asarray(lt["gear_torque"].values, float)
-    te = np.asarray(lt["transmission_error"].values, float)
     deflection = np.trapezoid(1e6 / k, g, axis=0)  # [µrad]: N m / (N m/rad)
     lte = np.asarray(lt["lte_peak_to_peak"].values, float)
     return (f"floor: 1/2 p-p of the deflection {torques[0]:.1f} -> {torques[-1]:.1f} N m "
             f"{0.5 * np.ptp(deflection):.1f} urad from k_theta (mean {np.mean(k[0]) / 1e6:.2f}"
-            f" / {np.mean(k[-1]) / 1e6:.2f} MN m/rad), {0.5 * np.ptp(te[-1] - te[0]):.1f} "
+            f" / {np.mean(k[-1]) / 1e6:.2f} MN m/rad), {te_floor(lt.to_dataset()):.1f} "
             f"urad from the TE; LTE p-p at each torque "
             + " / ".join(f"{x:.0f}" for x in lte))
 
