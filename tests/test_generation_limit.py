@@ -128,7 +128,10 @@ def test_synthesize_no_development_refuses_the_15x15(tmp_path, capsys):
     first = err.index("First: the pinion's drive flank (concave) is not generated")
     assert first < err.index("Changes to try: face contact ratio eps_vb 0.29")
     assert "z1 30 and z2 30 (now 15 and 15) generate 100 % of it" in err
-    assert "not 20x20: case: no tooth pair in contact" in err
+    # both checks that fail are named, the cause first (notes97: 23 % valid ease-off
+    # nodes, then the contact loss the analysis reports)
+    assert ("not 20x20: far from conjugate, 23 % valid ease-off nodes; and its unloaded "
+            "contact not computed: case: no tooth pair in contact") in err
     # the module remedy of the low eps_vb checked before it is offered (issue 71, round
     # 96): 57x57, the least count that reaches 1.25, has no envelope solution as `ltca
     # synthesize --no-development` makes it at rc0 76.2; 62x62 (eps_vb 1.39) has its
@@ -223,3 +226,69 @@ def test_the_two_tooth_count_checks_build_and_judge_the_counts_alike(tmp_path):
     case = synthesize(edited)[0]
     assert unloaded_contact_failure(case, "drive") is None
     assert generation(case).complete
+
+
+def test_counts_check_names_every_check_that_fails_the_cause_first(monkeypatch):
+    """Issue 71, notes97: the 15x15's 25x25 (measured on the branch: 95 % of the pinion
+    drive flank generated, 2 % valid ease-off nodes, no tooth pair in contact at roll
+    0.173 rad) was refused for the contact loss alone, its message "check the
+    misalignment"; counts_check now runs every check and names each that fails, the
+    cheaper and causal ones (generation, ease-off) before the unloaded cycle's message.
+    Stand-ins for the synthesis and the three checks (each outcome set, the wording read);
+    the real 25x25 in one synthesis (2 s) below. An ease-off that cannot be computed at
+    all (0 valid nodes: the 57x57's "no envelope solution") is the contact's own message,
+    not a second "far from conjugate"."""
+    import contact.optimize.development_conjugacy as dc
+    import contact.optimize.written_contact as wc
+    import geometry.synthesis.case_synthesis as cs
+    from geometry.synthesis.basic_design import load_basic
+
+    outcome: dict = {}
+    monkeypatch.setattr(cs, "synthesize", lambda basic, **kw: ("case", None))
+    monkeypatch.setattr(dc, "generation", lambda case: Generation(
+        "concave", outcome["gen"], 100, 0, 100 - outcome["gen"], np.nan, 0.5))
+    monkeypatch.setattr(dc, "conjugacy", lambda case: Conjugacy(outcome["valid"], 100, 50.0))
+    monkeypatch.setattr(wc, "unloaded_contact_failure", lambda case, flank: outcome["lost"])
+    basic = load_basic(BASIC)
+    lost = "case: no tooth pair in contact at roll 0.173228 rad"
+
+    outcome.update(gen=95, valid=2, lost=lost)
+    got = dc.counts_check(basic, 25, 25)
+    assert got.failure == ("far from conjugate, 2 % valid ease-off nodes; and its unloaded "
+                           f"contact not computed: {lost}")
+    assert (got.generated, got.valid) == (0.95, 0.02)
+    outcome.update(gen=60, valid=2, lost=lost)
+    assert dc.counts_check(basic, 25, 25).failure == (
+        "pinion drive flank generated over 60 % of its blank; and far from conjugate, 2 % "
+        f"valid ease-off nodes; and its unloaded contact not computed: {lost}")
+    outcome.update(gen=95, valid=0, lost="machine settings: no envelope solution")
+    assert dc.counts_check(basic, 25, 25).failure == "machine settings: no envelope solution"
+    outcome.update(gen=95, valid=2, lost=None)
+    assert dc.counts_check(basic, 25, 25).failure == ("far from conjugate, 2 % valid "
+                                                      "ease-off nodes")
+    outcome.update(gen=95, valid=60, lost=lost)
+    assert dc.counts_check(basic, 25, 25).failure == lost
+    outcome.update(gen=95, valid=60, lost=None)
+    assert dc.counts_check(basic, 25, 25).failure is None
+
+
+def test_the_15x15s_25x25_is_named_far_from_conjugate_and_without_contact():
+    """The real 25x25 of the 15x15 (one synthesis, 2 s): its ease-off has fewer valid
+    nodes than VALID_NODE_FRACTION_MIN and the unloaded cycle stops at a roll with no
+    pair in contact; both are named, the ease-off's share first. Independent of the
+    wording's source: the share printed is conjugacy()'s of the case synthesised the same
+    way, and the contact loss is unloaded_contact_failure()'s own message."""
+    from contact.optimize.development_conjugacy import conjugacy, counts_basic, counts_check
+    from contact.optimize.written_contact import unloaded_contact_failure
+    from geometry.synthesis.basic_design import load_basic
+    from geometry.synthesis.case_synthesis import synthesize
+
+    basic = load_basic(BASIC)
+    got = counts_check(basic, 25, 25)
+    case = synthesize(counts_basic(basic, 25, 25))[0]
+    eo = conjugacy(case)
+    lost = unloaded_contact_failure(case, "drive")
+    assert not eo.near and lost is not None and "no tooth pair in contact" in lost
+    assert got.failure == (f"far from conjugate, {100 * eo.fraction:.0f} % valid ease-off "
+                           f"nodes; and its unloaded contact not computed: {lost}")
+    assert got.valid == eo.fraction < VALID_NODE_FRACTION_MIN

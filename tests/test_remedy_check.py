@@ -737,9 +737,38 @@ def test_a_change_no_better_than_the_written_design_is_no_remedy_where_its_lte_i
     text = checked_remedy_text(mixed, 1.0, "none", SEVEN_WRITTEN, 60.0, lte_met=True)
     assert text.startswith("a depth factor k_d of 2.07, above the usual 2 (now 2) (checked: "
                            "unloaded TE p-p 40 urad (lower than the written case's 52), "
-                           "ease-off 80 um) reaches 1; not a remedy here: a drive pressure "
-                           "angle alpha_dD of 20.5 deg")
+                           "ease-off 80 um) reaches 1, not checked for the design torque: "
+                           "its development may lower the design torque (`ltca synthesize "
+                           "--apply-remedy` develops it and refuses it then); not a remedy "
+                           "here: a drive pressure angle alpha_dD of 20.5 deg")
 
+
+
+def test_an_offer_says_its_design_torque_is_not_checked_where_apply_remedy_refuses_on_it():
+    """Issue 71, notes97: the FM hypoid 5x48's note (its LTE p-p 35/29 urad, within 60)
+    offered alpha_dD 16.3 deg (checked 70 against the written 73 urad) and k_d 2.26 (71);
+    `ltca synthesize --apply-remedy` then refused the first, its development's design
+    torque 81.7 N m against the design as given's 206.7 (torque_given_up). Stand-ins with
+    those numbers: where the written LTE is within the limit the offer says its design
+    torque is not checked ("not" for one change, "none" for several); where it is not
+    (lte_met False) torque_given_up never refuses, so no such clause. The identity
+    checked: the clause appears exactly where torque_given_up can refuse."""
+    from types import SimpleNamespace
+
+    from contact.optimize.development_remedy import torque_given_up
+
+    clause = ("checked for the design torque: its development may lower the design torque "
+              "(`ltca synthesize --apply-remedy` develops it and refuses it then)")
+    two = [_check(ALPHA, 70.0, 89.0), _check(K_D, 71.0, 129.0)]
+    text = checked_remedy_text(two, 1.0, "none", 73.0, 60.0, lte_met=True)
+    assert f"reaches 1, none {clause} (each change checked" in text
+    one = checked_remedy_text(two[:1], 1.0, "none", 73.0, 60.0, lte_met=True)
+    assert f"ease-off 89 um) reaches 1, not {clause} (each change checked" in one
+    for checks in (two, two[:1]):
+        assert clause not in checked_remedy_text(checks, 1.0, "none", 73.0, 60.0)
+    given = SimpleNamespace(torque=(31.0, 206.7))
+    remedied = SimpleNamespace(torque=(12.3, 81.7))
+    assert torque_given_up(given, remedied, False) == ""  # no clause: nothing refused
 
 
 def test_a_change_far_from_conjugate_is_said_so_not_compared_by_its_te():

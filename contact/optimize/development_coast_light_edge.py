@@ -58,6 +58,7 @@ from contact.optimize.development_light_edge_relief import (
     LIGHT_EDGE_RELIEF,
     light_edge_kinds,
     light_edge_loaded,
+    light_edge_runs_on,
     lte_limit_lost,
 )
 from contact.optimize.development_range_lte import SAME_PEAK
@@ -140,8 +141,10 @@ def coast_light_edge_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTa
     """The step's gate: ``best`` is checked at ``ltca run``'s sampling, loads an edge at
     its light torque (:func:`~contact.optimize.development_light_edge_relief.
     light_edge_loaded`: ``p_max edge`` above 0 or a counted edge share) and the
-    development varies a lever of one of its kinds (:func:`coast_light_edge_kinds`).
-    Asked without an analysis: no design is tried where it does not hold.
+    development varies a lever of one of its kinds (:func:`coast_light_edge_kinds`):
+    the drive step's gate (:func:`~contact.optimize.development_light_edge_relief.
+    light_edge_runs_on`) with this step's kinds. Asked without an analysis: no design is
+    tried where it does not hold.
 
     Parameters
     ----------
@@ -164,9 +167,7 @@ def coast_light_edge_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTa
     -----
     Source: issue 71 (module docstring).
     """
-    if not best.checked_full or not light_edge_loaded(best):
-        return False
-    return any(lever_designs(k, best.values, targets) for k in coast_light_edge_kinds(best))
+    return light_edge_runs_on(best, targets, kinds=coast_light_edge_kinds)
 
 
 def _coast_light_edge_designs(start: DevelopmentEvaluation, targets: DevelopmentTargets

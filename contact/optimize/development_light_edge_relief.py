@@ -144,19 +144,25 @@ def light_edge_kinds(e: DevelopmentEvaluation) -> tuple[str, ...]:
 
 
 def light_edge_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
-                       ratios: Callable[[], tuple[float, float]] | None = None) -> bool:
+                       ratios: Callable[[], tuple[float, float]] | None = None, *,
+                       kinds: Callable[[DevelopmentEvaluation], tuple[str, ...]]
+                       = light_edge_kinds) -> bool:
     """The step's gate: ``best`` is checked at ``ltca run``'s sampling, loads an edge at
     the light torque (:func:`light_edge_loaded`) and the development varies a lever of
-    one of its kinds (:func:`light_edge_kinds`).
+    one of its edge kinds (``kinds``: the drive step's :func:`light_edge_kinds`, the
+    coast step's :func:`~contact.optimize.development_coast_light_edge.
+    coast_light_edge_kinds`).
 
     Parameters
     ----------
     best : DevelopmentEvaluation
-        The design the drive development kept.
+        The design the development kept (the drive's, or the coast design written).
     targets : DevelopmentTargets
         The development's targets (``variables``: the levers' bounds).
     ratios : callable, optional
         Unused (the relief table's gate signature).
+    kinds : callable DevelopmentEvaluation → tuple of str, optional
+        The edge kinds whose levers the step tries (default :func:`light_edge_kinds`).
 
     Returns
     -------
@@ -172,7 +178,7 @@ def light_edge_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     """
     if not best.checked_full or not light_edge_loaded(best):
         return False
-    return any(lever_designs(k, best.values, targets) for k in light_edge_kinds(best))
+    return any(lever_designs(k, best.values, targets) for k in kinds(best))
 
 
 def _light_edge_designs(start: DevelopmentEvaluation, targets: DevelopmentTargets
