@@ -49,7 +49,13 @@ from contact.optimize.development_coast import CoastCapacity
 from contact.optimize.development_coast_capacity_lte import coast_range_peak
 from contact.optimize.development_coast_edge_peak import coast_peak_bound
 from contact.optimize.development_coast_flank import written_coast
-from contact.optimize.development_edge_peak import EDGE_WORDS, lever_designs, pitting_lost
+from contact.optimize.development_edge_peak import (
+    EDGE_WORDS,
+    edge_excess,
+    edge_gain,
+    lever_designs,
+    pitting_lost,
+)
 from contact.optimize.development_evaluate import KeptTeeth
 from contact.optimize.development_keep import SOFT_TARGETS
 from contact.optimize.development_light_edge import LIGHT_EDGE, light_edge
@@ -70,7 +76,8 @@ from geometry.core.text import plain_number
 from geometry.synthesis.basic_design import BasicDesign
 
 __all__ = ["COAST_LIGHT_EDGE_STEPS", "STAGE", "checked_coast_light_edge",
-           "coast_light_edge", "coast_light_edge_kinds", "coast_light_edge_runs_on"]
+           "coast_light_edge", "coast_light_edge_after_peak", "coast_light_edge_kinds",
+           "coast_light_edge_runs_on", "edge_peak_raised"]
 
 #: the check stage of the step's designs (:attr:`DevelopmentEvaluation.stage`)
 STAGE = "coast light edge"
@@ -225,8 +232,45 @@ def _cleared_said(say: Callable[[str], None]
     return better
 
 
+def edge_peak_raised(kept: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:
+    """``["edge peak"]`` where ``e`` raises the edges' excess over the flank's static
+    strength at the design torque (:func:`~contact.optimize.development_edge_peak.
+    edge_excess`, ``ltca run``'s ``edge_pressure`` attention) above ``kept``'s by more than
+    the edge peak's resolution (:func:`~contact.optimize.development_edge_peak.edge_gain`
+    of ``kept``: 2.5 % of the static strength, 60 MPa at 2400 MPa); else ``[]``.
+
+    Parameters
+    ----------
+    kept, e : DevelopmentEvaluation
+        The design kept and a variant, checked at the light and the design torque (their
+        metrics carry ``edge_peak_<kind>`` and ``edge_static_strength`` [MPa] per torque).
+
+    Returns
+    -------
+    list of str
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Why: the light-edge step run again after the coast edge-peak step
+    (:func:`coast_light_edge_after_peak`) must not give back what that step took off the
+    edges at the design torque: no edge-peak step runs after it. A variant without the
+    readings (a failed analysis: excess inf) is refused. Within the resolution a rise is
+    the peak's sampling, not the design's (the edge-peak step's own keep rule,
+    :data:`~contact.optimize.development_edge_peak.EDGE_GAIN_MIN`). Source: issue 71;
+    docs/synthesis.md, "The light-edge step again after the coast edge-peak step".
+    """
+    was, now = edge_excess(kept), edge_excess(e)
+    if math.isinf(was) or now <= was + edge_gain(kept):
+        return []
+    return ["edge peak"]
+
+
 def _coast_lost(bound: float, setup: Mapping[str, Any], teeth: KeptTeeth | None,
-                key_prefix: tuple
+                key_prefix: tuple, edge_peak_held: bool = False
                 ) -> Callable[[DevelopmentEvaluation, DevelopmentEvaluation], list[str]]:
     pitting = pitting_lost(bound)
     lte = lte_limit_lost(float(LTE_LIMIT))
@@ -234,8 +278,12 @@ def _coast_lost(bound: float, setup: Mapping[str, Any], teeth: KeptTeeth | None,
     def lost(kept: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:
         # no coast target the design met lost and its capacity bound kept (pitting_lost),
         # its LTE not raised above the verdict's limit at its torques where it was within
-        # (the drive step's rule), then between its torques (the coast edge-peak step's)
+        # (the drive step's rule), then between its torques (the coast edge-peak step's);
+        # run after the coast edge-peak step, its edges at the design torque not raised
+        # past what that step left (edge_peak_raised)
         gone = pitting(kept, e) + lte(kept, e)
+        if edge_peak_held:
+            gone += edge_peak_raised(kept, e)
         if any(k not in SOFT_TARGETS for k in gone):  # refused whatever its LTE between
             # the torques (kept_why refuses on a target beyond the soft ones): not analysed
             return gone
@@ -260,7 +308,8 @@ def checked_coast_light_edge(best: DevelopmentEvaluation, targets: DevelopmentTa
                              setup: Mapping[str, Any], teeth: KeptTeeth | None,
                              say: Callable[[str], None],
                              placed: Callable[[Mapping[str, float]], Case], *,
-                             bound: float, key_prefix: tuple = ()) -> DevelopmentEvaluation:
+                             bound: float, key_prefix: tuple = (),
+                             edge_peak_held: bool = False) -> DevelopmentEvaluation:
     """The coast design ``best`` without edge contact at its light torque where a relief
     (or a shorter ellipse) of the edge does it (module docstring), at most
     :data:`COAST_LIGHT_EDGE_STEPS` designs tried, none where it loads no edge there.
@@ -280,6 +329,9 @@ def checked_coast_light_edge(best: DevelopmentEvaluation, targets: DevelopmentTa
         coast_edge_bound`; inf: none).
     key_prefix : tuple, optional
         The kept pinion tooth's key before the design's bearing.
+    edge_peak_held : bool, optional
+        Run after the coast edge-peak step: a design that raises the edges' excess over
+        the static strength at the design torque is refused too (:func:`edge_peak_raised`).
 
     Returns
     -------
@@ -302,7 +354,8 @@ def checked_coast_light_edge(best: DevelopmentEvaluation, targets: DevelopmentTa
                                  runs_on=coast_light_edge_runs_on,
                                  tries=_coast_light_edge_designs,
                                  better=_cleared_said(say),
-                                 lost=_coast_lost(bound, setup, teeth, key_prefix))
+                                 lost=_coast_lost(bound, setup, teeth, key_prefix,
+                                                  edge_peak_held))
     return checked_relief_variants(best, targets, setup, teeth, say, placed,
                                    reliefs=(relief,), eps=(math.nan, math.nan),
                                    flank="coast", key_prefix=key_prefix, tolerant=False)
@@ -311,7 +364,7 @@ def checked_coast_light_edge(best: DevelopmentEvaluation, targets: DevelopmentTa
 def coast_light_edge(developed: BasicDesign, drive: DevelopmentEvaluation,
                      targets: DevelopmentTargets, setup: dict[str, Any], teeth: KeptTeeth,
                      memo: dict, say: Callable[[str], None], coast: Any,
-                     cap: CoastCapacity | None) -> Any | None:
+                     cap: CoastCapacity | None, *, after_peak: bool = False) -> Any | None:
     """:func:`checked_coast_light_edge` on the written case's coast flank at its own
     torques (``coast.torques``, as ``ltca run --flank coast`` analyses it).
 
@@ -330,6 +383,10 @@ def coast_light_edge(developed: BasicDesign, drive: DevelopmentEvaluation,
         The coast capacity search's result (the flank peak bound,
         :func:`~contact.optimize.development_coast_edge_peak.coast_edge_bound`; None or
         without one: the flank's static strength, ``edge_static_strength`` [MPa]).
+    after_peak : bool, optional
+        Run on the coast flank the coast edge-peak step wrote
+        (:func:`coast_light_edge_after_peak`): said so, and its designs held to that
+        step's edges too (``edge_peak_held``).
 
     Returns
     -------
@@ -353,18 +410,59 @@ def coast_light_edge(developed: BasicDesign, drive: DevelopmentEvaluation,
     bound = coast_peak_bound(cap, old)
     p, s = light_edge(old) or (math.nan, math.nan)
     kinds = ", ".join(EDGE_WORDS[k] for k in coast_light_edge_kinds(old))
+    which = ("the coast flank the coast edge-peak step wrote; its edges at the coast design "
+             "torque held" if after_peak else "the coast design as the earlier coast steps "
+             "left it")
     say(f"development: coast flank's edge at its light torque "
         f"{plain_number(coast.torques[0])} N m (p_max edge {np.nan_to_num(p):.0f} MPa, "
-        f"edge share {100.0 * np.nan_to_num(s):.2g} %; {kinds}; the coast design as the "
-        f"earlier coast steps left it, at ltca run's default sampling): its relief, at most "
-        f"{COAST_LIGHT_EDGE_STEPS} designs")
+        f"edge share {100.0 * np.nan_to_num(s):.2g} %; {kinds}; {which}, at ltca run's "
+        f"default sampling): its relief, at most {COAST_LIGHT_EDGE_STEPS} designs")
     written = written_coast(developed, drive, memo)
     got = checked_coast_light_edge(old, targets, dict(setup, torques=list(coast.torques)),
                                    teeth, say, written.placed, bound=bound,
-                                   key_prefix=written.key_prefix)
+                                   key_prefix=written.key_prefix, edge_peak_held=after_peak)
     if got is old:
         return None
     return written.outcome(coast, got)
+
+
+def coast_light_edge_after_peak(developed: BasicDesign, drive: DevelopmentEvaluation,
+                                targets: DevelopmentTargets, setup: dict[str, Any],
+                                teeth: KeptTeeth, memo: dict, say: Callable[[str], None],
+                                coast: Any, cap: CoastCapacity | None) -> Any | None:
+    """:func:`coast_light_edge` run again on the coast flank the coast edge-peak step
+    wrote (``after_peak``): at most :data:`COAST_LIGHT_EDGE_STEPS` more designs, kept only
+    by the step's own rule (clear of the light torque's edges; no coast target, capacity
+    bound or LTE lost) and where it does not raise the edges' excess over the static
+    strength at the coast design torque past what that step left
+    (:func:`edge_peak_raised`). The development calls it only where the edge-peak step
+    kept a design; its gate (:func:`coast_light_edge_runs_on`) asks that the light torque
+    loads an edge.
+
+    Parameters
+    ----------
+    developed, drive, targets, setup, teeth, memo, say, coast, cap
+        As :func:`coast_light_edge`'s (``coast``: the outcome the edge-peak step wrote).
+
+    Returns
+    -------
+    NamedTuple or None
+        As :func:`coast_light_edge`'s.
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Why: issue 71 counts any edge contact at 15 % of the design torque. The edge-peak step
+    changes the coast relief after the light-edge step read the light torque; on the FM
+    spiral bevel 13×17 at Σ 50° it wrote a 1061 MPa gear-toe edge there (3.2·10⁻⁵ % of the
+    torque) that no step had read. Source: docs/synthesis.md, "The light-edge step again
+    after the coast edge-peak step".
+    """
+    return coast_light_edge(developed, drive, targets, setup, teeth, memo, say, coast, cap,
+                            after_peak=True)
 
 
 def written_coast_light_edge_line(read: DevelopmentEvaluation | None,
@@ -423,10 +521,11 @@ def written_coast_light_edge_line(read: DevelopmentEvaluation | None,
     steps = ", ".join(f"{k} {plain_number(a)} -> {plain_number(b)}"
                       for k, (a, b) in changed.items())
     where = f"; {', '.join(kinds)}" if kinds else ""
+    now = (f"p_max edge {np.nan_to_num(got[0]):.0f} MPa, {_share_words(got[1])}{where}"
+           if light_edge_loaded(written) else "no edge loaded (p_max edge 0 MPa)")
     return (f"development: the coast flank written ({steps} after the light-edge step) "
             f"at its light torque {plain_number(torque)} N m, as ltca run --flank coast "
-            f"reads it (the same torque and default sampling): p_max edge "
-            f"{np.nan_to_num(got[0]):.0f} MPa, {_share_words(got[1])}{where}; the "
+            f"reads it (the same torque and default sampling): {now}; the "
             f"light-edge step's p_max edge {np.nan_to_num(before[0]):.0f} MPa, "
             f"{_share_words(before[1])} were of the design before it")
 
