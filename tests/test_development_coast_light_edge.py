@@ -287,8 +287,9 @@ def test_two_loaded_edges_relieved_together(monkeypatch):
     """Two edges loaded at the light torque (gear tip above gear toe): each design grows
     both levers at once, since a design clearing one edge alone is never kept. The first
     (root relief from 0.2, the bound; ellipse 0.5 × 0.85) clears the tip but not the toe:
-    not kept, said with the edge left. The second (the start at its bound, so the root
-    relief deeper, 40 → 60 µm; the ellipse × 0.85 again) clears both: kept."""
+    not kept, said with the edge left. The second (the start at its bound, so the
+    profile crowning one step more, 0 → 10 µm, before the root relief deeper:
+    :data:`COAST_LEVER_ORDER`; the ellipse × 0.85 again) clears both: kept."""
     seen, fake = seen_designs(_two_edges)
     targets, setup, chosen = stand_in(monkeypatch, fake, (18.4, 122.7))
     start = chosen(dict(COAST))
@@ -299,10 +300,10 @@ def test_two_loaded_edges_relieved_together(monkeypatch):
                                        bound=math.inf, key_prefix=PREFIX)
     first = round(0.85 * 0.5, 4)
     second = round(0.85 * first, 4)
-    tried = [(d["relief_start"], d["root_relief"], d["ellipse_length"]) for d in seen]
-    assert tried[0] == (0.2, 40.0, first) and tried[-1] == (0.2, 60.0, second)
-    assert set(tried) == {(0.2, 40.0, first), (0.2, 60.0, second)}
-    assert got.values == COAST | {"relief_start": 0.2, "root_relief": 60.0,
+    tried = [(d["relief_start"], d["profile_crowning"], d["ellipse_length"]) for d in seen]
+    assert tried[0] == (0.2, 0.0, first) and tried[-1] == (0.2, 10.0, second)
+    assert set(tried) == {(0.2, 0.0, first), (0.2, 10.0, second)}
+    assert got.values == COAST | {"relief_start": 0.2, "profile_crowning": 10.0,
                                   "ellipse_length": second}
     assert not light_edge_loaded(got)
     assert any("not kept: it still loads an edge at the light torque (p_max edge 900 MPa"
@@ -538,3 +539,35 @@ def test_the_written_line_after_the_second_pass():
     assert "ellipse_length 0.75 -> 0.6375" in line and "no edge loaded (p_max edge 0 MPa)" \
         in line, line
     assert "p_max edge 1640 MPa, edge share 0.23 % were of the design before it" in line
+
+
+#: the FM hypoid 13x33 at Σ 85°'s coast prescriptions written (docs/synthesis.md, "The
+#: coast flank's light-torque edge"): its tip relief starts at its bound 0.5
+COAST_33 = {"path_angle": -45.0, "ellipse_length": 0.55, "tip_relief": 15.0,
+            "root_relief": 60.0, "relief_start": 0.2, "profile_crowning": 0.0,
+            "tip_relief_start": 0.5, "blade_angle_change": -0.146}
+
+
+def test_the_coast_levers_put_the_profile_crowning_before_the_deeper_relief():
+    """:func:`coast_lever_designs` on the default bounds: the 13x33's pinion edge (its tip
+    relief start at its bound 0.5) tries the profile crowning 0 -> 10 µm (the height
+    stage's step × size_scale 1) before the tip relief 15 -> 22.5 µm (× 1.5, the drive
+    step's deeper); the gear tip (its root relief 60 µm and start 0.2 both at their
+    bounds) only the crowning; the toe only the ellipse (0.55 × 0.85, × 0.7); where the
+    start is free it comes first (0.85 -> 0.75); the crowning at its bound (30 µm) is not
+    tried; a development that does not vary it, neither. Exact: the bounds' arithmetic."""
+    from contact.optimize.development import DevelopmentTargets
+
+    t = DevelopmentTargets()
+    assert dcl.coast_lever_designs("pinion_edge", COAST_33, t) == [
+        ("profile_crowning", 10.0), ("tip_relief", 22.5)]
+    assert dcl.coast_lever_designs("gear_tip", COAST_33, t) == [("profile_crowning", 10.0)]
+    assert dcl.coast_lever_designs("gear_toe", COAST_33, t) == [
+        ("ellipse_length", 0.4675), ("ellipse_length", 0.385)]
+    free = dict(COAST_33, tip_relief_start=0.85)
+    assert dcl.coast_lever_designs("pinion_edge", free, t)[0] == ("tip_relief_start", 0.75)
+    full = dict(COAST_33, profile_crowning=30.0)
+    assert dcl.coast_lever_designs("pinion_edge", full, t) == [("tip_relief", 22.5)]
+    fixed = dataclasses.replace(t, variables={k: v for k, v in t.variables.items()
+                                              if k != "profile_crowning"})
+    assert dcl.coast_lever_designs("gear_tip", COAST_33, fixed) == []

@@ -60,7 +60,6 @@ from contact.optimize.development_evaluate import KeptTeeth
 from contact.optimize.development_keep import SOFT_TARGETS
 from contact.optimize.development_light_edge import LIGHT_EDGE, light_edge
 from contact.optimize.development_light_edge_relief import (
-    LEVER_ORDER,
     LIGHT_EDGE_RELIEF,
     light_edge_kinds,
     light_edge_loaded,
@@ -69,15 +68,17 @@ from contact.optimize.development_light_edge_relief import (
 from contact.optimize.development_range_lte import SAME_PEAK
 from contact.optimize.development_relief_lte import Sent, Try, checked_relief_variants
 from contact.optimize.development_result import DevelopmentEvaluation
-from contact.optimize.development_targets import DevelopmentTargets
+from contact.optimize.development_stages import CROWNING_STEP
+from contact.optimize.development_targets import CROWNING_NAME, DevelopmentTargets
 from contact.study.verdicts import EDGE_SHARE_MIN, LTE_LIMIT
 from geometry.case import Case
 from geometry.core.text import plain_number
 from geometry.synthesis.basic_design import BasicDesign
 
-__all__ = ["COAST_LIGHT_EDGE_STEPS", "STAGE", "checked_coast_light_edge",
-           "coast_light_edge", "coast_light_edge_after_peak", "coast_light_edge_kinds",
-           "coast_light_edge_runs_on", "edge_peak_raised"]
+__all__ = ["COAST_LEVER_ORDER", "COAST_LIGHT_EDGE_STEPS", "PROFILE_EDGES", "STAGE",
+           "checked_coast_light_edge", "coast_lever_designs", "coast_light_edge",
+           "coast_light_edge_after_peak", "coast_light_edge_kinds", "coast_light_edge_runs_on",
+           "edge_peak_raised"]
 
 #: the check stage of the step's designs (:attr:`DevelopmentEvaluation.stage`)
 STAGE = "coast light edge"
@@ -90,6 +91,68 @@ STAGE = "coast light edge"
 #: twice (the relief longer, then longer or deeper), all of them in each design (a design
 #: is kept only where no edge is loaded at the light torque)
 COAST_LIGHT_EDGE_STEPS = 2
+
+#: the edge kinds at an end of the profile (the pinion's tip line on the gear flank; the
+#: gear's tip line on the pinion's root), whose light-torque contact the pinion blade's
+#: profile crowning eases off as well as the relief at that end
+PROFILE_EDGES = ("pinion_edge", "gear_tip")
+
+#: the coast step's order of an edge's levers: the drive step's
+#: (:data:`~contact.optimize.development_light_edge_relief.LEVER_ORDER`: the relief longer
+#: before deeper) with the profile crowning one step more (:func:`coast_lever_designs`)
+#: after the relief longer and before the relief deeper. Why: measured 2026-11-29 on the FM
+#: hypoid 13x33 at Σ 85° (docs/synthesis.md, "The light-edge step again after the coast
+#: edge-peak step"), whose coast tip relief already starts at its bound: the deeper tip
+#: relief (15 -> 22.5 µm) lifts the flank peak at the coast design torque past the capacity
+#: bound (1625 MPa); the profile crowning 0 -> 10 µm clears the 949 MPa pinion edge at
+#: 33.1 N m and lowers that peak (1620 -> 1498 MPa), no coast target lost
+COAST_LEVER_ORDER = ("relief_start", "tip_relief_start", CROWNING_NAME, "root_relief",
+                     "tip_relief", "ellipse_length")
+
+
+def coast_lever_designs(kind: str, values: Mapping[str, float], targets: DevelopmentTargets
+                        ) -> list[tuple[str, float]]:
+    """The designs of an edge kind's levers the coast step tries, in
+    :data:`COAST_LEVER_ORDER`: the drive's (:func:`~contact.optimize.development_edge_peak.
+    lever_designs`) and, for :data:`PROFILE_EDGES`, the profile crowning raised by the
+    height stage's step (:data:`~contact.optimize.development_stages.CROWNING_STEP` ×
+    ``targets.size_scale``, clipped to its range).
+
+    Parameters
+    ----------
+    kind : str
+        An edge kind of :data:`~contact.optimize.development_edge_peak.LEVERS`.
+    values : mapping
+        The design's prescriptions [file units: µm, 1].
+    targets : DevelopmentTargets
+        The levers' bounds (``variables``) and ``size_scale``.
+
+    Returns
+    -------
+    list of (str, float)
+        (prescription, value); only levers the development varies and the design has,
+        each at a value other than the design's.
+
+    Raises
+    ------
+    KeyError
+        ``kind`` not an edge kind of the levers' table.
+
+    Notes
+    -----
+    Source: Litvin & Fuentes, *Gear Geometry and Applied Theory*, 2nd ed., 2004, §9.4
+    (the profile's parabolic modification keeps the contact off the tooth's top edge);
+    the 13x33 measured (:data:`COAST_LEVER_ORDER`).
+    """
+    out = list(lever_designs(kind, values, targets))
+    if (kind in PROFILE_EDGES and CROWNING_NAME in targets.variables
+            and CROWNING_NAME in values):
+        lo, hi = (float(x) for x in targets.variables[CROWNING_NAME])
+        now = float(values[CROWNING_NAME])
+        x = float(np.clip(now + CROWNING_STEP * targets.size_scale, lo, hi))
+        if x > now + 1e-9:
+            out.append((CROWNING_NAME, round(x, 4)))
+    return sorted(out, key=lambda d: COAST_LEVER_ORDER.index(d[0]))
 
 
 def coast_light_edge_kinds(e: DevelopmentEvaluation) -> tuple[str, ...]:
@@ -173,7 +236,8 @@ def coast_light_edge_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTa
     """
     if not best.checked_full or not light_edge_loaded(best):
         return False
-    return any(lever_designs(k, best.values, targets) for k in coast_light_edge_kinds(best))
+    return any(coast_lever_designs(k, best.values, targets)
+               for k in coast_light_edge_kinds(best))
 
 
 def _coast_light_edge_designs(start: DevelopmentEvaluation, targets: DevelopmentTargets
@@ -197,15 +261,15 @@ def _coast_light_edge_designs(start: DevelopmentEvaluation, targets: Development
             return
         changes: list[tuple[str, str, float]] = []
         for kind in kinds:
-            designs = sorted(lever_designs(kind, values, targets),
-                             key=lambda d: LEVER_ORDER.index(d[0]))
+            designs = coast_lever_designs(kind, values, targets)
             if designs and designs[0][0] not in {n for _, n, _ in changes}:
                 changes.append((kind, *designs[0]))
         if not changes:
             return
         for _, name, x in changes:
             values[name] = x
-        change = ", ".join(f"{name} {x:.4g}{' um' if name.endswith('relief') else ''}"
+        change = ", ".join(f"{name} {x:.4g}"
+                           f"{' um' if name.endswith(('relief', 'crowning')) else ''}"
                            for _, name, x in changes)
         edges = " and ".join(EDGE_WORDS[k] for k, _, _ in changes)
         best, _ = yield Try(
