@@ -19,8 +19,9 @@ the coast's kept-teeth key, the mounting tolerance not asked: the drive flank's,
 coast step's): the edge kinds the light torque loads (:func:`coast_light_edge_kinds`: the
 ``edge_pressure_<kind>`` readings at the light torque, largest first; else the drive
 step's rows or tip edges), the levers of every such kind grown together from the design,
-each in the drive step's order (:data:`~contact.optimize.development_light_edge_relief.
-LEVER_ORDER`: the relief longer before deeper), at most :data:`COAST_LIGHT_EDGE_STEPS`
+each in :data:`COAST_LEVER_ORDER` (the drive step's :data:`~contact.optimize.
+development_light_edge_relief.LEVER_ORDER`, the relief longer before deeper, with the
+profile crowning between for :data:`PROFILE_EDGES`), at most :data:`COAST_LIGHT_EDGE_STEPS`
 designs, the first clear of the light torque's edges kept where it loses no coast target
 the design met nor its capacity bound
 (:func:`~contact.optimize.development_edge_peak.pitting_lost` with
@@ -32,7 +33,13 @@ torques (``ltca run --flank coast``'s ``lte_range``, as the coast edge-peak step
 step but the edge peak's; the development writes the design kept and keeps it where its
 coast flank, analysed as ``ltca run --flank coast`` does at its design torque, fails no
 capacity criterion the design before it held
-(:func:`~contact.optimize.development_coast_edge_peak.holds_as_before`).
+(:func:`~contact.optimize.development_coast_edge_peak.holds_as_before`). Where the coast
+edge-peak step then keeps a design, :func:`coast_light_edge_after_peak` runs the step again
+on the flank it wrote (at most :data:`COAST_LIGHT_EDGE_STEPS` more designs, the design
+torque's edges held: :func:`edge_peak_raised`). For an edge at an end of the profile
+(:data:`PROFILE_EDGES`) the step also tries the profile crowning one step more, after the
+relief longer and before deeper (:func:`coast_lever_designs`; measured on the 13×33:
+docs/synthesis.md, "The light-edge step again after the coast edge-peak step").
 """
 
 from __future__ import annotations
