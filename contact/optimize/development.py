@@ -161,6 +161,7 @@ from contact.optimize.development_coast_flank import (  # noqa: F401
 )
 from contact.optimize.development_coast_light_edge import (
     coast_light_edge,
+    coast_light_edge_after_peak,
     written_coast_light_edge_line,
 )
 from contact.optimize.development_edge_peak import checked_edge_peak
@@ -775,17 +776,9 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
         write = functools.partial(synthesize, progress=synthesis_progress, memo=memo)
         rebuilt = functools.partial(_both_flanks_built, wanted=root_stress, built=built,
                                     say=say, setup=setup)
-        coast, developed, case, report = _coast_edges_relieved(
-            (coast, developed, case, report), best, targets, setup, teeth, memo, say,
-            coast_cap, basic, root_stress, write, rebuilt, coast_light_edge,
-            "the coast light-edge relief")
-        read = coast.best if coast is not None else None
-        coast, developed, case, report = _coast_edges_relieved(
+        coast, developed, case, report = _coast_edge_steps(
             (coast, developed, case, report), best, targets, setup, teeth, memo, say,
             coast_cap, basic, root_stress, write, rebuilt)
-        # the light-edge step read the design before the edge-peak step: where that step
-        # changed it, the written flank's light torque said as ltca run reads it
-        _say_written_coast_light_edge(read, coast, say)
     coast_seconds += time.process_time() - c_cap
     # a root-limited torque decided on the default FE model: the case written names it
     # (ltca run reads the model the torque was decided with)
@@ -957,6 +950,46 @@ def _say_written_coast_light_edge(read: DevelopmentEvaluation | None, coast: Any
     line = written_coast_light_edge_line(read, coast.best, float(coast.torques[0]))
     if line:
         say(line)
+
+
+def _coast_edge_steps(written: tuple, drive: DevelopmentEvaluation,
+                      targets: DevelopmentTargets, setup: dict[str, Any], teeth: KeptTeeth,
+                      memo: dict, say: Callable[[str], None], cap: CoastCapacity | None,
+                      basic: BasicDesign, root_stress: bool,
+                      write: Callable[[BasicDesign], tuple],
+                      built: Callable[[Case], None]) -> tuple:
+    """The written (coast outcome, basic design, case, report) after the coast edge
+    steps, each through :func:`_coast_edges_relieved`: the light-edge relief
+    (:func:`~contact.optimize.development_coast_light_edge.coast_light_edge`), the
+    edge-peak relief (:func:`~contact.optimize.development_coast_edge_peak.
+    coast_edge_peak`) and, where that kept a design, the light-edge relief again on it
+    (:func:`~contact.optimize.development_coast_light_edge.coast_light_edge_after_peak`);
+    then the written flank's light-torque line (:func:`_say_written_coast_light_edge`).
+    Arguments as :func:`_coast_edges_relieved`'s. Raises nothing."""
+    # edge contact at the coast light torque, as ltca run --flank coast reads it
+    # (p_max edge above 0): the relief of the edge it loads, at most two designs
+    # (development_coast_light_edge), then an edge above the static strength at the
+    # coast design torque: its relief (development_coast_edge_peak); each written
+    # where the coast flank holds as before (the drive's order: light edge first)
+    common = (drive, targets, setup, teeth, memo, say, cap, basic, root_stress, write, built)
+    written = _coast_edges_relieved(written, *common, coast_light_edge,
+                                    "the coast light-edge relief")
+    read = written[0].best if written[0] is not None else None
+    peaked = _coast_edges_relieved(written, *common, coast_edge_peak,
+                                   "the coast edges' relief")
+    if peaked[0] is not written[0]:
+        # the edge-peak step changed the relief the light-edge step read: where the
+        # light torque now loads an edge (issue 71 counts any), the light-edge step
+        # again on the flank it wrote, at most two more designs, its edges at the coast
+        # design torque held (development_coast_light_edge.coast_light_edge_after_peak;
+        # the 13x17 at Σ 50°'s gear toe, 1061 MPa)
+        peaked = _coast_edges_relieved(peaked, *common, coast_light_edge_after_peak,
+                                       "the coast light-edge relief after the edge-peak "
+                                       "step")
+    # the light-edge step read the design before the edge-peak step: where a later step
+    # changed it, the written flank's light torque said as ltca run reads it
+    _say_written_coast_light_edge(read, peaked[0], say)
+    return peaked
 
 
 def _coast_edges_relieved(written: tuple, drive: DevelopmentEvaluation,

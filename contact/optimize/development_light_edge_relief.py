@@ -146,7 +146,8 @@ def light_edge_kinds(e: DevelopmentEvaluation) -> tuple[str, ...]:
 def light_edge_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                        ratios: Callable[[], tuple[float, float]] | None = None, *,
                        kinds: Callable[[DevelopmentEvaluation], tuple[str, ...]]
-                       = light_edge_kinds) -> bool:
+                       = light_edge_kinds,
+                       designs: Callable[..., list] | None = None) -> bool:
     """The step's gate: ``best`` is checked at ``ltca run``'s sampling, loads an edge at
     the light torque (:func:`light_edge_loaded`) and the development varies a lever of
     one of its edge kinds (``kinds``: the drive step's :func:`light_edge_kinds`, the
@@ -163,6 +164,9 @@ def light_edge_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         Unused (the relief table's gate signature).
     kinds : callable DevelopmentEvaluation → tuple of str, optional
         The edge kinds whose levers the step tries (default :func:`light_edge_kinds`).
+    designs : callable (kind, values, targets) → list, optional
+        The lever designs of one edge kind (default :func:`lever_designs`; the coast step
+        passes its own, which adds the profile crowning for profile-end edges).
 
     Returns
     -------
@@ -178,7 +182,8 @@ def light_edge_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     """
     if not best.checked_full or not light_edge_loaded(best):
         return False
-    return any(lever_designs(k, best.values, targets) for k in kinds(best))
+    designs = lever_designs if designs is None else designs
+    return any(designs(k, best.values, targets) for k in kinds(best))
 
 
 def _light_edge_designs(start: DevelopmentEvaluation, targets: DevelopmentTargets
