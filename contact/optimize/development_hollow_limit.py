@@ -26,9 +26,10 @@ benchmarks/data/unseen_designs (written: path −80°, ellipse 0.75, tip relief 
 flank peak 1562 MPa, local pitting limit 1630 MPa there): −5 µm 17.5 / 42.8 µrad, flank
 peak 2038 MPa; −8 µm 25.4 / 38.2, edge 2.3 %, plastic 0.5 %, 2423 MPa. Every combination
 with the edge levers that brings both torques to 40 µrad (the ellipse 0.8–0.85, −5 to −8
-µm) keeps the flank peak at 1974–2362 MPa; the root relief deep enough to bring it under
-the local pitting limit (45–50 µm) gives the LTE back (40–46 µrad), and the ellipse 0.85
-loses the toe and heel at ΔE ± 0.05 mm.
+µm) keeps the flank peak at 1656–3192 MPa (1974 and above but one, not tolerant), at v
+0.86–1.0 of the gear's depth; the root relief deep enough to bring it under the local
+pitting limit (45–50 µm) gives the LTE back (40–46 µrad), and the ellipse 0.8–0.85 that
+reaches 40 µrad loses the toe and the heel at ΔE ± 0.05 mm.
 
 Public names
 ------------
