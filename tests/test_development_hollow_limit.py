@@ -120,3 +120,31 @@ def test_bad_torques_and_the_gate_of_the_written_line():
                                 basic=None, torque=(59.0, 393.5))
     assert written_hollow(None, dev, 41.0) == ""
     assert written_hollow(None, dev, math.nan) == ""
+
+
+def test_the_written_line_probes_only_hollower_profiles_at_the_size_scale(monkeypatch):
+    """The probes are :data:`HOLLOW_PROBES` × the design's size scale, those hollower than
+    the written crowning alone (a written −3 µm at the scale 0.5: −4 µm probed, −2.5 not),
+    at the development's torques, on its basic design and the written case; their words
+    are :func:`hollow_text`'s with the development's edge target."""
+    from contact.optimize.written_notes import written_hollow
+
+    seen = {}
+
+    def probes(basic, values, torques, written=None, crownings=None):
+        seen.update(basic=basic, values=dict(values), torques=torques, written=written,
+                    crownings=list(crownings))
+        return [MINUS_8]
+
+    monkeypatch.setattr(dhl, "hollow_probes", probes)
+    basic = types.SimpleNamespace(size_scale=lambda: 0.5)
+    dev = types.SimpleNamespace(targets=types.SimpleNamespace(max_lte=40.0,
+                                                              max_edge_share=0.02),
+                                best=types.SimpleNamespace(values={"profile_crowning": -3.0}),
+                                basic=basic, torque=(59.0, 393.5))
+    text = written_hollow("case", dev, 29.0)
+    assert seen == {"basic": basic, "values": {"profile_crowning": -3.0},
+                    "torques": (59.0, 393.5), "written": "case", "crownings": [-4.0]}
+    assert text == dhl.hollow_text([MINUS_8], 40.0, 0.02)
+    dev.best.values["profile_crowning"] = -4.0  # no probe hollower than the written one
+    assert written_hollow("case", dev, 29.0) == ""
