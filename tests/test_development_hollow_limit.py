@@ -48,7 +48,7 @@ def test_the_words_name_the_edge_the_plastic_share_and_the_peak_against_its_limi
     the plastic share, and the peak above the static strength (the larger limit said)."""
     text = dhl.hollow_text([MINUS_5, MINUS_8], 40.0, 0.02)
     assert text.startswith("; a hollow profile lowers it (-5 um: 18/43 urad, -8 um: 25/38 "
-                           "urad) but its edges limit it: ")
+                           "urad) but the profile's ends it loads limit it: ")
     five, eight = text.split("limit it: ")[1].split("; at ")
     assert "local pitting limit 1630 MPa" in five and "2040 MPa at v 0.86" in five
     assert "edges carry" not in five and "plastic" not in five
