@@ -263,8 +263,9 @@ def hollow_text(probes: Sequence[HollowProbe], target: float,
     -------
     str
         "" where there is no probe; else, e.g., "; a hollow profile lowers it (-5 um:
-        17/43 urad, -8 um: 25/38 urad) but the profile's ends it loads limit it: at -5 um the flank peak
-        2038 MPa at v 0.31 (…) above the local pitting limit 1630 MPa …; at -8 um the
+        17/43 urad, -8 um: 25/38 urad) but the profile's ends it loads limit it: at -5
+        um the flank peak 2038 MPa at v 0.86 (…) above the local pitting limit 1630 MPa
+        …; at -8 um the
         edges carry 2.3 % of the torque (limit 2 %; the pinion edge 1.6 %), plastic 0.5
         %, …" (or "…, nothing else missed at -x um" where a probe meets the target and
         costs none of these).
