@@ -125,8 +125,10 @@ def test_bad_torques_and_the_gate_of_the_written_line():
 def test_the_written_line_probes_only_hollower_profiles_at_the_size_scale(monkeypatch):
     """The probes are :data:`HOLLOW_PROBES` × the design's size scale, those hollower than
     the written crowning alone (a written −3 µm at the scale 0.5: −4 µm probed, −2.5 not),
-    at the development's torques, on its basic design and the written case; their words
-    are :func:`hollow_text`'s with the development's edge target."""
+    and a written hollow profile :data:`HOLLOW_STEP` × the scale hollower too (−3.5 µm),
+    shallowest first, at the development's torques, on its basic design and the written
+    case; their words are :func:`hollow_text`'s with the development's edge target. A
+    profile not hollow gets the probes alone."""
     from contact.optimize.written_notes import written_hollow
 
     seen = {}
@@ -144,7 +146,11 @@ def test_the_written_line_probes_only_hollower_profiles_at_the_size_scale(monkey
                                 basic=basic, torque=(59.0, 393.5))
     text = written_hollow("case", dev, 29.0)
     assert seen == {"basic": basic, "values": {"profile_crowning": -3.0},
-                    "torques": (59.0, 393.5), "written": "case", "crownings": [-4.0]}
+                    "torques": (59.0, 393.5), "written": "case", "crownings": [-3.5, -4.0]}
     assert text == dhl.hollow_text([MINUS_8], 40.0, 0.02)
-    dev.best.values["profile_crowning"] = -4.0  # no probe hollower than the written one
-    assert written_hollow("case", dev, 29.0) == ""
+    dev.best.values["profile_crowning"] = 0.0  # not hollow: the probes alone
+    written_hollow("case", dev, 29.0)
+    assert seen["crownings"] == [-2.5, -4.0]
+    dev.best.values["profile_crowning"] = -4.0  # hollower than both: the step alone
+    written_hollow("case", dev, 29.0)
+    assert seen["crownings"] == [-4.5]

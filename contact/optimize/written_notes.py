@@ -617,12 +617,15 @@ def written_hollow(case, development, floor: float) -> str:
     the development's target above the load sharing's ``floor`` [µrad] (the bearing, not
     the contact ratio, misses; :func:`written_floor`): the written drive prescriptions with
     each profile crowning of :data:`~contact.optimize.development_hollow_limit.
-    HOLLOW_PROBES` hollower than the written one, synthesised and analysed at ``ltca
+    HOLLOW_PROBES` hollower than the written one (× the size scale) and, where the written
+    one is hollow already, one :data:`~contact.optimize.development_hollow_limit.
+    HOLLOW_STEP` hollower than it, shallowest first, synthesised and analysed at ``ltca
     run``'s sampling (2 × ≈ 1.7 s CPU on the 13x33 of docs/synthesis.md). "" where the
     floor is not finite or at or above the target, the design carries no prescriptions,
     or no probe could be analysed (logged)."""
     from contact.optimize.development_hollow_limit import (
         HOLLOW_PROBES,
+        HOLLOW_STEP,
         hollow_probes,
         hollow_text,
     )
@@ -640,7 +643,10 @@ def written_hollow(case, development, floor: float) -> str:
         logging.getLogger(__name__).info("the hollow profile not probed: %s", exc)
         return ""
     own = float(values.get("profile_crowning", 0.0))
-    crownings = [round(c * scale, 4) for c in HOLLOW_PROBES if c * scale < own]
+    crownings = {round(c * scale, 4) for c in HOLLOW_PROBES if c * scale < own}
+    if own < 0.0:  # hollow already: one step hollower too (the 7x29's -5 -> -6 um)
+        crownings.add(round(own - HOLLOW_STEP * scale, 4))
+    crownings = sorted(crownings, reverse=True)
     if not crownings:
         return ""
     probes = hollow_probes(basic, values, tuple(development.torque), written=case,
