@@ -62,9 +62,16 @@ def test_a_probe_within_every_limit_and_none_at_all():
     """A probe at the target with none of the costs is said so (the other targets decide);
     one that does not reach the target and costs nothing is said not to reach it; no
     probe: nothing."""
-    free = _probe(-5.0, (30.0, 39.0), 0.01, {"gear_tip": 0.01}, 0.0, 1500.0)
-    assert "at -5 um no edge, plastic or flank-peak cost" in dhl.hollow_text([free], 40.0,
-                                                                            0.02)
+    free = _probe(-6.0, (30.6, 39.9), 0.0, {"gear_tip": 0.0}, 0.0, 1600.0, pitting=1606.4)
+    text = dhl.hollow_text([free], 40.0, 0.02)
+    assert text.startswith("; a hollow profile lowers it (-6 um: 31/40 urad): at -6 um no "
+                           "edge, plastic or flank-peak cost") and "limit it" not in text
+    # the 7x29's (-6 µm within its local pitting limit, -8 µm above it): the free one first
+    deeper = _probe(-8.0, (26.7, 37.9), 0.0, {"gear_tip": 0.0}, 0.0, 1625.0, pitting=1606.4)
+    both = dhl.hollow_text([free, deeper], 40.0, 0.02)
+    assert both.index("at -6 um no edge") < both.index("; hollower, the profile's ends it "
+                                                       "loads limit it: at -8 um the flank "
+                                                       "peak 1625 MPa")
     short = _probe(-5.0, (30.0, 45.0), 0.01, {"gear_tip": 0.01}, 0.0, 1500.0)
     assert dhl.hollow_text([short], 40.0, 0.02) == ("; a hollow profile (-5 um: 30/45 "
                                                     "urad) does not reach 40 urad either")

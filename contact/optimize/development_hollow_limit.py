@@ -275,8 +275,9 @@ def hollow_text(probes: Sequence[HollowProbe], target: float,
         um the flank peak 2038 MPa at v 0.86 (…) above the local pitting limit 1630 MPa
         …; at -8 um the
         edges carry 2.3 % of the torque (limit 2 %; the pinion edge 1.6 %), plastic 0.5
-        %, …" (or "…, nothing else missed at -x um" where a probe meets the target and
-        costs none of these).
+        %, …"; a probe within the target that costs none of these is said first ("…: at
+        -6 um no edge, plastic or flank-peak cost (…); hollower, the profile's ends it
+        loads limit it: …").
 
     Raises
     ------
@@ -289,15 +290,21 @@ def hollow_text(probes: Sequence[HollowProbe], target: float,
     if not probes:
         return ""
     reach = ", ".join(f"{p.crowning:g} um: {p.lte[0]:.0f}/{p.lte[1]:.0f} urad" for p in probes)
-    said = []
+    free, limited = [], []
     for p in probes:
         costs = _costs(p, max_edge_share)
         if costs:
-            said.append(f"at {p.crowning:g} um " + ", ".join(costs))
+            limited.append(f"at {p.crowning:g} um " + ", ".join(costs))
         elif max(p.lte) <= target:
-            said.append(f"at {p.crowning:g} um no edge, plastic or flank-peak cost (the "
-                        "development's other targets and the mounting tolerance decide)")
-    if not said:
+            free.append(f"at {p.crowning:g} um no edge, plastic or flank-peak cost (not a "
+                        "step of the development; its other targets and the mounting "
+                        "tolerance decide)")
+    if not free and not limited:
         return f"; a hollow profile ({reach}) does not reach {target:g} urad either"
-    return (f"; a hollow profile lowers it ({reach}) but the profile's ends it loads limit it: "
-            + "; ".join(said))
+    text = f"; a hollow profile lowers it ({reach})"
+    if free:
+        text += ": " + "; ".join(free)
+    if limited:
+        text += ("; hollower, the profile's ends it loads limit it: " if free
+                 else " but the profile's ends it loads limit it: ") + "; ".join(limited)
+    return text
