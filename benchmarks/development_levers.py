@@ -132,7 +132,7 @@ def main(argv: list[str] | None = None) -> None:
     memo, teeth = {}, dev.KeptTeeth()
     options = dev.CHECK_LTCA if args.check else dev.COARSE_LTCA
     print(f"{'change':44s} {'len':>4s} {'u':>9s} {'v':>9s} {'cv':>4s} {'LTE l/d':>8s} "
-          f"{'UTE':>4s} {'pairs':>9s} {'edge%':>5s} {'pl%':>4s} {'p_max':>5s}  missed [CPU s]")
+          f"{'UTE':>4s} {'pairs':>9s} {'edge% l/d':>9s} {'pl%':>4s} {'p_max':>5s}  missed [CPU s]")
     for change in json.loads(args.vary):
         values = base | change
         t0 = time.process_time()
@@ -157,7 +157,8 @@ def main(argv: list[str] | None = None) -> None:
               f"{m['pattern_toe_u'][0]:4.2f}-{m['pattern_heel_u'][0]:4.2f} "
               f"{m['pattern_root_v'][0]:4.2f}-{m['pattern_tip_v'][0]:4.2f} "
               f"{m['pattern_centre_v'][0]:4.2f} {lte[0]:4.1f}/{lte[1]:<5.1f}{ute:4.0f} "
-              f"{pairs[0]:4.2f}/{pairs[1]:4.2f} {100 * m['edge_load_share'][1]:5.1f} "
+              f"{pairs[0]:4.2f}/{pairs[1]:4.2f} {100 * m['edge_load_share'][0]:4.1f}/"
+              f"{100 * m['edge_load_share'][1]:<4.1f} "
               f"{100 * np.max(m['plastic_share']):4.1f} "
               f"{m['pressure_max_flank'][1]:5.0f}  "
               + ",".join(k for k, v in short.items() if v > 0)

@@ -27,7 +27,7 @@ __all__ = ["flank_lte_line", "inside", "lte_lines"]
 
 def flank_lte_line(flank: str, torques: tuple[float, float], ends: tuple[float, float],
                    between: Mapping[str, Any] | None, limit: float, target: float,
-                   floor: float = math.nan) -> str | None:
+                   floor: float = math.nan, hollow: str = "") -> str | None:
     """One flank's written LTE p-p in words, where it misses the development's target or
     the verdict's limit at a torque or between its torques.
 
@@ -53,6 +53,11 @@ def flank_lte_line(flank: str, torques: tuple[float, float], ends: tuple[float, 
         target is missed at the two torques within the verdict's limit, the line says it
         against the target (:func:`~contact.optimize.development_lte_floor.floor_text`).
         NaN (default): not said.
+    hollow : str, optional
+        What limits a hollow profile on the written bearing
+        (:func:`~contact.optimize.development_hollow_limit.hollow_text`), appended after
+        the floor where the target is missed within the verdict's limit; "" (default):
+        not said.
 
     Returns
     -------
@@ -98,7 +103,7 @@ def flank_lte_line(flank: str, torques: tuple[float, float], ends: tuple[float, 
     from contact.optimize.development_lte_floor import floor_text
 
     return (line + f": within the verdict's limit {limit:g} urad, the development's target "
-            f"{float(target):g} urad missed" + floor_text(floor, target))
+            f"{float(target):g} urad missed" + floor_text(floor, target) + hollow)
 
 
 def inside(record: Mapping[str, Any] | None) -> dict[str, float] | None:
@@ -141,7 +146,7 @@ def inside(record: Mapping[str, Any] | None) -> dict[str, float] | None:
 
 def lte_lines(development: Any, drive_between: Mapping[str, Any] | None = None,
               coast_between: Mapping[str, Any] | None = None,
-              drive_floor: float = math.nan) -> list[str]:
+              drive_floor: float = math.nan, drive_hollow: str = "") -> list[str]:
     """:func:`flank_lte_line` of a development's written drive and (where checked) coast
     flank.
 
@@ -158,6 +163,9 @@ def lte_lines(development: Any, drive_between: Mapping[str, Any] | None = None,
     drive_floor : float, optional — [µrad]
         The written drive flank's load-sharing floor (:func:`flank_lte_line`'s ``floor``;
         NaN: not said).
+    drive_hollow : str, optional
+        What limits a hollow profile on the written drive bearing (:func:`flank_lte_line`'s
+        ``hollow``; "": not said).
 
     Returns
     -------
@@ -179,7 +187,7 @@ def lte_lines(development: Any, drive_between: Mapping[str, Any] | None = None,
     lte = development.best.metrics["lte_peak_to_peak"]
     lines = [flank_lte_line("drive", tuple(development.torque), (lte[0], lte[-1]),
                             inside(development.lte_range or drive_between), LTE_LIMIT,
-                            target, drive_floor)]
+                            target, drive_floor, drive_hollow)]
     if development.coast is not None:
         c = development.coast["lte_peak_to_peak"]
         lines.append(flank_lte_line(

@@ -13,7 +13,7 @@ Public names
 FACE_CONTACT_RATIO_NOTE, PROFILE_CONTACT_RATIO_NOTE, header_text, noted_case,
 with_record, contact_ratios, low_overlap_lte, reach_text, first_lines, gear_process_note,
 fe_level_notes, synthesis_fe_level, checked_basic_rating, written_lte_lines,
-written_floor
+written_floor, written_hollow
 """
 
 from __future__ import annotations
@@ -606,8 +606,52 @@ def written_lte_lines(case, development) -> list[str]:
                                              "analysed: %s", exc)
         else:
             drive = {"torques": tuple(found.torques), "lte": tuple(found.lte)}
-    return lte_lines(development, drive_between=drive, drive_floor=written_floor(
-        case, development))
+    floor = written_floor(case, development)
+    return lte_lines(development, drive_between=drive, drive_floor=floor,
+                     drive_hollow=written_hollow(case, development, floor))
+
+
+def written_hollow(case, development, floor: float) -> str:
+    """What limits a hollow profile on the written drive bearing, in words
+    (:func:`contact.optimize.development_hollow_limit.hollow_text`), where its LTE misses
+    the development's target above the load sharing's ``floor`` [µrad] (the bearing, not
+    the contact ratio, misses; :func:`written_floor`): the written drive prescriptions with
+    each profile crowning of :data:`~contact.optimize.development_hollow_limit.
+    HOLLOW_PROBES` hollower than the written one (× the size scale) and, where the written
+    one is hollow already, one :data:`~contact.optimize.development_hollow_limit.
+    HOLLOW_STEP` hollower than it, shallowest first, synthesised and analysed at ``ltca
+    run``'s sampling (2 × ≈ 1.7 s CPU on the 13x33 of docs/synthesis.md). "" where the
+    floor is not finite or at or above the target, the design carries no prescriptions,
+    or no probe could be analysed (logged)."""
+    from contact.optimize.development_hollow_limit import (
+        HOLLOW_PROBES,
+        HOLLOW_STEP,
+        hollow_probes,
+        hollow_text,
+    )
+
+    target = float(development.targets.max_lte)
+    values = getattr(development.best, "values", None) or {}
+    if not (math.isfinite(floor) and floor < target) or not values:
+        return ""
+    basic = development.basic
+    try:
+        scale = float(basic.size_scale())
+    except (ValueError, ArithmeticError) as exc:
+        import logging
+
+        logging.getLogger(__name__).info("the hollow profile not probed: %s", exc)
+        return ""
+    own = float(values.get("profile_crowning", 0.0))
+    crownings = {round(c * scale, 4) for c in HOLLOW_PROBES if c * scale < own}
+    if own < 0.0:  # hollow already: one step hollower too (the 7x29's -5 -> -6 um)
+        crownings.add(round(own - HOLLOW_STEP * scale, 4))
+    crownings = sorted(crownings, reverse=True)
+    if not crownings:
+        return ""
+    probes = hollow_probes(basic, values, tuple(development.torque), written=case,
+                           crownings=crownings)
+    return hollow_text(probes, target, float(development.targets.max_edge_share))
 
 
 def written_floor(case, development) -> float:
