@@ -21,6 +21,7 @@ import xarray as xr
 
 from contact.optimize import development_root as dr
 from contact.study.verdict_checks import root_stress_safety
+from geometry.core.text import plain_number
 
 MAT = "case_carburised_steel"
 FP = 425 * 2 * 1.0 * 0.99 * 0.98 * 1.0  # σ_FP = σ_Flim Y_ST Y_NT Y_δrelT Y_RrelT Y_X [MPa]
@@ -336,6 +337,34 @@ def test_a_root_limited_cut_is_made_on_the_default_model(monkeypatch):
     assert builds == ["default"] and setup["fe_level"] == "default"
     assert s == pytest.approx(FP / (5.0 * t * K_A * (1.0 + 10.0 / t)), rel=1e-12)
     assert s >= 1.3
+
+
+def test_the_fe_level_note_names_the_design_torque_written(monkeypatch):
+    """Round 35 of issue 71 (the FM hypoid 12x31 remedied, b2 36 mm): coarse10 fails the
+    root at the ISO capacity (here 100 N m), the default model too, and the cut lowers the
+    design torque; ``ltca synthesize``'s note (the result's ``fe_level_text``,
+    ``development_root.design_torque_kept``) named the start "the design torque" where
+    the case carries the cut one. It now names both; a design whose torque the cut leaves
+    keeps the note as before."""
+    from development_stand_ins import counted_builds
+
+    from contact.optimize import development
+
+    counted_builds(monkeypatch)
+    monkeypatch.setattr(dr, "_root_tree", _levelled((5.5, 4.0), (5.0, 4.0), []))
+    setup = {"torques": [15.0, 100.0], "source": "the ISO 10300 capacity"}
+    dr.root_capacity(_coarse_case(), setup, 0.15, lambda line: None)
+    written = plain_number(setup["torques"][1])
+    assert setup["torques"][1] < 100.0 and "at the design torque 100 N m" in \
+        setup["fe_level_why"]  # the line said while it ran: of its own time
+    text = development.design_torque_kept(setup)
+    assert "at the design torque 100 N m" not in text
+    assert ("the coarse10 FE level reads S_F,FE 1.09 < S_Fmin 1.3 at 100 N m, the design "
+            f"torque then checked (the design torque written: {written} N m): the root "
+            "stress there checked on the default FE model") in text
+    setup["torques"] = [15.0, 100.0]  # a torque kept: the note as it was
+    assert development.design_torque_kept(setup) == setup["fe_level_why"]
+    assert development.design_torque_kept({"torques": [1.0, 2.0]}) == ""
 
 
 def test_a_design_the_root_does_not_limit_keeps_its_level(monkeypatch):
