@@ -21,6 +21,7 @@ import xarray as xr
 
 from contact.optimize import development_root as dr
 from contact.study.verdict_checks import root_stress_safety
+from geometry.core.text import plain_number
 
 MAT = "case_carburised_steel"
 FP = 425 * 2 * 1.0 * 0.99 * 0.98 * 1.0  # σ_FP = σ_Flim Y_ST Y_NT Y_δrelT Y_RrelT Y_X [MPa]
@@ -338,6 +339,34 @@ def test_a_root_limited_cut_is_made_on_the_default_model(monkeypatch):
     assert s >= 1.3
 
 
+def test_the_fe_level_note_names_the_design_torque_written(monkeypatch):
+    """Round 35 of issue 71 (the FM hypoid 12x31 remedied, b2 36 mm): coarse10 fails the
+    root at the ISO capacity (here 100 N m), the default model too, and the cut lowers the
+    design torque; ``ltca synthesize``'s note (the result's ``fe_level_text``,
+    ``development_root.design_torque_kept``) named the start "the design torque" where
+    the case carries the cut one. It now names both; a design whose torque the cut leaves
+    keeps the note as before."""
+    from development_stand_ins import counted_builds
+
+    from contact.optimize import development
+
+    counted_builds(monkeypatch)
+    monkeypatch.setattr(dr, "_root_tree", _levelled((5.5, 4.0), (5.0, 4.0), []))
+    setup = {"torques": [15.0, 100.0], "source": "the ISO 10300 capacity"}
+    dr.root_capacity(_coarse_case(), setup, 0.15, lambda line: None)
+    written = plain_number(setup["torques"][1])
+    assert setup["torques"][1] < 100.0 and "at the design torque 100 N m" in \
+        setup["fe_level_why"]  # the line said while it ran: of its own time
+    text = development.design_torque_kept(setup)
+    assert "at the design torque 100 N m" not in text
+    assert ("the coarse10 FE level reads S_F,FE 1.09 < S_Fmin 1.3 at 100 N m, the design "
+            f"torque then checked (the design torque written: {written} N m): the root "
+            "stress there checked on the default FE model") in text
+    setup["torques"] = [15.0, 100.0]  # a torque kept: the note as it was
+    assert development.design_torque_kept(setup) == setup["fe_level_why"]
+    assert development.design_torque_kept({"torques": [1.0, 2.0]}) == ""
+
+
 def test_a_design_the_root_does_not_limit_keeps_its_level(monkeypatch):
     """coarse10 holds (c = 3: S_F,FE 1.999 at 100 N·m): nothing checked on the default
     model, no default build, the case keeps coarse10 (the speed gain stays)."""
@@ -394,6 +423,49 @@ def test_a_root_limited_coast_torque_is_decided_on_the_default_model(monkeypatch
     cap, setup, seen, builds = run(1.31)
     assert cap.torque == 733.6 and seen == ["coarse10"] and builds == []
     assert "fe_level" not in setup
+
+
+def test_the_fe_level_note_names_the_coast_torque_the_search_wrote(monkeypatch):
+    """Round 35 of issue 71 (the FH hypoid 14×37 at Σ 85°): the coast capacity search's
+    start 331.1 N·m fails its root check on coarse10 (S_F,FE 1.25 < 1.3) and holds it on
+    the default model (1.32), but fails local pitting there (S_H,loc ∝ T^−1/2: 0.97 at
+    331.1, S_Hmin 1), so the search writes a lower coast design torque (the stand-in's
+    pitting capacity 331.1 × 0.97² = 311.5 N·m, found to the search's closeness). The
+    FE level's note, which ``ltca synthesize`` prints, named 331.1 N·m "the coast design
+    torque"; it now names it a torque the search checked and the coast design torque
+    written beside it. Where the search keeps its start (the test above), the note is as
+    before."""
+    from development_stand_ins import counted_builds
+
+    from contact.compliance.fe.options import fe_level_of
+    from contact.optimize import development_coast_flank as cf
+    from contact.optimize.development import DevelopmentTargets
+    from contact.optimize.development_coast import CoastCheck
+    from geometry.core.text import plain_number
+
+    counted_builds(monkeypatch)
+
+    def check(case, basic, setup, torque, root_stress, plastic_limit=0.0, edge_limit=False):
+        coarse = fe_level_of(case) == "coarse10"
+        return CoastCheck(torque, 1000.0, 2000.0, 0.0, 1.25 if coarse else 1.32, 1.3,
+                          "pinion", 2.0, 50.0, pitting_safety=0.97 * (331.1 / torque) ** 0.5,
+                          s_h_min=1.0, pitting_member="pinion", light_pitting_safety=2.5)
+
+    monkeypatch.setattr(cf, "_coast_check", check)
+    setup = {"torques": [52.0, 346.7], "centre_v": 0.6}
+    lines: list[str] = []
+    _, cap = cf.coast_flank_capacity(_coarse_case(), None, None, DevelopmentTargets(), setup,
+                                     331.1, True, True, lines.append)
+    kept = plain_number(cap.torque)
+    assert cap.lowered and cap.torque < 331.1 * 0.97 ** 2 + 1e-9  # S_H,loc >= 1 where kept
+    assert setup["fe_level"] == "default"
+    why = setup["fe_level_why"]
+    assert "at the coast design torque (331.1 N m)" not in why
+    assert ("the coarse10 FE level reads S_F,FE 1.25 < S_Fmin 1.3 at the coast torque 331.1 "
+            "N m, one the coast flank's capacity search checked (the coast design torque "
+            f"written: {kept} N m)") in why
+    # the line said while the search ran is of its own time (the torque then checked)
+    assert any("at the coast design torque (331.1 N m)" in line for line in lines)
 
 
 def test_a_rewritten_case_builds_only_the_level_its_checks_read(monkeypatch):

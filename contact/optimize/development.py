@@ -194,7 +194,11 @@ from contact.optimize.development_result import (  # noqa: F401
     DevelopmentResult,
     metrics_text,
 )
-from contact.optimize.development_root import at_decided_level, given_torque_root
+from contact.optimize.development_root import (
+    at_decided_level,
+    design_torque_kept,
+    given_torque_root,
+)
 from contact.optimize.development_shared import SharedDevelopments, kept_for, log_reused
 from contact.optimize.development_stages import (  # noqa: F401
     CROWNING_STEP,
@@ -809,7 +813,7 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
                                lte_reach=setup.get("lte_reach", {}).get(
                                    tuple(float(t) for t in setup["torques"])),
                                tolerant_torque=upto, lte_range=_judged(setup, best),
-                               fe_level_text=setup.get("fe_level_why", ""),
+                               fe_level_text=design_torque_kept(setup),
                                given_root_text=given_root_text,
                                lte_torque=float(setup.get("lte_torque", math.nan)),
                                coast_lte_range=_coast_judged(setup, coast, best, teeth))

@@ -299,13 +299,15 @@ def coast_flank_capacity(case: Case, basic: BasicDesign, coast: _CoastOutcome,
     check taken again on the default model, :func:`~contact.optimize.development_root.
     refined_for_root`); ``start_name`` names what ``start`` is in the search's reason
     (:func:`coast_start`)."""
+    refined_at: list[float] = []  # the coast torque whose coarse root check moved the level
+
     def analyse(torque: float) -> CoastCheck:
         check = _coast_check(decided_case(case, setup), basic, setup, torque, root_stress,
                              targets.max_plastic_share, targets.coast_edge_capacity)
         if "root" in check.failures and refined_for_root(
-                decided_case(case, setup), setup,
-                f"coast design torque ({plain_number(torque)} N m)",
+                decided_case(case, setup), setup, coast_root_torque_text(torque),
                 check.root_safety, check.s_min, say) is not None:
+            refined_at.append(torque)
             # a coarse level's failing root check: the coast torque decided on the default
             check = _coast_check(decided_case(case, setup), basic, setup, torque,
                                  root_stress, targets.max_plastic_share,
@@ -316,6 +318,9 @@ def coast_flank_capacity(case: Case, basic: BasicDesign, coast: _CoastOutcome,
         if lower:
             cap = coast_capacity(analyse, start, say, start_name=start_name)
             check = cap.final
+            if refined_at:
+                setup["fe_level_why"] = coast_root_torque_kept(
+                    setup.get("fe_level_why", ""), refined_at[0], cap.torque)
         else:
             cap, check = None, analyse(start)
     except Exception as exc:  # reported, never fatal: the coast search's metrics stay
@@ -331,6 +336,49 @@ def coast_flank_capacity(case: Case, basic: BasicDesign, coast: _CoastOutcome,
     best = dataclasses.replace(coast.best, metrics=mc, objective=fc[0], shortfalls=fc[1],
                                met=fc[2], full=fc)
     return coast._replace(best=best, torques=torques), cap
+
+
+def coast_root_torque_text(torque: float) -> str:
+    """The coast torque ``torque`` [N·m] of a failing coarse-level root check as the FE
+    level's note names it (:func:`contact.optimize.development_root.refined_for_root`):
+    "coast design torque (T N m)"; :func:`coast_root_torque_kept` rewrites it where the
+    coast capacity search then writes another torque."""
+    return f"coast design torque ({plain_number(torque)} N m)"
+
+
+def coast_root_torque_kept(why: str, torque: float, kept: float) -> str:
+    """The FE level's note ``why`` with its coast torque ``torque`` [N·m] named for what it
+    is once the coast flank's capacity search has ended at ``kept`` [N·m]: unchanged where
+    ``kept`` is ``torque`` (to the digits printed), else "coast torque T N m, one the coast
+    flank's capacity search checked (the coast design torque written: K N m)".
+
+    ``ltca synthesize`` prints ``why`` as a note of the case written; a torque the search
+    went on from is not the coast design torque the case carries.
+
+    Parameters
+    ----------
+    why : str — the note (:func:`contact.optimize.development_root.refined_for_root`); a
+        note without :func:`coast_root_torque_text` of ``torque`` is returned as given
+    torque : float — [N·m] the coast torque whose coarse root check moved the FE level
+    kept : float — [N·m] the coast design torque the search kept
+
+    Returns
+    -------
+    str
+
+    Notes
+    -----
+    Source: issue 71, round 35 (helper unseen97): the FH hypoid 14×37 at Σ 85° printed
+    "the coarse10 FE level reads S_F,FE 1.25 < S_Fmin 1.3 at the coast design torque
+    (331.1 N m)" where the coast design torque written is 286.7 N·m (its local pitting
+    capacity; S_F,FE 1.54 there on the default model): 331.1 N·m was the search's start.
+    """
+    named = coast_root_torque_text(torque)
+    if named not in why or plain_number(kept) == plain_number(torque):
+        return why
+    return why.replace(named, f"coast torque {plain_number(torque)} N m, one the coast "
+                              f"flank's capacity search checked (the coast design torque "
+                              f"written: {plain_number(kept)} N m)", 1)
 
 
 def coast_setup(setup: dict[str, Any], coast: float) -> dict[str, Any]:

@@ -34,8 +34,8 @@ Public names
 ------------
 REMEDY_TABLE, AppliedRemedy, ratio_changes, contact_ratios_of, prescribed_basic,
 checked_record, chosen_check, remedied_basic, file_value, change_text, lte_parts, worst_lte,
-flanks_above, above_limit_text, lte_within, torque_given_up, developed_with_remedy,
-applied_table
+flanks_above, above_limit_text, lte_within, every_drive_target, targets_bought,
+torque_bought, torque_given_up, developed_with_remedy, applied_table
 """
 
 from __future__ import annotations
@@ -50,8 +50,9 @@ from geometry.core.text import plain_number
 
 __all__ = ["REMEDY_TABLE", "AppliedRemedy", "above_limit_text", "applied_table", "change_text",
            "checked_record", "chosen_check", "contact_ratios_of", "developed_with_remedy",
-           "file_value", "flanks_above", "lte_parts", "lte_within", "prescribed_basic",
-           "ratio_changes", "remedied_basic", "torque_given_up", "worst_lte"]
+           "every_drive_target", "file_value", "flanks_above", "lte_parts", "lte_within",
+           "prescribed_basic", "ratio_changes", "remedied_basic", "targets_bought",
+           "torque_bought", "torque_given_up", "worst_lte"]
 
 log = logging.getLogger(__name__)
 
@@ -95,6 +96,9 @@ class AppliedRemedy(NamedTuple):
     kept_why : str
         Why the remedy applied was kept over the others developed, in numbers (empty
         where one alone was developed).
+    torque_why : str
+        Why its design torque, below the design as given's, was kept (:func:`torque_bought`;
+        empty where it is not below).
     """
 
     check: Any
@@ -107,6 +111,7 @@ class AppliedRemedy(NamedTuple):
     given_worst: float
     developed: tuple = ()
     kept_why: str = ""
+    torque_why: str = ""
 
 
 def ratio_changes(design) -> list:
@@ -434,6 +439,71 @@ def lte_within(development, limit: float) -> bool:
     return development is not None and worst_lte(development) <= limit
 
 
+def every_drive_target(development) -> bool:
+    """Whether a development's written drive design met every target of the development
+    (its chosen design's ``full`` score, :meth:`contact.optimize.development_result.
+    DevelopmentResult.missed_text`'s "every target met"); False where not analysed."""
+    full = getattr(development.best, "full", None)
+    return bool(full is not None and full[2])
+
+
+def targets_bought(given, remedied) -> bool:
+    """Whether the remedied development meets every drive target where the design as
+    given's misses one: what a remedy that lowers the design torque then buys is those
+    targets (:func:`torque_given_up`).
+
+    Parameters
+    ----------
+    given, remedied : contact.optimize.development.DevelopmentResult
+
+    Returns
+    -------
+    bool
+    """
+    return every_drive_target(remedied) and not every_drive_target(given)
+
+
+def torque_bought(given, remedied) -> str:
+    """Why a remedied design torque below the design as given's was kept: the drive targets
+    the remedy bought (:func:`targets_bought`), in numbers; empty where it did not lower
+    the design torque or bought none.
+
+    Parameters
+    ----------
+    given, remedied : contact.optimize.development.DevelopmentResult
+        Their ``torque`` (light, design) [N·m]; the design as given's chosen design's
+        ``full`` score names the targets it missed.
+
+    Returns
+    -------
+    str
+        E.g. (the FM hypoid 12×31, round 35) "its design torque 643.8 N m, 0.95 of the
+        design as given's 677.1 N m: kept, for the drive targets the design as given
+        misses (length, centre_v, tolerance) and it meets".
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: issue 71 (round 35): ``--apply-remedy`` printed both torques without saying
+    why the lower one was written.
+    """
+    if not targets_bought(given, remedied):
+        return ""
+    before, after = float(given.torque[1]), float(remedied.torque[1])
+    if not (math.isfinite(before) and math.isfinite(after)) or round(after, 1) >= round(
+            before, 1):
+        return ""
+    full = getattr(given.best, "full", None)
+    missed = [k for k, v in (full[1] if full is not None else {}).items() if v > 0]
+    names = f" ({', '.join(missed)})" if missed else ""
+    return (f"its design torque {plain_number(round(after, 1))} N m, {after / before:.2f} "
+            f"of the design as given's {plain_number(round(before, 1))} N m: kept, for "
+            f"the drive targets the design as given misses{names} and it meets")
+
+
 def torque_given_up(given, remedied, lte_met: bool) -> str:
     """Why a remedied development is no remedy for a design whose LTE already keeps the
     verdict's limit: its design torque below the design as given's; empty where it is not
@@ -470,8 +540,16 @@ def torque_given_up(given, remedied, lte_met: bool) -> str:
     given keeps it, the remedied design must not carry less for it. The design torque is
     each development's own (its ISO capacity or the developed bearing's cut), compared at
     the printed 0.1 N·m.
+
+    Not a refusal where the remedy buys the development's drive targets the design as given
+    misses (:func:`targets_bought`): the torque is then given up for those, not for an LTE
+    the design has, and both developments' torques are printed beside their LTE (issue 71,
+    round 35: the FM hypoid 12×31 at a = 0.20 d_e2, its LTE 27/34 µrad, missed the pattern
+    length 0.65 and centre v 0.64 and was not tolerant at ±0.05 mm; its b2 32 → 36 mm met
+    every drive target, tolerant, at 643.8 N·m, 0.95 of its 677.1, and was refused as
+    giving up load "for an LTE the design has").
     """
-    if not lte_met:
+    if not lte_met or targets_bought(given, remedied):
         return ""
     before, after = float(given.torque[1]), float(remedied.torque[1])
     if not (math.isfinite(before) and math.isfinite(after)) or round(after, 1) >= round(
@@ -602,7 +680,8 @@ def developed_with_remedy(run: Callable[[Any], Any], basic,
     kept = given[id(chosen)]
     applied = AppliedRemedy(chosen, record, kept, file_value(basic.design, chosen.change.field),
                             before, contact_ratios_of(kept.design),
-                            ", ".join(lte_parts(first)), worst_lte(first), developed, why)
+                            ", ".join(lte_parts(first)), worst_lte(first), developed, why,
+                            torque_bought(first, second))
     return dataclasses.replace(second, remedy=applied)
 
 
@@ -643,6 +722,7 @@ def applied_table(applied: AppliedRemedy) -> dict[str, Any]:
             "given_lte": applied.given_lte,
             **({"developed": [_developed_row(d) for d in applied.developed],
                 "kept_why": applied.kept_why} if len(applied.developed) > 1 else {}),
+            **({"torque_why": applied.torque_why} if applied.torque_why else {}),
             "checks": remedy_record(applied.record)}
 
 

@@ -171,6 +171,42 @@ def at_decided_level(case, basic, setup: dict[str, Any]):
             dataclasses.replace(basic, root_stress={"fe_level": level}))
 
 
+def design_torque_kept(setup: dict[str, Any]) -> str:
+    """The FE level's note (``setup["fe_level_why"]``, :func:`refined_for_root`) as the
+    case written is read: where it names the design torque its coarse root check failed at
+    (``setup["fe_level_torque"]``, :func:`root_capacity`) and the development wrote
+    another (``setup["torques"][1]``, at the printed digits), that torque is named "the
+    design torque then checked" and the one written beside it; else the note as it is
+    ("" without one).
+
+    Parameters
+    ----------
+    setup : dict — the development's state at its end
+
+    Returns
+    -------
+    str
+
+    Notes
+    -----
+    Source: issue 71, round 35 (helper unseen97): the FM hypoid 12×31 remedied (b2 36 mm)
+    printed "note: the coarse10 FE level reads S_F,FE 1.12 < S_Fmin 1.3 at the design
+    torque 753.2 N m" where the case's design torque is 643.8 N·m (the root-stress
+    capacity of its developed bearing on the default model): 753.2 N·m was its ISO
+    capacity, the torque the development started from.
+    """
+    why = str(setup.get("fe_level_why", ""))
+    named = setup.get("fe_level_torque")
+    if not why or named is None:
+        return why
+    written = plain_number(float(setup["torques"][1]))
+    said = f"at the design torque {plain_number(float(named))} N m"
+    if said not in why or written == plain_number(float(named)):
+        return why
+    return why.replace(said, f"at {plain_number(float(named))} N m, the design torque then "
+                             f"checked (the design torque written: {written} N m)", 1)
+
+
 def refined_for_root(case, setup: dict[str, Any], what: str, safety: float, s_min: float,
                      say: Callable[[str], None]):
     """Where the root check of ``case`` on a coarser FE level than
@@ -564,6 +600,7 @@ def root_capacity(case, setup: dict[str, Any], light_load: float,
             finer = refined_for_root(case, setup, f"design torque {plain_number(torque)} N m",
                                      float(s[-1]), s_min, say)
             if finer is not None:
+                setup["fe_level_torque"] = torque  # the note's torque: design_torque_kept
                 case, safe = finer, _safeties(_root_tree(finer, torques))
     except Exception as exc:  # reported, never fatal (ltca run says it)
         raise_if_interrupted(exc)

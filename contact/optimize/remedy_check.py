@@ -386,7 +386,8 @@ def checked_remedy_text(checks: Sequence[ChangeCheck], target: float, none: str,
         <change>, which reaches 1 too: <why>" (:func:`refusal`). Where ``lte_met``, the
         changes offered are said not checked for the design torque: "…, not checked for
         the design torque: its development may lower the design torque (`ltca synthesize
-        --apply-remedy` develops it and refuses it then)".
+        --apply-remedy` develops it and refuses it then, unless it meets the drive targets
+        the design misses)" (:func:`~contact.optimize.development_remedy.targets_bought`).
 
     Notes
     -----
@@ -420,7 +421,8 @@ def checked_remedy_text(checks: Sequence[ChangeCheck], target: float, none: str,
             # (development_remedy.torque_given_up), which no synthesis here reads
             out += (f", {'not' if len(passed) == 1 else 'none'} checked for the design "
                     "torque: its development may lower the design torque "
-                    "(`ltca synthesize --apply-remedy` develops it and refuses it then)")
+                    "(`ltca synthesize --apply-remedy` develops it and refuses it then, "
+                    "unless it meets the drive targets the design misses)")
     elif idle:
         out = (f"no change that reaches {target:g} checks better than the written design, "
                f"whose LTE p-p is within {limit:g} urad")

@@ -503,6 +503,7 @@ def first_lines(basic, development, record, shown: str) -> list[str]:
                 f"  the remedied design, developed and written: LTE p-p "
                 f"{', '.join(lte_parts(development))} (light/design), {within} the "
                 f"verdict's {LTE_LIMIT:g} urad (ltca run judges it between its torques too)",
+                *([f"  {applied.torque_why}"] if getattr(applied, "torque_why", "") else []),
                 *_developed_lines(applied)]
     if record is None or worst <= LTE_LIMIT:
         return []
