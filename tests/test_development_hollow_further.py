@@ -187,7 +187,10 @@ def test_the_written_line_reuses_the_steps_readings(monkeypatch):
                                 hollow_further=further)
     text = written_hollow("case", dev, 21.0)
     assert asked == [[-8.0]]
-    assert text == dhl.hollow_text([MINUS_6[1], minus_8], 40.0, 0.02)
+    assert text == dhl.hollow_text([MINUS_6[1], minus_8], 40.0, 0.02, tried=(-6.0, -7.0))
+    # −6 µm free of cost but not kept by the step (its tolerance, say): said so
+    assert "at -6 um no edge, plastic or flank-peak cost (tried by the development after " \
+        "the design torque was cut and not kept" in text
     from contact.optimize import development_lte_floor as dlf
 
     analysed = []

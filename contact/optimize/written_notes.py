@@ -661,7 +661,8 @@ def written_hollow(case, development, floor: float) -> str:
                             crownings=left) if left else [])
     if read:  # shallowest first, as probed
         probes = sorted([*read.values(), *probes], key=lambda p: -p.crowning)
-    return hollow_text(probes, target, float(development.targets.max_edge_share))
+    return hollow_text(probes, target, float(development.targets.max_edge_share),
+                       tried=tuple(read))
 
 
 def written_floor(case, development) -> float:
