@@ -200,3 +200,30 @@ def test_the_written_line_reuses_the_steps_readings(monkeypatch):
     kept = types.SimpleNamespace(**{**dev.__dict__, "hollow_further": dhf.Further(
         MINUS_6[0], case="written -6", probes=(MINUS_6[1],))})
     assert written_floor("written -6", kept) == 22.0 and analysed == ["written -6"]
+
+
+def test_one_analysis_gives_the_score_and_the_probe_alike():
+    """:func:`analysed_further` on a real analysis of the bundled default case at 50 / 500
+    N·m: the design's record and the probe are of the same analysis (identity: the LTE,
+    the flank peak, the edge and plastic shares equal, bit for bit), the score recorded
+    as the design's objective and met flag, the stage the step's, the probe's pitting
+    limit positive (finite, or inf where the case names no rating)."""
+    from pathlib import Path
+
+    from contact.optimize.development_targets import targets_from_table
+    from geometry.case import load_case
+
+    root = Path(__file__).resolve().parents[1]
+    case = load_case(root / "cases" / "kolivand2009_fm_11x41.toml")
+    targets = targets_from_table({})
+    base = _design(0.0, (30.0, 45.0))
+    e, p = dhf.analysed_further(case, {"profile_crowning": -5.0}, -5.0, base, targets,
+                                {"torques": [50.0, 500.0], "centre_v": 0.55})
+    lte = np.asarray(e.metrics["lte_peak_to_peak"], float)
+    assert p.lte == (float(lte[0]), float(lte[-1]))
+    assert p.flank_peak == float(np.asarray(e.metrics["pressure_max_flank"])[-1])
+    assert p.plastic == float(np.max(e.metrics["plastic_share"]))
+    assert p.edge_share == float(np.nan_to_num(e.metrics["edge_load_share"][-1]))
+    assert e.full[0] == e.objective and e.met == e.full[2] and e.checked
+    assert e.stage == dhf.STAGE and e.case is case and p.crowning == -5.0
+    assert p.pitting_limit > 0.0
