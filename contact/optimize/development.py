@@ -792,6 +792,13 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
     # tooth; the 10x41 a 32's pinion edge 2484 -> 2551 MPa), so the record, the lines and
     # the targets met are the written case's (development_written_drive)
     best = written_drive_check(case, best, targets, setup, say)
+    # the drive LTE target still missed above the load sharing's floor on a profile hollow
+    # already, after the design torque was cut: the profile one step hollower at the
+    # written torque, written where kept (development_hollow_further)
+    further, best, case, report, developed = _hollow_further(
+        (best, case, report, developed), targets, setup, teeth, say,
+        cut=bool(root_text) and not given,
+        write=lambda b: synthesize(b, progress=synthesis_progress, memo=memo))
     tolerance = final_tolerance(case, targets, setup, teeth, best.values)
     # not tolerant at the design torque: the torque up to which it is, stated (the design
     # torque is not cut for it)
@@ -816,7 +823,8 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
                                fe_level_text=design_torque_kept(setup),
                                given_root_text=given_root_text,
                                lte_torque=float(setup.get("lte_torque", math.nan)),
-                               coast_lte_range=_coast_judged(setup, coast, best, teeth))
+                               coast_lte_range=_coast_judged(setup, coast, best, teeth),
+                               hollow_further=further)
     log_reused(teeth, reused)
     say(result.headline())
     return result
@@ -1717,6 +1725,43 @@ def _cut_foreseen(case: Case | None, setup: dict[str, Any], rated: float,
             f"{plain_number(rated)} N m with the margin: a design torque cut foreseen, stopped"
             + (f" at {stage}" if stage else ""))
         raise CutForeseen(bound, rated, *((stage,) if stage else ()))
+
+
+def _hollow_further(written: tuple, targets: DevelopmentTargets, setup: dict[str, Any],
+                    teeth: KeptTeeth | None, say: Callable[[str], None], *, cut: bool,
+                    write: Callable[[BasicDesign], tuple[Case, Any]]) -> tuple:
+    """:func:`~contact.optimize.development_hollow_further.checked_hollow_further` on the
+    written design ``written`` = (drive design read on the case, case, report, basic
+    design): the load-sharing floor analysed on the case only where the rest of the gate
+    holds, each design written with ``write`` (basic design → (case, report)) from the
+    basic design with its drive prescriptions. Returns its
+    :class:`~contact.optimize.development_hollow_further.Further` followed by
+    ``written`` as it is after the step (the kept design's where one was kept)."""
+    best, case, report, developed = written
+    from contact.optimize.development_hollow_further import checked_hollow_further
+    from contact.optimize.development_lte_floor import load_sharing_floor
+
+    flank = developed.options.drive_flank
+
+    def floor() -> float:
+        try:
+            return load_sharing_floor(case, *(float(t) for t in setup["torques"]))
+        except (InputError, ValueError, KeyError) as exc:
+            log.info("development: the drive LTE's load-sharing floor not analysed: %s",
+                     exc)
+            return math.nan
+
+    try:
+        scale = float(developed.size_scale())
+    except (ValueError, ArithmeticError):
+        scale = math.nan
+    further = checked_hollow_further(
+        best, targets, setup, teeth, say, cut=cut, scale=scale, floor=floor,
+        write=lambda values: write(with_flank_options(developed, flank, values)))
+    if further.case is None:
+        return further, best, case, report, developed
+    return (further, further.best, further.case, further.report,
+            with_flank_options(developed, flank, further.values))
 
 
 def step_after_cut(before: DevelopmentEvaluation, cut: DevelopmentEvaluation,

@@ -40,7 +40,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Collection, Mapping, Sequence
 from typing import Any
 
 import numpy as np
@@ -254,7 +254,7 @@ def _costs(p: HollowProbe, max_edge_share: float) -> list[str]:
 
 
 def hollow_text(probes: Sequence[HollowProbe], target: float,
-                max_edge_share: float) -> str:
+                max_edge_share: float, tried: Collection[float] = ()) -> str:
     """The hollow profile's reach and what limits it, in words, for ``ltca synthesize``'s
     drive LTE line (after the load sharing's floor).
 
@@ -266,6 +266,10 @@ def hollow_text(probes: Sequence[HollowProbe], target: float,
         The development's LTE target ``max_lte``.
     max_edge_share : float — [1]
         The development's edge target.
+    tried : collection of float, optional — [µm]
+        The crownings the development's step after a design-torque cut tried
+        (:mod:`contact.optimize.development_hollow_further`) and did not keep: a free
+        probe among them is said so.
 
     Returns
     -------
@@ -296,9 +300,12 @@ def hollow_text(probes: Sequence[HollowProbe], target: float,
         if costs:
             limited.append(f"at {p.crowning:g} um " + ", ".join(costs))
         elif max(p.lte) <= target:
-            free.append(f"at {p.crowning:g} um no edge, plastic or flank-peak cost (not a "
-                        "step of the development; its other targets and the mounting "
-                        "tolerance decide)")
+            said = ("tried by the development after the design torque was cut and not "
+                    "kept: its other targets or the mounting tolerance" if any(
+                        abs(p.crowning - c) <= 1e-4 for c in tried)
+                    else "not a step of the development; its other targets and the "
+                    "mounting tolerance decide")
+            free.append(f"at {p.crowning:g} um no edge, plastic or flank-peak cost ({said})")
     if not free and not limited:
         return f"; a hollow profile ({reach}) does not reach {target:g} urad either"
     text = f"; a hollow profile lowers it ({reach})"

@@ -276,6 +276,11 @@ class DevelopmentResult:
         root-stress capacity (S_F,FE < S_Fmin there, which ``ltca run`` rates FAIL): the
         numbers and the torque that would hold
         (:func:`contact.optimize.development_root.given_torque_root`); empty where not.
+    hollow_further : Further or None
+        The hollow profile one step further after a design-torque cut
+        (:func:`contact.optimize.development_hollow_further.checked_hollow_further`): its
+        readings and the written case's load-sharing floor, which ``ltca synthesize``'s
+        drive LTE line reuses; None where the development did not reach it.
     """
 
     basic: BasicDesign
@@ -312,6 +317,7 @@ class DevelopmentResult:
     fe_level_text: str = ""
     given_root_text: str = ""
     lte_torque: float = math.nan
+    hollow_further: Any = None
 
     @property
     def tolerant(self) -> bool:

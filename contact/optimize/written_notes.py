@@ -650,9 +650,20 @@ def written_hollow(case, development, floor: float) -> str:
     crownings = sorted(crownings, reverse=True)
     if not crownings:
         return ""
-    probes = hollow_probes(basic, values, tuple(development.torque), written=case,
-                           crownings=crownings)
-    return hollow_text(probes, target, float(development.targets.max_edge_share))
+    # the development's own readings of the same designs (its hollow profile one step
+    # further, development_hollow_further: the written prescriptions with only the
+    # crowning changed, analysed alike): not analysed again
+    from contact.optimize.development_hollow_further import probes_for
+
+    further = getattr(development, "hollow_further", None)
+    read = probes_for(getattr(further, "probes", ()), crownings)
+    left = [c for c in crownings if c not in read]
+    probes = (hollow_probes(basic, values, tuple(development.torque), written=case,
+                            crownings=left) if left else [])
+    if read:  # shallowest first, as probed
+        probes = sorted([*read.values(), *probes], key=lambda p: -p.crowning)
+    return hollow_text(probes, target, float(development.targets.max_edge_share),
+                       tried=tuple(read))
 
 
 def written_floor(case, development) -> float:
@@ -669,6 +680,10 @@ def written_floor(case, development) -> float:
     worst = max(lte[0], lte[-1])
     if not float(development.targets.max_lte) < worst <= LTE_LIMIT:
         return math.nan
+    further = getattr(development, "hollow_further", None)
+    if (further is not None and further.case is None
+            and math.isfinite(float(further.floor))):
+        return float(further.floor)  # the development's reading of this case: not again
     try:
         return load_sharing_floor(case, *(float(t) for t in development.torque))
     except (InputError, ValueError, KeyError) as exc:
