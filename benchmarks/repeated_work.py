@@ -31,7 +31,13 @@ and, per kind of call, the repeats within the development that first made the ca
 those in a later development (work a memo shared by the developments of one ``ltca
 synthesize`` could keep).
 
-MEASURED_CPU97
+Measured (cpu97, 2026-11-29; the FM spiral bevel 17x23 of benchmarks/data/unseen_designs,
+≈ 179 s CPU under load 7–10): its developments 46.8 s (the Formate gear, stopped at its
+foreseen cut), 31.7 (the generated gear's own), 25.1, 27.0 and 38.6 (the LTE window's
+re-developments at 926.9, 638.9 and 530.4 N m); of 281 ease-offs computed 11 had been
+computed before (0.5 s), of 308 cold analyses none, of 129 syntheses' steps 3–6 17 in an
+earlier development (2.7 s) (docs/performance.md, "The 17×23's window re-developments:
+what they repeat").
 
 Usage: ``python benchmarks/repeated_work.py BASIC.toml [-o CASE.toml] [--calls FILE]
 [--by-development]``.
