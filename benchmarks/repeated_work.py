@@ -26,10 +26,12 @@ in it, and its check steps', :func:`contact.optimize.development_check.check_ste
 ease-off the per-process memo computes (``contact.utca.easeoff._memoised_ease_off``: with
 the misses an LRU memo of 8–256 entries would have on the same keys) and each synthesis'
 steps 3–6 (``_unrelieved_flank`` of :mod:`geometry.synthesis.case_synthesis`, keyed by
-the gear's settings and every input the memo keys it by). It prints each development's CPU
-and, per kind of call, the repeats within the development that first made the call and
-those in a later development (work a memo shared by the developments of one ``ltca
-synthesize`` could keep).
+the blanks, the gear's settings, the hands and every prescription the memo keys it by; not
+by the pinion's cutter options, the same in one basic design's developments). It prints
+each development's CPU and, per kind of call, the repeats within the development that
+first made the call and those in another one or after the developments ("outside any
+development": the remedy note's syntheses), work a memo shared by the developments of one
+``ltca synthesize`` could keep.
 
 Measured (cpu97, 2026-11-29; the FM spiral bevel 17x23 of benchmarks/data/unseen_designs,
 ≈ 179 s CPU under load 7–10): its developments 46.8 s (the Formate gear, stopped at its
@@ -157,6 +159,22 @@ def repeats_by_development(calls: list[tuple[str, str, float, str]]
     return {kind: tuple(c) for kind, c in out.items()}
 
 
+def repeats_across(calls: list[tuple[str, str, float, str]]
+                   ) -> dict[tuple[str, str, str], tuple[int, float]]:
+    """The repeats in another development than the key's first call's, per (kind, that
+    first development, the repeating one): (count, CPU s). ``calls`` as
+    :func:`repeats_by_development`'s."""
+    first: dict[tuple[str, str], str] = {}
+    out: dict[tuple[str, str, str], list] = {}
+    for kind, key, seconds, dev in calls:
+        where = first.setdefault((kind, key), dev)
+        if where != dev:
+            counts = out.setdefault((kind, where, dev), [0, 0.0])
+            counts[0] += 1
+            counts[1] += seconds
+    return {k: (int(c[0]), float(c[1])) for k, c in out.items()}
+
+
 def _wrap_memo(memo, record):
     """The lru_cache ``memo`` with each call recorded: ``record(key, computed, CPU s)``,
     the key the hash of the arguments as the memo hashes them (their ``repr`` may tell
@@ -193,8 +211,13 @@ def _wrap_development(devs: Developments, record, record_ease_off) -> None:
         try:
             return unrelieved(pair, pf, fo, ref_gear_rotation, **kw)
         finally:
+            # (the pinion's cutter options, which the synthesis memo keys by, are not in
+            # pair: the same options assumed, as in one basic design's developments)
             record("synthesis steps 3-6",
-                   _key(repr(pair.gear.settings), pf, fo.path_angle, fo.te_level,
+                   _key(repr(pair.geom.design), repr(pair.gear.settings),
+                        repr(pair.pinion_blank), repr(pair.gear_blank), pair.pinion_hand,
+                        pair.gear_hand, repr(sorted(pair.kw.items())), pair.pinion_crown,
+                        pair.third_order, pf, fo.path_angle, fo.te_level,
                         fo.ellipse_length, fo.approach, ref_gear_rotation,
                         kw.get("conjugate"), fo.mean_point_shift),
                    time.process_time() - t0)
@@ -214,6 +237,8 @@ def _print_by_development(devs: Developments, calls: list[tuple[str, str, float,
         cpu = sum(c[2] for c in calls if c[0] == kind)
         print(f"{kind}: {n} ({cpu:.1f} s); the same inputs again within a development "
               f"{n_in} ({s_in:.1f} s), in a later development {n_out} ({s_out:.1f} s)")
+    for (kind, where, dev), (n, seconds) in sorted(repeats_across(calls).items()):
+        print(f"  {kind}: {n} ({seconds:.1f} s) first in {where}, again in {dev}")
     if eo_keys:
         sizes = (8, 16, 32, 64, 128, 256)
         print("ease-offs an LRU memo of " + ", ".join(map(str, sizes)) + " entries computes: "

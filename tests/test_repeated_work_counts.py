@@ -49,3 +49,8 @@ def test_repeats_are_told_apart_by_the_development_of_the_first_call(counts):
     assert out["synthesis"] == (1, 0.5, 1, 0.25)
     assert out["ease-off"] == (0, 0.0, 1, 4.0)
     assert counts.repeats_by_development([]) == {}
+    # the repeats across, by the development of the first call and the repeating one
+    across = counts.repeats_across(calls)
+    assert across == {("synthesis", "1", "2"): (1, 0.25), ("ease-off", "2", "3"): (1, 4.0)}
+    assert sum(n for n, _ in across.values()) == sum(
+        v[2] for v in out.values())
