@@ -1,0 +1,56 @@
+"""The counts ``benchmarks/repeated_work.py --by-development`` prints its repeats with
+(branch cpu97, issue 71/75: the 17x23's window re-developments measured for work repeated
+across developments)."""
+
+from __future__ import annotations
+
+import functools
+import importlib.util
+import random
+from pathlib import Path
+
+import pytest
+
+_PATH = Path(__file__).resolve().parent.parent / "benchmarks" / "repeated_work.py"
+
+
+@pytest.fixture(scope="module")
+def counts():
+    if not _PATH.exists():  # an installed copy without the benchmarks folder
+        pytest.skip("benchmarks/repeated_work.py not in this tree")
+    spec = importlib.util.spec_from_file_location("repeated_work", _PATH)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+@pytest.mark.parametrize("size", [1, 2, 8, 64])
+def test_the_simulated_memo_misses_what_lru_cache_misses(counts, size):
+    """Identity: the misses simulated for an LRU memo of ``size`` entries equal those
+    ``functools.lru_cache(maxsize=size)`` counts on the same keys (exact: integers), on
+    a sequence with repeats near and far (400 keys of 40)."""
+    rng = random.Random(97)
+    keys = [str(rng.randrange(40)) for _ in range(400)]
+    memo = functools.lru_cache(maxsize=size)(lambda key: key)
+    for key in keys:
+        memo(key)
+    assert counts.lru_misses(keys, size) == memo.cache_info().misses
+    # and the bounds: at least the distinct keys, at most every call
+    assert len(set(keys)) <= counts.lru_misses(keys, size) <= len(keys)
+
+
+def test_repeats_are_told_apart_by_the_development_of_the_first_call(counts):
+    """A key's first call is no repeat; a repeat in the development of its first call is
+    counted within, one in another development across (its CPU with it); kinds apart."""
+    calls = [("synthesis", "a", 1.0, "1"), ("synthesis", "a", 0.5, "1"),
+             ("synthesis", "a", 0.25, "2"), ("synthesis", "b", 2.0, "2"),
+             ("ease-off", "a", 3.0, "2"), ("ease-off", "a", 4.0, "3")]
+    out = counts.repeats_by_development(calls)
+    assert out["synthesis"] == (1, 0.5, 1, 0.25)
+    assert out["ease-off"] == (0, 0.0, 1, 4.0)
+    assert counts.repeats_by_development([]) == {}
+    # the repeats across, by the development of the first call and the repeating one
+    across = counts.repeats_across(calls)
+    assert across == {("synthesis", "1", "2"): (1, 0.25), ("ease-off", "2", "3"): (1, 4.0)}
+    assert sum(n for n, _ in across.values()) == sum(
+        v[2] for v in out.values())
