@@ -104,7 +104,8 @@ def main(argv: list[str] | None = None) -> None:
     ap.add_argument("--edges", action="store_true",
                     help="also each edge kind's peak pressure [MPa] at DESIGN as ltca run's "
                          "edge_pressure check reads it (0: below the 0.05 %% share floor), "
-                         "and the LTE p-p between the torques (its lte_range)")
+                         "and the LTE p-p between the torques (its lte_range); the edge "
+                         "contact at LIGHT (p_max edge, its share, each kind's peak)")
     ap.add_argument("--tolerance", action="store_true",
                     help="also the development's tolerance check (coarse LTCA at "
                          "dE/dP +/- 0.05 mm): the tolerance targets missed, per excursion")
@@ -168,6 +169,7 @@ def main(argv: list[str] | None = None) -> None:
                 f"{k} {m[f'edge_peak_{k}'][-1]:.0f}" for k in EDGE_KINDS
                 if f"edge_peak_{k}" in m)
                 + f" MPa; {range_line(case, args.torques, opts, args.flank)}")
+            print("    " + light_line(m))
         if args.floor >= 2:
             print("    " + floor_line(case, np.linspace(*args.torques, args.floor), opts,
                                       args.flank))
@@ -184,6 +186,23 @@ def main(argv: list[str] | None = None) -> None:
                     f" (edge {100 * tol[lab][0]['edge_load_share'][1]:.1f} %, plastic "
                     f"{100 * np.max(tol[lab][0]['plastic_share']):.1f} %)" if ks else "")
                 for lab, ks in missed.items()))
+
+
+def light_line(m) -> str:
+    """The edge contact at the light torque as ``ltca run`` prints it: ``p_max edge``
+    [MPa], the ``edge_contact`` check's share [%] and each edge kind's peak [MPa] whatever
+    its share (:func:`~contact.optimize.development_evaluate.light_edge_metrics`; the coast
+    light-edge step's readings)."""
+    from contact.ltca.edges import EDGE_KINDS
+
+    if "pressure_max_edge" not in m:
+        return "edges at LIGHT: not read"
+    share = m.get("edge_contact_share")
+    kinds = ", ".join(f"{k} {m[f'edge_pressure_{k}'][0]:.0f}" for k in EDGE_KINDS
+                      if f"edge_pressure_{k}" in m)
+    return (f"edges at LIGHT: p_max edge {m['pressure_max_edge'][0]:.0f} MPa"
+            + (f", share {100 * share[0]:.2g} %" if share is not None else "")
+            + (f" ({kinds} MPa)" if kinds else ""))
 
 
 def range_line(case, torques, options, flank: str) -> str:

@@ -270,10 +270,11 @@ def test_the_development_writes_the_relief_where_the_flank_holds(monkeypatch):
 def _two_edges(case, torques, misalignment=None, **kw):
     """The 13x17 at Σ 50°'s coast light torque (18.4 / 122.7 N m, 2026-11-29): its gear
     tip (1640 MPa, 0.23 % on edges) and gear toe (900 MPa, made up) loaded at the light
-    torque; the tip cleared by the root relief started at 0.2, the toe by an ellipse of at
-    most 0.4 (made up)."""
+    torque; the tip cleared by the root relief started at 0.2, the toe by the path turned
+    to −50° or beyond or an ellipse of at most 0.4 (made up)."""
     tip = 0.0 if float(case["relief_start"]) <= 0.2 + 1e-9 else 1640.0
-    toe = 0.0 if float(case["ellipse_length"]) <= 0.4 + 1e-9 else 900.0
+    toe = (0.0 if float(case["ellipse_length"]) <= 0.4 + 1e-9
+           or float(case["path_angle"]) <= -50.0 + 1e-9 else 900.0)
     pressure = {f"edge_pressure_{k}": [0.0, 0.0] for k in EDGE_KINDS}
     pressure["edge_pressure_gear_tip"] = [tip, 0.0]
     pressure["edge_pressure_gear_toe"] = [toe, 0.0]
@@ -289,7 +290,9 @@ def test_two_loaded_edges_relieved_together(monkeypatch):
     (root relief from 0.2, the bound; ellipse 0.5 × 0.85) clears the tip but not the toe:
     not kept, said with the edge left. The second (the start at its bound, so the
     profile crowning one step more, 0 → 10 µm, before the root relief deeper:
-    :data:`COAST_LEVER_ORDER`; the ellipse × 0.85 again) clears both: kept."""
+    :data:`COAST_LEVER_ORDER`; the path turned 2.5° again, −45° → −47.5° → −50°, the
+    toe's first lever, before the shorter ellipse) clears both: kept, the ellipse as it
+    was."""
     seen, fake = seen_designs(_two_edges)
     targets, setup, chosen = stand_in(monkeypatch, fake, (18.4, 122.7))
     start = chosen(dict(COAST))
@@ -298,13 +301,13 @@ def test_two_loaded_edges_relieved_together(monkeypatch):
     lines = []
     got = dcl.checked_coast_light_edge(start, targets, setup, None, lines.append, dict,
                                        bound=math.inf, key_prefix=PREFIX)
-    first = round(0.85 * 0.5, 4)
-    second = round(0.85 * first, 4)
-    tried = [(d["relief_start"], d["profile_crowning"], d["ellipse_length"]) for d in seen]
+    first, second = -47.5, -50.0
+    tried = [(d["relief_start"], d["profile_crowning"], d["path_angle"]) for d in seen]
     assert tried[0] == (0.2, 0.0, first) and tried[-1] == (0.2, 10.0, second)
     assert set(tried) == {(0.2, 0.0, first), (0.2, 10.0, second)}
+    assert {d["ellipse_length"] for d in seen} == {COAST["ellipse_length"]}
     assert got.values == COAST | {"relief_start": 0.2, "profile_crowning": 10.0,
-                                  "ellipse_length": second}
+                                  "path_angle": second}
     assert not light_edge_loaded(got)
     assert any("not kept: it still loads an edge at the light torque (p_max edge 900 MPa"
                in s and "gear toe" in s for s in lines), lines
@@ -391,32 +394,48 @@ def test_the_development_says_the_written_coast_light_edge():
     assert len(lines) == 1
 
 
-def _after_peak(case, torques, misalignment=None, tip_rise=0.0, **kw):
+def _after_peak(case, torques, misalignment=None, tip_rise=0.0, path_plastic=0.0, **kw):
     """The 13x17 at Σ 50°'s coast flank as the coast edge-peak step wrote it (root relief
-    22.5 µm from 0.4, ellipse 0.75; 18.4 / 122.7 N m): the gear toe loaded at the light
-    torque at 1061 MPa with a share below the verdict's floor (counted 0) while the
-    ellipse is longer than 0.65 (made up: between the 0.75 written and the 0.6375 the toe's
-    lever tries first), none from there on; the gear tip's edge peak at the design torque
-    4575 MPa against a static strength of 2400 MPa (the written case's readings,
-    docs/synthesis.md), raised by ``tip_rise`` MPa where the ellipse is shorter than the
-    written 0.75 (made up)."""
-    ellipse = float(case["ellipse_length"])
-    toe = 1061.0 if ellipse > 0.65 + 1e-9 else 0.0
+    22.5 µm from 0.4, ellipse 0.75, path −45°; 18.4 / 122.7 N m): the gear toe loaded at
+    the light torque at 1061 MPa with a share below the verdict's floor (counted 0) while
+    the ellipse is longer than 0.65 (made up: between the 0.75 written and the 0.6375 the
+    toe's lever tries) and the path is short of −47.5°, none from there on; the gear tip's
+    edge peak at the design torque 4575 MPa against a static strength of 2400 MPa, the
+    toe's 4467 MPa, LTE 51.1 / 91.1 µrad (the written case's readings, docs/synthesis.md),
+    the tip's raised by ``tip_rise`` MPa where the ellipse is shorter than the written 0.75
+    (made up). At the path −47.5° (the ellipse 0.75): the edge peaks 4332 / 4329 MPa and
+    the LTE 55.7 / 90.3 µrad ``ltca run``'s sampling measured there, and a plastic share
+    ``path_plastic`` [1] at the design torque (made up; 0 measured)."""
+    ellipse, path = float(case["ellipse_length"]), float(case["path_angle"])
+    turned = path <= -47.5 + 1e-9
+    toe = 1061.0 if ellipse > 0.65 + 1e-9 and not turned else 0.0
     tip = 4575.0 + (tip_rise if ellipse < 0.75 - 1e-9 else 0.0)
+    lte, plastic = [51.1, 91.1], [0.0, 0.0]
+    toe_peak = 4467.0
+    if turned:
+        tip, toe_peak = 4332.0, 4329.0
+        lte, plastic = [55.7, 90.3], [0.0, path_plastic]
     pressure = {f"edge_pressure_{k}": [0.0, 0.0] for k in EDGE_KINDS}
-    pressure["edge_pressure_gear_toe"] = [toe, 4467.0]
+    pressure["edge_pressure_gear_toe"] = [toe, toe_peak]
     pressure["edge_pressure_gear_tip"] = [0.0, tip]
     peaks = {f"edge_peak_{k}": [0.0, 0.0] for k in EDGE_KINDS}
     peaks["edge_peak_gear_tip"] = [0.0, tip]
+    peaks["edge_peak_gear_toe"] = [0.0, toe_peak]
     m = _metrics(pressure_max_edge=[toe, tip], edge_contact_share=[0.0, 0.0082],
+                 lte_peak_to_peak=lte, plastic_share=plastic,
                  edge_peak=[0.0, tip], edge_static_strength=[2400.0, 2400.0],
                  **pressure, **peaks)
     return m, (0.0, 1.0, 0.0, 1.0, 2400.0)
 
 
-def _after_peak_start(monkeypatch, tip_rise):
-    seen, fake = seen_designs(functools.partial(_after_peak, tip_rise=tip_rise))
+def _after_peak_start(monkeypatch, tip_rise, path=False, **law):
+    """The stand-in step's inputs on :func:`_after_peak`; ``path`` False: a development
+    that does not vary the path angle (the toe's lever the ellipse alone)."""
+    seen, fake = seen_designs(functools.partial(_after_peak, tip_rise=tip_rise, **law))
     targets, setup, chosen = stand_in(monkeypatch, fake, (18.4, 122.7))
+    if not path:
+        targets = dataclasses.replace(targets, variables={
+            k: v for k, v in targets.variables.items() if k != "path_angle"})
     start = chosen(dict(COAST_17_WRITTEN))
     seen.clear()
     return seen, targets, setup, start
@@ -449,9 +468,9 @@ def test_the_edge_peak_raised_rule():
 def test_the_light_edge_after_the_edge_peak_step_is_relieved(monkeypatch):
     """Issue 71 on the 13x17: the flank the edge-peak step wrote loads the gear toe at the
     light torque (1061 MPa, below the verdict's floor: counted 0, still edge contact).
-    Run again with that step's edges held (``edge_peak_held``), the toe's lever (the
-    ellipse 0.75 × 0.85 = 0.6375) clears it and leaves the design torque's edges as they
-    were: kept after one design."""
+    Run again with that step's edges held (``edge_peak_held``), on a development that does
+    not vary the path, the toe's lever (the ellipse 0.75 × 0.85 = 0.6375) clears it and
+    leaves the design torque's edges as they were: kept after one design."""
     seen, targets, setup, start = _after_peak_start(monkeypatch, tip_rise=0.0)
     assert light_edge_loaded(start) and dcl.coast_light_edge_kinds(start) == ("gear_toe",)
     lines = []
@@ -469,7 +488,8 @@ def test_the_light_edge_after_the_edge_peak_step_keeps_its_edges(monkeypatch):
     edge-peak step took off: refused ("edge peak", said) where the step runs after it,
     both designs (0.6375, then 0.6375 × 0.85 = 0.5419) tried, the design returned as it
     was; by 40 MPa (within the resolution) kept. Before the edge-peak step (the flag off)
-    the same design is kept: that step still follows there."""
+    the same design is kept: that step still follows there. A development that does not
+    vary the path angle (the toe's lever the ellipse alone)."""
     seen, targets, setup, start = _after_peak_start(monkeypatch, tip_rise=100.0)
     lines = []
     got = dcl.checked_coast_light_edge(start, targets, setup, None, lines.append, dict,
@@ -553,7 +573,8 @@ def test_the_coast_levers_put_the_profile_crowning_before_the_deeper_relief():
     relief start at its bound 0.5) tries the profile crowning 0 -> 10 µm (the height
     stage's step × size_scale 1) before the tip relief 15 -> 22.5 µm (× 1.5, the drive
     step's deeper); the gear tip (its root relief 60 µm and start 0.2 both at their
-    bounds) only the crowning; the toe only the ellipse (0.55 × 0.85, × 0.7); where the
+    bounds) only the crowning; the toe the path turned 2.5° towards the profile, then the
+    ellipse (0.55 × 0.85, × 0.7); where the
     start is free it comes first (0.85 -> 0.75); the crowning at its bound (30 µm) is not
     tried; a development that does not vary it, neither. Exact: the bounds' arithmetic."""
     from contact.optimize.development import DevelopmentTargets
@@ -563,7 +584,7 @@ def test_the_coast_levers_put_the_profile_crowning_before_the_deeper_relief():
         ("profile_crowning", 10.0), ("tip_relief", 22.5)]
     assert dcl.coast_lever_designs("gear_tip", COAST_33, t) == [("profile_crowning", 10.0)]
     assert dcl.coast_lever_designs("gear_toe", COAST_33, t) == [
-        ("ellipse_length", 0.4675), ("ellipse_length", 0.385)]
+        ("path_angle", -47.5), ("ellipse_length", 0.4675), ("ellipse_length", 0.385)]
     free = dict(COAST_33, tip_relief_start=0.85)
     assert dcl.coast_lever_designs("pinion_edge", free, t)[0] == ("tip_relief_start", 0.75)
     full = dict(COAST_33, profile_crowning=30.0)
@@ -571,3 +592,63 @@ def test_the_coast_levers_put_the_profile_crowning_before_the_deeper_relief():
     fixed = dataclasses.replace(t, variables={k: v for k, v in t.variables.items()
                                               if k != "profile_crowning"})
     assert dcl.coast_lever_designs("gear_tip", COAST_33, fixed) == []
+
+
+def test_the_13x17_toe_cleared_by_the_path(monkeypatch):
+    """The 13x17's written coast flank (path −45°) on the default bounds: the step's first
+    design for the gear toe turns the path 2.5° towards the profile (−47.5°, the ellipse
+    0.75 as written), which clears the toe at the light torque, lowers the edges' summed
+    excess at the design torque ((4575 − 2400) + (4467 − 2400) → (4332 − 2400) + (4329 −
+    2400) MPa, the edge-peak step's gain held) and the LTE at the design torque (91.1 →
+    90.3 µrad; 55.7 at 18.4 N m): kept after one design, said with its unit. The law is
+    ``ltca run``'s sampling measured (docs/synthesis.md, "The coast gear-toe edge at the
+    light torque: the path angle"); the check is the step's choice on it."""
+    seen, targets, setup, start = _after_peak_start(monkeypatch, tip_rise=100.0, path=True)
+    assert dcl.coast_light_edge_kinds(start) == ("gear_toe",)
+    lines = []
+    got = dcl.checked_coast_light_edge(start, targets, setup, None, lines.append, dict,
+                                       bound=math.inf, key_prefix=PREFIX,
+                                       edge_peak_held=True)
+    assert got.values == COAST_17_WRITTEN | {"path_angle": -47.5}
+    assert not light_edge_loaded(got)
+    assert {(d["path_angle"], d["ellipse_length"]) for d in seen} == {(-47.5, 0.75)}
+    assert any("with path_angle -47.5 deg (the coast gear toe" in s for s in lines), lines
+
+
+def test_a_path_turn_that_loses_a_coast_target_is_refused(monkeypatch):
+    """The same turn with 1 % of the design torque on plastic segments (made up: a coast
+    target the written flank met, plastic share 0) is refused on the step's rule, and so
+    is the second design (the path turned again, −50°, the same law): two designs at
+    most, the path's both, the ellipse not reached, the flank returned as it was."""
+    seen, targets, setup, start = _after_peak_start(monkeypatch, tip_rise=0.0, path=True,
+                                                    path_plastic=0.01)
+    lines = []
+    got = dcl.checked_coast_light_edge(start, targets, setup, None, lines.append, dict,
+                                       bound=math.inf, key_prefix=PREFIX,
+                                       edge_peak_held=True)
+    assert got is start
+    assert sorted({d["path_angle"] for d in seen}) == [-50.0, -47.5]
+    assert {d["ellipse_length"] for d in seen} == {0.75}
+    assert sum("not kept" in s and "plastic" in s for s in lines) == 2, lines
+
+
+def test_the_path_turn_at_its_bound():
+    """:func:`coast_lever_designs` for a toe or heel: the path turned 2.5° towards the
+    profile (−45° → −47.5°), clipped to the variable's bound (−79° → −80°), none at the
+    bound (the ellipse alone) or where the development does not vary the path; no path
+    design for the profile-end edges. Exact: the bounds' arithmetic."""
+    from contact.optimize.development import DevelopmentTargets
+
+    t = DevelopmentTargets()
+    assert dcl.coast_lever_designs("gear_heel", COAST_33, t)[0] == ("path_angle", -47.5)
+    near = dict(COAST_33, path_angle=-79.0)
+    assert dcl.coast_lever_designs("gear_toe", near, t)[0] == ("path_angle", -80.0)
+    at = dict(COAST_33, path_angle=-80.0)
+    assert [n for n, _ in dcl.coast_lever_designs("gear_toe", at, t)] == [
+        "ellipse_length", "ellipse_length"]
+    fixed = dataclasses.replace(t, variables={k: v for k, v in t.variables.items()
+                                              if k != "path_angle"})
+    assert [n for n, _ in dcl.coast_lever_designs("gear_toe", COAST_33, fixed)] == [
+        "ellipse_length", "ellipse_length"]
+    assert all(n != "path_angle" for kind in dcl.PROFILE_EDGES
+               for n, _ in dcl.coast_lever_designs(kind, COAST_33, t))

@@ -52,3 +52,21 @@ def test_range_line_reads_the_largest_lte_at_ltca_runs_torques(monkeypatch):
     lte = 60.0 - 1e-3 * (expected - 200.0) ** 2
     k = int(np.argmax(lte))
     assert line == f"between: {lte[k]:.0f} urad at {expected[k]:g} N m"
+
+
+def test_light_line_reads_the_light_torques_edges():
+    """:func:`light_line` (branch coasttoe97): the light torque's ``p_max edge``, the
+    counted share and each edge kind's peak, the first entry of each metric (light, then
+    design torque), as the 13x17's written coast flank read them (1061 MPa on the gear
+    toe, share 0: below the verdict's floor); metrics without the readings say so. Exact:
+    the line formats the numbers it is given."""
+    from contact.ltca.edges import EDGE_KINDS
+
+    m = {"pressure_max_edge": np.array([1060.74, 4574.67]),
+         "edge_contact_share": np.array([0.0, 0.008233])}
+    m |= {f"edge_pressure_{k}": np.array([1060.74 if k == "gear_toe" else 0.0, 4000.0])
+          for k in EDGE_KINDS}
+    line = _levers().light_line(m)
+    assert line.startswith("edges at LIGHT: p_max edge 1061 MPa, share 0 % (")
+    assert "gear_toe 1061" in line and "gear_tip 0" in line and "4000" not in line
+    assert _levers().light_line({}) == "edges at LIGHT: not read"

@@ -39,7 +39,10 @@ on the flank it wrote (at most :data:`COAST_LIGHT_EDGE_STEPS` more designs, the 
 torque's edges held: :func:`edge_peak_raised`). For an edge at an end of the profile
 (:data:`PROFILE_EDGES`) the step also tries the profile crowning one step more, after the
 relief longer and before deeper (:func:`coast_lever_designs`; measured on the 13×33:
-docs/synthesis.md, "The light-edge step again after the coast edge-peak step").
+docs/synthesis.md, "The light-edge step again after the coast edge-peak step"); for an
+edge at an end of the face (:data:`LENGTHWISE_EDGES`) it first turns the path angle
+:data:`PATH_TURN` towards the profile, before the shorter ellipse (measured on the 13×17:
+docs/synthesis.md, "The coast gear-toe edge at the light torque: the path angle").
 """
 
 from __future__ import annotations
@@ -52,6 +55,7 @@ from typing import Any
 import numpy as np
 
 from contact.ltca.edges import EDGE_KINDS
+from contact.optimize.development_band_edge import PATH_NAME
 from contact.optimize.development_coast import CoastCapacity
 from contact.optimize.development_coast_capacity_lte import coast_range_peak
 from contact.optimize.development_coast_edge_peak import coast_peak_bound
@@ -83,7 +87,8 @@ from geometry.case import Case
 from geometry.core.text import plain_number
 from geometry.synthesis.basic_design import BasicDesign
 
-__all__ = ["COAST_LEVER_ORDER", "COAST_LIGHT_EDGE_STEPS", "PROFILE_EDGES", "STAGE",
+__all__ = ["COAST_LEVER_ORDER", "COAST_LIGHT_EDGE_STEPS", "LENGTHWISE_EDGES", "PATH_TURN",
+           "PROFILE_EDGES", "STAGE",
            "checked_coast_light_edge", "coast_lever_designs", "coast_light_edge",
            "coast_light_edge_after_peak", "coast_light_edge_kinds", "coast_light_edge_runs_on",
            "edge_peak_raised"]
@@ -106,25 +111,52 @@ COAST_LIGHT_EDGE_STEPS = 2
 PROFILE_EDGES = ("pinion_edge", "gear_tip")
 
 #: the coast step's order of an edge's levers: the drive step's
-#: (:data:`~contact.optimize.development_light_edge_relief.LEVER_ORDER`: the relief longer
-#: before deeper) with the profile crowning one step more (:func:`coast_lever_designs`)
-#: after the relief longer and before the relief deeper. Why: measured 2026-11-29 on the FM
-#: hypoid 13x33 at Σ 85° (docs/synthesis.md, "The light-edge step again after the coast
-#: edge-peak step"), whose coast tip relief already starts at its bound: the deeper tip
-#: relief (15 -> 22.5 µm) lifts the flank peak at the coast design torque past the capacity
-#: bound (1625 MPa); the profile crowning 0 -> 10 µm clears the 949 MPa pinion edge at
-#: 33.1 N m and lowers that peak (1620 -> 1498 MPa), no coast target lost
+#: (:data:`~contact.optimize.development_light_edge_relief.LEVER_ORDER`: the relief longer before
+#: deeper) with the profile crowning one step more (:func:`coast_lever_designs`) after the relief
+#: longer and before the relief deeper, and for the toe and heel the path turned towards the profile
+#: (:data:`PATH_TURN`) before the shorter ellipse. Why: measured 2026-11-29 on the FM hypoid 13x33
+#: at Σ 85° (docs/synthesis.md, "The light-edge step again after the coast edge-peak step"), whose
+#: coast tip relief already starts at its bound: the deeper tip relief (15 -> 22.5 µm) lifts the
+#: flank peak at the coast design torque past the capacity bound (1625 MPa); the profile crowning 0
+#: -> 10 µm clears the 949 MPa pinion edge at 33.1 N m and lowers that peak (1620 -> 1498 MPa), no
+#: coast target lost
 COAST_LEVER_ORDER = ("relief_start", "tip_relief_start", CROWNING_NAME, "root_relief",
-                     "tip_relief", "ellipse_length")
+                     "tip_relief", PATH_NAME, "ellipse_length")
+
+#: the edge kinds at an end of the face (the gear's toe and heel), whose light-torque
+#: contact the coast step first takes off by turning the contact path towards the profile
+#: (:data:`PATH_TURN`), before the shorter ellipse of the drive step's levers
+LENGTHWISE_EDGES = ("gear_heel", "gear_toe")
+
+#: [deg] the turn of the coast path angle towards the profile each design of the coast step
+#: makes for a :data:`LENGTHWISE_EDGES` kind (clipped to the variable's bounds): a diagonal
+#: path (−45°) sweeps the contact along the face as it rolls, and turned towards the
+#: profile it reaches less far along the face, so the light-load pattern's ends come off
+#: the toe and the heel while the ellipse (the lengthwise crowning) stays as long. Measured
+#: 2026-11-29 on the FM spiral bevel 13x17 at Σ 50° (its coast flank written, ``ltca run``'s
+#: sampling at 18.4 / 122.7 N m; ``benchmarks/development_levers.py --flank coast --check
+#: --edges``; docs/synthesis.md, "The coast gear-toe edge at the light torque: the path
+#: angle"): path −45° (written) loads the gear toe at 1061 MPa at 18.4 N m, LTE 51.1 /
+#: 91.1 µrad, flank peak 1367 MPa, edge peaks 4575 (tip) / 4467 (toe) MPa; −47.5° clears
+#: the toe, LTE 55.7 / 90.3, between the torques 90.3, flank peak 1268, edge peaks 4332 /
+#: 4329, no target lost (centre u met); −50° clears it too but lifts the LTE to 60.3 µrad
+#: at 18.4 N m and 91.8 between the torques; −55° / −60° clear it at 66.4 / 71.9 µrad at
+#: 18.4 N m (−60° loses the LTE-spread target). The shorter ellipse (0.6375), the step's
+#: lever before, clears it but lifts the gear tip's peak to 5072 MPa and the LTE to 102.4
+#: µrad. 2.5°: the least turn that cleared it, half the band-edge step's
+#: (:data:`~contact.optimize.development_band_edge.BAND_EDGE_PATH_TURN`)
+PATH_TURN = 2.5
 
 
 def coast_lever_designs(kind: str, values: Mapping[str, float], targets: DevelopmentTargets
                         ) -> list[tuple[str, float]]:
     """The designs of an edge kind's levers the coast step tries, in
     :data:`COAST_LEVER_ORDER`: the drive's (:func:`~contact.optimize.development_edge_peak.
-    lever_designs`) and, for :data:`PROFILE_EDGES`, the profile crowning raised by the
+    lever_designs`); for :data:`PROFILE_EDGES`, the profile crowning raised by the
     height stage's step (:data:`~contact.optimize.development_stages.CROWNING_STEP` ×
-    ``targets.size_scale``, clipped to its range).
+    ``targets.size_scale``, clipped to its range); for :data:`LENGTHWISE_EDGES`, the path
+    angle [deg] turned :data:`PATH_TURN` towards the profile (clipped to its range), before
+    the shorter ellipse.
 
     Parameters
     ----------
@@ -149,10 +181,18 @@ def coast_lever_designs(kind: str, values: Mapping[str, float], targets: Develop
     Notes
     -----
     Source: Litvin & Fuentes, *Gear Geometry and Applied Theory*, 2nd ed., 2004, §9.4
-    (the profile's parabolic modification keeps the contact off the tooth's top edge);
-    the 13x33 measured (:data:`COAST_LEVER_ORDER`).
+    (the profile's parabolic modification keeps the contact off the tooth's top edge; the
+    path's direction on the flank sets how far along the face the contact travels);
+    the 13x33 and the 13x17 measured (:data:`COAST_LEVER_ORDER`, :data:`PATH_TURN`).
     """
     out = list(lever_designs(kind, values, targets))
+    if kind in LENGTHWISE_EDGES and PATH_NAME in targets.variables and PATH_NAME in values:
+        lo, hi = (float(x) for x in targets.variables[PATH_NAME])
+        now = float(values[PATH_NAME])
+        turn = -PATH_TURN if now <= 0.0 else PATH_TURN  # towards the profile (±90°)
+        x = round(float(np.clip(now + turn, lo, hi)), 4)
+        if abs(x - now) > 1e-6:
+            out.append((PATH_NAME, x))
     if (kind in PROFILE_EDGES and CROWNING_NAME in targets.variables
             and CROWNING_NAME in values):
         lo, hi = (float(x) for x in targets.variables[CROWNING_NAME])
@@ -252,8 +292,9 @@ def _coast_light_edge_designs(start: DevelopmentEvaluation, targets: Development
                               ) -> Generator[Try, Sent, None]:
     # Why: as the drive step's (development_light_edge_relief._light_edge_designs): an
     # edge carries load at the light torque where the flank's ease-off there is less than
-    # the light torque's approach; the relief at that edge longer (then deeper), or the
-    # lengthwise crowning for toe and heel, keeps it out of the light-load pattern (Litvin
+    # the light torque's approach; the relief at that edge longer (then deeper), or for
+    # toe and heel the path turned towards the profile (then the lengthwise crowning),
+    # keeps it out of the light-load pattern (Litvin
     # & Fuentes 2004, §9.4; Stadtfeld 1993, ch. 3). A design is kept only where no edge is
     # loaded at the light torque (_cleared), so where the light torque loads two edges
     # (the spiral bevel 13x17 at Σ 50°'s gear tip and toe) one lever alone cannot be
@@ -276,15 +317,21 @@ def _coast_light_edge_designs(start: DevelopmentEvaluation, targets: Development
             return
         for _, name, x in changes:
             values[name] = x
-        change = ", ".join(f"{name} {x:.4g}"
-                           f"{' um' if name.endswith(('relief', 'crowning')) else ''}"
-                           for _, name, x in changes)
+        change = ", ".join(f"{name} {x:.4g}{_unit(name)}" for _, name, x in changes)
         edges = " and ".join(EDGE_WORDS[k] for k, _, _ in changes)
         best, _ = yield Try(
             dict(values),
             f"with {change} (the coast {edges}: {LIGHT_EDGE} p_max edge "
             f"{np.nan_to_num(p):.0f} MPa, edge share {100.0 * np.nan_to_num(s):.2g} %)",
             f"the coast {change} for the light torque's {edges}")
+
+
+def _unit(name: str) -> str:
+    """The file unit said after a lever's value: µm of a relief or crowning, deg of the
+    path angle, none of a fraction."""
+    if name.endswith(("relief", "crowning")):
+        return " um"
+    return " deg" if name == PATH_NAME else ""
 
 
 def _cleared_said(say: Callable[[str], None]
