@@ -118,8 +118,8 @@ def test_the_length_step_keeps_the_design_where_it_has_nothing_to_gain(monkeypat
     """Nothing analysed where the length is met, or where the ellipse is at the bound the
     pattern needs it beyond (the 6x61's law, its pattern short at the upper bound 0.7 the
     file gives: bounds given are used as given); the design returned where every design of
-    the search gives up a target it met (the 7x39's law with 3 % of the design torque on edges below the ellipse 0.7), at
-    most LENGTH_DESIGNS of them."""
+    the search gives up a target it met (the 7x39's law with 3 % of the design torque on
+    edges below the ellipse 0.7), at most LENGTH_DESIGNS of them."""
     seen = []
 
     def fake(case, torques, misalignment=None, **kw):
