@@ -229,11 +229,6 @@ def checked_length(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                        lost=lost, tolerant=tolerant)
         if not why:
             return e
-        if (why.startswith("not tolerant") and flank == "drive"
-                and (f := _relief_variant(best, e, x, 1.0 / LENGTH_RELIEF_FRACTION,
-                                          "its tolerance missed", targets, setup, teeth,
-                                          say, placed)) is not None):
-            return f
         if not too_long and length < aim - 1e-9 and x < hi - 1e-9:
             far.append((x, length))  # short of the aim: a longer ellipse still may keep it
         else:
@@ -259,48 +254,6 @@ def checked_length(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                                             key_prefix=key_prefix)) is not None):
             return f
     return best
-
-
-def _relief_variant(best: DevelopmentEvaluation, e: DevelopmentEvaluation, x: float,
-                    factor: float, why: str, targets: DevelopmentTargets,
-                    setup: Mapping[str, Any], teeth: KeptTeeth | None,
-                    say: Callable[[str], None],
-                    placed: Callable[[Mapping[str, float]], Case], *,
-                    flank: str = "drive", key_prefix: tuple | None = None
-                    ) -> DevelopmentEvaluation | None:
-    """:func:`checked_length`'s design ``e`` (the ellipse ``x``) that meets the length,
-    tried once with its root relief × ``factor`` (within its bounds; step 7 only; ``why``
-    [text] what ``e`` missed, for the trial's line); the design kept (:func:`kept_why`),
-    else None (no root relief, none left within the bounds, or not kept).
-
-    ``factor`` 1 / :data:`LENGTH_RELIEF_FRACTION` on a design refused for its tolerance
-    alone: the gear tip's edge at the mounting excursions is the pinion's root relief's
-    (a deeper one keeps the excursion's contact off the tip). Measured on the FM hypoid
-    12x31 of benchmarks/data/unseen_designs (a 0.20 d_e2, ε_vβ 1.08; ``benchmarks/
-    development_levers.py --check --tolerance --edges --from-case`` at 101.5 / 677.1 N m,
-    2026-11-29, docs/synthesis.md "The FH 11x23's short pattern: the ellipse's bound"):
-    the ellipse 0.556 for the length, root relief 15 µm: 0.60 long, LTE 37.2 / 34.7 µrad,
-    edge 1.7 %, at dE+0.05 and dP+0.05 mm 2.6 % on the edges (not tolerant, as the
-    design it would replace); 20 µm: 38.2 / 38.1 µrad, edge 1.1 %, tolerant at every
-    excursion, only the centre v missed; 25 µm: 38.8 / 41.2 (the LTE 40 missed); 30 µm:
-    39.3 / 43.2."""
-    name = "root_relief"
-    if name not in targets.variables or not float(e.values.get(name, 0.0)) > 0.0:
-        return None
-    r_lo, r_hi = (float(v) for v in targets.variables[name])
-    now = float(e.values[name])
-    r = float(np.clip(factor * now, r_lo, r_hi))
-    if not abs(r - now) > 1e-9:
-        return None
-    f = _said_variant(best, e.values | {name: r}, "length",
-                      f"with the ellipse {x:.3g} and {name} {r:.3g} um (the length met, "
-                      f"{why})", targets, setup, teeth, say, placed, flank=flank,
-                      key_prefix=key_prefix)
-    if kept_why(best, f, targets, setup, teeth, say,
-                f"the ellipse for the length with the root relief {r:.3g} um",
-                lost=_length_lost(targets, flank), tolerant=flank == "drive"):
-        return None
-    return f
 
 
 def _shallower_relief(best: DevelopmentEvaluation, e: DevelopmentEvaluation, x: float,
