@@ -134,6 +134,7 @@ from contact.optimize.development_pattern_steps import (  # noqa: F401  (re-expo
     CENTRE_U_SLOPE,
     LENGTH_AIM_MARGIN,
     LENGTH_DESIGNS,
+    LENGTH_ELLIPSE_MAX,
     LENGTH_RELIEF_FRACTION,
     LENGTH_RELIEF_LTE,
     LENGTH_SLOPE_MIN,
@@ -149,6 +150,7 @@ from contact.optimize.development_pattern_steps import (  # noqa: F401  (re-expo
     checked_length,
     checked_near_miss,
     length_aim,
+    length_bound,
     near_miss,
 )
 from contact.optimize.development_result import (

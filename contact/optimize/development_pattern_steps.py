@@ -28,7 +28,12 @@ from contact.optimize.development_keep import pressure_raised as _pressure_raise
 from contact.optimize.development_keep import ranks_better as _ranks_better
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_stages import footprint_centre_v
-from contact.optimize.development_targets import HEIGHT_NAME, TE_NAME, DevelopmentTargets
+from contact.optimize.development_targets import (
+    HEIGHT_NAME,
+    TE_NAME,
+    VARIABLES,
+    DevelopmentTargets,
+)
 from contact.optimize.development_tolerance import LENGTH_PER_ELLIPSE, SHORTER_ELLIPSE_STEP
 from contact.optimize.development_variant import pattern_length
 from contact.optimize.development_variant import said_variant as _said_variant
@@ -75,6 +80,24 @@ LENGTH_RELIEF_FRACTION = 0.75
 #: :data:`LENGTH_RELIEF_FRACTION`'s try: the 10x37's 45.2 µrad at its design torque (0.52:
 #: beyond :data:`NEAR_MISS`, which gates the lower ``te_level``) fell 10 µrad by it
 LENGTH_RELIEF_LTE = 1.0
+#: the ellipse's upper bound of :func:`checked_length` on a pattern too short, where
+#: ``ellipse_length``'s bounds are the defaults (:data:`~contact.optimize.
+#: development_targets.VARIABLES`, upper 0.75): one :data:`~contact.optimize.
+#: development_lte_steps.ELLIPSE_STEP` (0.05) below the synthesis' own limit 0.9
+#: (:class:`geometry.synthesis.basic_design.FlankOptions`). Why: the default bound is the
+#: ellipse at which a face-milled pinion's light-load pattern (0.9 of the face per unit of
+#: ellipse, :data:`LENGTH_PER_ELLIPSE`) is 0.68 long, beyond the band; a face-hobbed
+#: pinion's grows 0.3-0.5 per unit and stays short there. Measured on the FH spiral bevel
+#: 11x23 at Σ 70° of benchmarks/data/unseen_designs (ε_vβ 1.00; ``benchmarks/
+#: development_levers.py --check --tolerance --edges --from-case``, 8.8 / 59.1 N m,
+#: path −65.6°, 2026-11-29, docs/synthesis.md "The FH 11x23's short pattern: the
+#: ellipse's bound"): ellipse 0.625 / 0.7 / 0.75 / 0.8 / 0.85: pattern 0.38 / 0.40 /
+#: 0.40 / 0.45 / 0.45 long, LTE p-p 56.8 / 47.9 / 43.4 / 39.2 / 35.1 µrad at the light
+#: torque, 58.5 / 70.4 / 70.0 / 68.6 / 62.7 at the design torque, the gear tip's edge
+#: peak 3246 / 2936 / 2746 / 2582 / 2439 MPa, objective 6.92 / 10.6 / 9.83 / 8.88 /
+#: 5.80, every one tolerant; at path −80° the ellipse 0.85 is 0.48 long, 21.2 / 57.0
+#: µrad (objective 3.47)
+LENGTH_ELLIPSE_MAX = 0.85
 
 
 def length_aim(length: float, targets: DevelopmentTargets) -> float:
@@ -85,6 +108,25 @@ def length_aim(length: float, targets: DevelopmentTargets) -> float:
     the LTE too)."""
     hi = targets.pattern_length + targets.pattern_length_tolerance
     return hi - LENGTH_AIM_MARGIN if length > hi else targets.pattern_length
+
+
+def length_bound(targets: DevelopmentTargets, too_long: bool) -> float:
+    """[1 of the face] The upper bound of ``ellipse_length`` in :func:`checked_length`:
+    ``targets.variables``' own, or :data:`LENGTH_ELLIPSE_MAX` on a pattern too short
+    (``too_long`` False) where those bounds are the defaults of :data:`~contact.optimize.
+    development_targets.VARIABLES` (bounds given in ``[development] variables`` are used
+    as given; the same bounds given explicitly read as the defaults).
+
+    Raises
+    ------
+    KeyError
+        ``ellipse_length`` not among ``targets.variables``.
+    """
+    name = "ellipse_length"
+    lo, hi = (float(x) for x in targets.variables[name])
+    if not too_long and (lo, hi) == tuple(float(x) for x in VARIABLES[name]):
+        return max(hi, LENGTH_ELLIPSE_MAX)
+    return hi
 
 
 def checked_length(best: DevelopmentEvaluation, targets: DevelopmentTargets,
@@ -99,7 +141,13 @@ def checked_length(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     :data:`LENGTH_PER_ELLIPSE`, then the measured slope, at least
     :data:`LENGTH_SLOPE_MIN`), bisecting once a design has met the length or overshot it
     and one has not, at most :data:`LENGTH_DESIGNS` designs (each a synthesis of steps 3-6
-    placed and checked at :data:`CHECK_LTCA`, every other prescription kept). The first
+    placed and checked at :data:`CHECK_LTCA`, every other prescription kept). On a pattern
+    too short the ellipse goes up to :func:`length_bound` (:data:`LENGTH_ELLIPSE_MAX`
+    where the bounds are the defaults), and a design that meets the length short of the
+    aim and is not kept is stepped on towards the aim like one that misses it (a longer
+    ellipse lowers the light torque's LTE: on the FH 11x23 at Σ 70° the ellipse 0.75 met
+    the length at 0.40, objective 9.83 against the design's 6.92, 0.85 at 0.45, 5.80),
+    not halved back towards the design. The first
     design that meets the length, scores better, misses no target the design met and is
     tolerant is kept (:func:`kept_why`); where one meets the length and gives up the LTE
     alone, by at most :data:`NEAR_MISS` of its unit, it is tried once more with
@@ -143,6 +191,7 @@ def checked_length(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     x0, length0 = float(best.values[name]), pattern_length(best)
     band_hi = targets.pattern_length + targets.pattern_length_tolerance
     too_long = length0 > band_hi
+    hi = length_bound(targets, too_long)
     aim = length_aim(length0, targets)
     far = [(x0, length0)]  # designs whose pattern misses the length as the design's does
     near: float | None = None  # the nearest ellipse that met the length or overshot it
@@ -180,7 +229,10 @@ def checked_length(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                        lost=lost, tolerant=tolerant)
         if not why:
             return e
-        near = x
+        if not too_long and length < aim - 1e-9 and x < hi - 1e-9:
+            far.append((x, length))  # short of the aim: a longer ellipse still may keep it
+        else:
+            near = x
         if (lost(best, e) == ["lte"] and e.full[1]["lte"] <= NEAR_MISS
                 and TE_NAME in targets.variables):
             t_lo = float(targets.variables[TE_NAME][0])
