@@ -533,7 +533,9 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
             from contact.optimize.development_basic_error import levers_tried_text
 
             levers = levers_tried_text(err, [e.reason for e in evals],
-                                       [e.values for e in evals])
+                                       [e.values for e in evals],
+                                       tapered=bool(basic.design.theta_a2
+                                                    or basic.design.theta_f2))
             raise InputError(f"{err}{tried_text(err)} (the basic design as given, before "
                              "any development; ltca synthesize --no-development says the "
                              f"same{levers})") from err
