@@ -13,7 +13,10 @@ A tapered depth is basic data too (round 36, branch unseen98): the FM spiral bev
 at Sigma 60 deg by Method 0 with theta_a2 1, theta_f2 4 deg stopped on "the gear flank
 is not generated along the working depth at the mean cone distance" with every gear
 process; rc0 50.8 or 76.2 mm (the fields the clause named) stopped the same, theta_f2 2
-or 3 deg too; theta_a2 = theta_f2 = 0 (uniform depth) or beta_m 30 deg synthesised.
+or 3 deg too; theta_a2 = theta_f2 = 0 (uniform depth) or beta_m 30 deg synthesised with
+the Formate gear (whose tapered design had stopped on its tip relief; the generated gear
+stopped on the same error at uniform depth too, and the Formate gear's development cut
+its design torque from 110.7 to 3.2 N m).
 """
 
 from __future__ import annotations
@@ -39,7 +42,7 @@ def levers_tried_text(error: BaseException, reasons: Sequence[str],
     tapered : bool, optional
         Default False. True where the basic design gives a tapered depth (``theta_a2`` or
         ``theta_f2`` not 0): the clause names those fields too (0 and 0, uniform depth,
-        synthesised the 14x19 at Sigma 60 deg whose rc0 did not).
+        synthesised the 14x19 at Sigma 60 deg with its Formate gear, where rc0 did not).
 
     Returns
     -------
