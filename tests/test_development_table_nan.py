@@ -28,3 +28,26 @@ def test_a_nan_metric_is_written_as_not_computed_and_round_trips():
                      "plastic_share": [0.0, 0.055]}
     again = tomllib.loads(dump_toml({"development": {"coast": {"as_synthesised": table}}}))
     assert again["development"]["coast"]["as_synthesised"] == table
+
+
+def test_a_case_that_cannot_be_written_is_not_called_an_unloaded_contact_failure():
+    """``checked_contact`` on a case whose TOML text fails says the case cannot be written
+    (the key named by ``to_toml``), not "the unloaded contact … cannot be computed", which
+    it said of the 14x19's NaN (its analyses never ran: the stand-in has no flanks)."""
+    import pytest
+
+    from contact.optimize.written_contact import checked_contact
+    from geometry.core.errors import InputError
+
+    class Unwritable:
+        def to_toml(self):
+            return dump_toml({"development": {"coast": {"as_synthesised": {
+                "lte_peak_to_peak": [2280.0, math.nan]}}}})
+
+    with pytest.raises(InputError) as info:
+        checked_contact(Unwritable(), design=None)
+    text = str(info.value)
+    assert text.startswith("the synthesised case cannot be written: to_toml: non-finite "
+                           "value nan at [development.coast.as_synthesised] "
+                           "lte_peak_to_peak")
+    assert "unloaded contact" not in text
