@@ -188,7 +188,9 @@ class WindowResult:
     ``development_written_lte.redeveloped_in_window`` reads and replaces (tests/
     test_development_written_lte.py, tests/test_development_window_missed.py), and its
     ``case``, whose capacity ``development._redeveloped_after_cut`` checks (tests/
-    test_development_lte_after_cut.py)."""
+    test_development_lte_after_cut.py), and its ``seconds`` (the run's own CPU time,
+    which ``development._at_written_lte`` replaces by the whole development's: tests/
+    test_development_window_middle.py)."""
     best: object
     lte_range: dict | None
     torque: tuple[float, float]
@@ -198,3 +200,4 @@ class WindowResult:
     lte_torque: float = float("nan")
     case: object = "case"
     coast: dict | None = None
+    seconds: float = 0.0

@@ -116,6 +116,24 @@ def test_infinite_limits_of_an_extra_table_round_trip():
         case_from_dict(raw).to_toml()
 
 
+def test_a_nan_in_a_case_names_its_key_and_table():
+    """A NaN the case would write is refused naming where it is ("at [optimize]
+    max_flank_pressure"; nested tables by their dotted name): ``ltca synthesize`` of the FM
+    14x19 at Sigma 60 (branch unseen98) stopped on "to_toml: non-finite value nan" alone,
+    which named no field of the case it was about to write."""
+    raw = tomllib.loads(S2.read_text(encoding="utf-8"))
+    raw["optimize"] = {"max_flank_pressure": math.nan}
+    with pytest.raises(InputError, match=r"non-finite value nan at \[optimize\] "
+                                         r"max_flank_pressure$"):
+        case_from_dict(raw).to_toml()
+    from geometry.core.toml_files import dump_toml
+
+    with pytest.raises(InputError, match=r"at \[a\.b\] x$"):
+        dump_toml({"a": {"b": {"x": [1.0, math.nan]}}})
+    with pytest.raises(InputError, match=r"non-finite value nan at y$"):
+        dump_toml({"y": math.nan})
+
+
 @pytest.mark.parametrize("dotted, value, match", [
     ("pinion.blank.teeth", -3, r"^pinion\.blank\.teeth: must be an integer in \[3, 500\]"),
     ("pinion.blank.teeth", 13.5, r"^pinion\.blank\.teeth: must be an integer"),

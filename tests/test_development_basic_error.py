@@ -33,3 +33,21 @@ def test_no_clause_where_a_design_ran_or_stopped_otherwise():
     assert levers_tried_text(ERROR, [SAID, "InputError: relief: other", SAID], VALUES) == ""
     assert levers_tried_text(ERROR, [SAID], VALUES[:1]) == ""
     assert levers_tried_text(ERROR, [SAID] * 2, [VALUES[0], dict(VALUES[0])]) == ""
+
+
+def test_a_tapered_depth_is_named_among_the_basic_data():
+    """Round 36 (branch unseen98): the FM spiral bevel 14x19 at Σ 60° by Method 0 with
+    θ_a2 1°, θ_f2 4° stopped on "the gear flank is not generated along the working depth at
+    the mean cone distance" with every gear process; rc0 50.8 or 76.2 mm, the fields the
+    clause named, stopped the same, θ_f2 0 synthesised (its log). With ``tapered`` the
+    clause names the depth taper and its uniform-depth value (exact text); without, as
+    before."""
+    err = InputError("synthesis: the gear flank is not generated along the working depth "
+                     "at the mean cone distance")
+    said = f"InputError: {err}"
+    assert levers_tried_text(err, [said] * 3, VALUES, tapered=True) == (
+        "; the development's 3 designs, varying ellipse_length, path_angle, each stopped on "
+        "this same error: the basic data changes it (design.rc0, design.beta_m, "
+        "design.theta_a2 and design.theta_f2 (0 and 0: uniform depth); design.z0 for face "
+        "hobbing)")
+    assert "theta" not in levers_tried_text(err, [said] * 3, VALUES)

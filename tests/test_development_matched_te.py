@@ -216,7 +216,7 @@ def test_the_window_rule_hands_a_lowered_design_to_the_step():
     src = inspect.getsource(development._at_written_lte)
     assert src.index("written_lte_capacity(") < src.index("matched_after_window(")
     assert 'float(setup["torques"][1]) < rated' in src
-    assert "rerun, placed, start[TE_NAME])" in inspect.getsource(development.develop)
+    assert "rerun, placed, start[TE_NAME], since=t0)" in inspect.getsource(development.develop)
 
 
 @pytest.mark.parametrize("lte, eps", [

@@ -685,9 +685,20 @@ class DevelopmentResult:
         return out
 
 
-def _rounded(metrics: Mapping[str, np.ndarray]) -> dict[str, list[float]]:
-    return {k: [round(float(x), 6) for x in v] for k, v in metrics.items()
-            if k not in UNWRITTEN_METRICS}
+#: what the ``[development]`` table writes for a metric the analysis did not compute (NaN,
+#: which TOML cannot hold), as its ``root_safety_fe``
+NOT_COMPUTED = "not computed"
+
+
+def _rounded(metrics: Mapping[str, np.ndarray]) -> dict[str, list[float | str]]:
+    """The metrics at (light, design) torque rounded to 6 decimals for the case's
+    informational ``[development]`` table; a NaN (an analysis that gave none: the FM 14x19
+    at Sigma 60's coast flank as synthesised, LTE p-p "2280/nan" at its design torque) as
+    :data:`NOT_COMPUTED`, so that the table stays TOML-safe: ``ltca synthesize`` stopped on
+    "to_toml: non-finite value nan" there, reported as its unloaded contact's failure
+    (branch unseen98)."""
+    return {k: [round(float(x), 6) if not math.isnan(float(x)) else NOT_COMPUTED for x in v]
+            for k, v in metrics.items() if k not in UNWRITTEN_METRICS}
 
 
 def _met_text(full: tuple[float, dict[str, float], bool]) -> str:

@@ -201,15 +201,25 @@ def checked_contact(case, design, basic=None) -> list[str]:
     Raises
     ------
     InputError
-        The drive flank's unloaded contact cannot be computed (the message:
-        :func:`refusal_text`).
+        The case cannot be written as TOML (a value TOML cannot hold, its key named:
+        said as that, not as the unloaded contact's failure, which the analyses' memo of
+        the case's text would raise the same), or the drive flank's unloaded contact cannot
+        be computed (the message: :func:`refusal_text`).
 
     Notes
     -----
-    Source: the analysis' own construction (:func:`unloaded_contact_failure`).
+    Source: the analysis' own construction (:func:`unloaded_contact_failure`). The FM
+    spiral bevel 14x19 at Sigma 60 (branch unseen98) was refused as "the unloaded contact
+    … cannot be computed …: to_toml: non-finite value nan" for a NaN in its informational
+    ``[development]`` table.
     """
     from geometry.core.errors import InputError
 
+    try:
+        case.to_toml()
+    except InputError as exc:
+        raise InputError(f"the synthesised case cannot be written: {exc}; no case "
+                         "written") from None
     why = unloaded_contact_failure(case, "drive")
     if why is not None:
         raise InputError(refusal_text(case, design, why, basic))

@@ -99,7 +99,8 @@ def dump_toml(doc: Mapping[str, Any], prefix: str = "") -> str:
     Raises
     ------
     InputError
-        A value TOML cannot hold (:func:`toml_value`).
+        A value TOML cannot hold (:func:`toml_value`), its key and table named ("to_toml:
+        non-finite value nan at [rating] coast_design_torque").
     """
     lines: list[str] = []
     tables = []
@@ -109,7 +110,16 @@ def dump_toml(doc: Mapping[str, Any], prefix: str = "") -> str:
         elif isinstance(v, list) and v and all(isinstance(x, Mapping) for x in v):
             tables.append((k, v))
         else:
-            lines.append(f"{toml_key(k)} = {toml_value(v)}")
+            try:
+                text = toml_value(v)
+            except InputError as exc:
+                # the value's key named (its table too): a case's NaN was refused as
+                # "to_toml: non-finite value nan" alone, which the FM 14x19 at Sigma 60's
+                # `ltca synthesize` then reported as its unloaded contact's failure
+                # (branch unseen98)
+                where = f"[{prefix}] {toml_key(k)}" if prefix else toml_key(k)
+                raise InputError(f"{exc} at {where}") from None
+            lines.append(f"{toml_key(k)} = {text}")
     for k, v in tables:
         name = f"{prefix}.{toml_key(k)}" if prefix else toml_key(k)
         if isinstance(v, list):

@@ -38,6 +38,26 @@ __all__ = ["action_rotation", "design_point", "design_point_of_case", "mean_adde
 _OTHER = {"concave": "convex", "convex": "concave"}
 
 
+def _depth_missed(offs: np.ndarray, ok: np.ndarray) -> str:
+    """Where on the working-depth line :func:`mean_point` checks the gear flank is not
+    generated, in words: ``offs`` [mm] the points' heights above the gear's pitch cone (the
+    first the lowest point the pinion tip reaches, −h_am1; the last the gear tip, h_am2),
+    ``ok`` which are generated. The FM spiral bevel 14x19 at Sigma 60 deg (round 36 of
+    issue 71's unseen designs, branch unseen98) stopped every gear process on the bare
+    sentence; its generated gear misses the lowest of the nine points only."""
+    bad = np.flatnonzero(~ok)
+    if bad.size == 0:
+        return ""
+    at = (f"{offs[bad[0]]:+.2f} mm" if bad.size == 1
+          else f"{offs[bad].min():+.2f} to {offs[bad].max():+.2f} mm")
+    where = ("its lowest point, where the pinion tip reaches" if bad.tolist() == [0]
+             else "the gear tip" if bad.tolist() == [len(offs) - 1]
+             else f"{bad.size} of its {len(offs)} points")
+    return (f": {where}, at {at} from the pitch cone, is not generated (the line runs "
+            f"{offs[0]:+.2f} to {offs[-1]:+.2f} mm: the pinion's mean addendum below the "
+            "pitch cone to the gear's above)")
+
+
 def mean_addendum(blank: Blank) -> float:
     """Mean addendum h_am [mm] of a case blank: h_ae − (b/2) tan(δ_a − δ) (ISO 23509 cl. 6).
 
@@ -189,7 +209,7 @@ def design_point(gear_blade: Blade, gear_settings: MachineSettings, gear_blank: 
     pt = flank_points(gear_blade, gear_settings, gear_blank, gear_hand, zp[:, 0], zp[:, 1])
     if not pt.ok.all():
         raise InputError("synthesis: the gear flank is not generated along the working depth "
-                         "at the mean cone distance")
+                         f"at the mean cone distance{_depth_missed(offs, np.asarray(pt.ok))}")
     if gear_settings.process == "Generate":
         lo = _generated_flank_start(gear_blade, gear_settings, gear_blank, gear_hand, pm, up,
                                     offs, pt.params[:, 3])

@@ -1,0 +1,56 @@
+"""The mean point's refusal says where the working-depth line is not generated
+(``geometry.pair.design_point``; round 36 of issue 71's unseen designs, branch unseen98).
+
+The FM spiral bevel 14x19 at Sigma 60 deg (benchmarks/data/unseen_designs,
+``spiral_bevel_14x19_s60_m0.toml``) stopped every gear process with "the gear flank is not
+generated along the working depth at the mean cone distance" alone; with the generated gear
+the lowest of the nine points (the pinion's mean addendum below the gear's pitch cone) is
+the one missed. The words are checked on the helper directly (exact text, the heights its
+own arguments) and on that design's synthesis (the lowest point named)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from geometry.core.errors import InputError
+from geometry.pair.design_point import _depth_missed
+
+BASIC = (Path(__file__).parent.parent / "benchmarks" / "data" / "unseen_designs"
+         / "spiral_bevel_14x19_s60_m0.toml")
+
+
+def test_the_words_name_the_points_missed():
+    offs = np.linspace(-4.79, 1.60, 9)
+    ok = np.ones(9, bool)
+    assert _depth_missed(offs, ok) == ""
+    ok[0] = False
+    assert _depth_missed(offs, ok) == (
+        ": its lowest point, where the pinion tip reaches, at -4.79 mm from the pitch cone, "
+        "is not generated (the line runs -4.79 to +1.60 mm: the pinion's mean addendum below "
+        "the pitch cone to the gear's above)")
+    ok[:] = True
+    ok[-1] = False
+    assert _depth_missed(offs, ok).startswith(": the gear tip, at +1.60 mm")
+    ok[:] = True
+    ok[:3] = False
+    assert _depth_missed(offs, ok).startswith(": 3 of its 9 points, at -4.79 to -3.19 mm")
+
+
+def test_the_14x19_generated_gear_names_its_lowest_point():
+    import dataclasses
+
+    import geometry
+    from geometry.synthesis.case_synthesis import synthesize
+
+    basic = geometry.load_basic(BASIC)
+    basic = dataclasses.replace(basic, options=dataclasses.replace(
+        basic.options, gear_process="Generate"))
+    with pytest.raises(InputError) as info:
+        synthesize(basic)
+    text = str(info.value)
+    assert "its lowest point, where the pinion tip reaches" in text
+    # the line from below the pitch cone to above it
+    assert "the line runs -" in text and " to +" in text
