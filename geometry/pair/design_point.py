@@ -30,7 +30,7 @@ from geometry.core.validation import real
 from geometry.machine.cradle import MachineSettings
 from geometry.machine.cutter import Blade, working_sections
 from geometry.machine.flank import blank_outline
-from geometry.machine.flank_point import flank_points
+from geometry.machine.flank_point import FlankPoint, flank_points
 from geometry.pair.assembly import member_transform
 
 __all__ = ["action_rotation", "design_point", "design_point_of_case", "mean_addendum"]
@@ -206,7 +206,7 @@ def design_point(gear_blade: Blade, gear_settings: MachineSettings, gear_blank: 
     lo, hi = -mean_addendum(pinion_blank), mean_addendum(gear_blank)
     offs = np.linspace(lo, hi, 9)
     zp = pm + offs[:, None] * up
-    pt = flank_points(gear_blade, gear_settings, gear_blank, gear_hand, zp[:, 0], zp[:, 1])
+    pt = _line_points(gear_blade, gear_settings, gear_blank, gear_hand, zp)
     if not pt.ok.all():
         raise InputError("synthesis: the gear flank is not generated along the working depth "
                          f"at the mean cone distance{_depth_missed(offs, np.asarray(pt.ok))}")
@@ -216,8 +216,7 @@ def design_point(gear_blade: Blade, gear_settings: MachineSettings, gear_blank: 
         if lo > offs[0]:
             offs = np.linspace(lo, hi, 9)
             zp = pm + offs[:, None] * up
-            pt = flank_points(gear_blade, gear_settings, gear_blank, gear_hand, zp[:, 0],
-                              zp[:, 1])
+            pt = _line_points(gear_blade, gear_settings, gear_blank, gear_hand, zp)
             if not pt.ok.all():
                 raise InputError("synthesis: the gear flank is not generated along the "
                                  "working depth at the mean cone distance")
@@ -230,6 +229,32 @@ def design_point(gear_blade: Blade, gear_settings: MachineSettings, gear_blank: 
     order = np.argsort(q)
     o = float(np.interp(target, q[order], offs[order]))
     return pm + o * up
+
+
+def _line_points(blade: Blade, settings: MachineSettings, blank: Blank, hand: str,
+                 zp: np.ndarray) -> FlankPoint:
+    """:func:`geometry.machine.flank_point.flank_points` at the working-depth line's points
+    ``zp`` (n, 2) [mm, (z, ρ)], a generated flank's points that the line's solve misses
+    solved again from their nearest solved neighbour's envelope parameters (its ``guess``).
+
+    Why: the envelope solver continues from converged neighbours on 2-D grids only; on this
+    1-D line every point is predicted from the middle one (first order), and across a blade
+    section junction that prediction may not converge. The FM spiral bevel 14x19 at
+    Sigma 60 deg (issue 71, round 36; branch gen98) lost its generated gear so: its lowest
+    point, -4.79 mm (the pinion tip's reach), is cut by the gear blade's edge radius (s 0.78
+    mm, section 0) and solves from its neighbour or alone, but not from the middle point
+    3.2 mm above it on the profile section. A Formate gear's line is not retried: the auto
+    process choice (:func:`geometry.synthesis.case_synthesis.gear_processes`) follows the
+    Formate gear's failures, and a point its imprint misses is the documented Formate
+    limit."""
+    pt = flank_points(blade, settings, blank, hand, zp[:, 0], zp[:, 1])
+    ok = np.asarray(pt.ok)
+    if ok.all() or not ok.any() or settings.process != "Generate":
+        return pt
+    good = np.flatnonzero(ok)
+    near = good[np.abs(np.arange(len(ok))[:, None] - good[None, :]).argmin(axis=1)]
+    return flank_points(blade, settings, blank, hand, zp[:, 0], zp[:, 1],
+                        guess=np.asarray(pt.params)[near])
 
 
 def _generated_flank_start(blade: Blade, settings: MachineSettings, blank: Blank, hand: str,
