@@ -234,27 +234,34 @@ def design_point(gear_blade: Blade, gear_settings: MachineSettings, gear_blank: 
 def _line_points(blade: Blade, settings: MachineSettings, blank: Blank, hand: str,
                  zp: np.ndarray) -> FlankPoint:
     """:func:`geometry.machine.flank_point.flank_points` at the working-depth line's points
-    ``zp`` (n, 2) [mm, (z, ρ)], a generated flank's points that the line's solve misses
-    solved again from their nearest solved neighbour's envelope parameters (its ``guess``).
+    ``zp`` (n, 2) [mm, (z, ρ)]; on a generated flank the points the line's solve misses are
+    solved alone (each its own seed search) and the line solved again from those roots and
+    its own (its ``guess``), so that each recovered point passes the line's checks against
+    the line's seed (the undercut test's sign of ∂f/∂q, the blade sections).
 
     Why: the envelope solver continues from converged neighbours on 2-D grids only; on this
     1-D line every point is predicted from the middle one (first order), and across a blade
-    section junction that prediction may not converge. The FM spiral bevel 14x19 at
-    Sigma 60 deg (issue 71, round 36; branch gen98) lost its generated gear so: its lowest
-    point, -4.79 mm (the pinion tip's reach), is cut by the gear blade's edge radius (s 0.78
-    mm, section 0) and solves from its neighbour or alone, but not from the middle point
-    3.2 mm above it on the profile section. A Formate gear's line is not retried: the auto
-    process choice (:func:`geometry.synthesis.case_synthesis.gear_processes`) follows the
-    Formate gear's failures, and a point its imprint misses is the documented Formate
-    limit."""
+    section junction Newton may not converge from that prediction (nor from a neighbour's on
+    the other section). The FM spiral bevel 14x19 at Sigma 60 deg (issue 71, round 36;
+    branch gen98) lost its generated gear so: the line's lowest point, -4.79 mm (the pinion
+    tip's reach), cut by the gear blade's edge radius (s 0.78 mm, section 0), solves alone
+    but not from the middle point 3.2 mm above it on the profile section (at beta_m 42 deg,
+    -4.34 mm, not from its neighbour 0.72 mm above either). A Formate gear's line is not
+    retried: the auto process choice
+    (:func:`geometry.synthesis.case_synthesis.gear_processes`) follows the Formate gear's
+    failures, and a point its imprint misses is the documented Formate limit."""
     pt = flank_points(blade, settings, blank, hand, zp[:, 0], zp[:, 1])
     ok = np.asarray(pt.ok)
     if ok.all() or not ok.any() or settings.process != "Generate":
         return pt
-    good = np.flatnonzero(ok)
-    near = good[np.abs(np.arange(len(ok))[:, None] - good[None, :]).argmin(axis=1)]
-    return flank_points(blade, settings, blank, hand, zp[:, 0], zp[:, 1],
-                        guess=np.asarray(pt.params)[near])
+    guess = np.array(pt.params, dtype=float)
+    for k in np.flatnonzero(~ok):
+        alone = flank_points(blade, settings, blank, hand, zp[k:k + 1, 0], zp[k:k + 1, 1])
+        if bool(alone.ok[0]):
+            guess[k] = alone.params[0]
+    if not np.isfinite(guess[~ok]).any():
+        return pt
+    return flank_points(blade, settings, blank, hand, zp[:, 0], zp[:, 1], guess=guess)
 
 
 def _generated_flank_start(blade: Blade, settings: MachineSettings, blank: Blank, hand: str,
