@@ -44,7 +44,8 @@ def _depth_missed(offs: np.ndarray, ok: np.ndarray) -> str:
     first the lowest point the pinion tip reaches, −h_am1; the last the gear tip, h_am2),
     ``ok`` which are generated. The FM spiral bevel 14x19 at Sigma 60 deg (round 36 of
     issue 71's unseen designs, branch unseen98) stopped every gear process on the bare
-    sentence; its generated gear misses the lowest of the nine points only."""
+    sentence; its generated gear missed the lowest of the nine points only (an envelope
+    solver's miss on the 1-D line, recovered by :func:`_line_points` since branch gen98)."""
     bad = np.flatnonzero(~ok)
     if bad.size == 0:
         return ""
