@@ -30,7 +30,7 @@ from geometry.core.validation import real
 from geometry.machine.cradle import MachineSettings
 from geometry.machine.cutter import Blade, working_sections
 from geometry.machine.flank import blank_outline
-from geometry.machine.flank_point import flank_points
+from geometry.machine.flank_point import FlankPoint, flank_points
 from geometry.pair.assembly import member_transform
 
 __all__ = ["action_rotation", "design_point", "design_point_of_case", "mean_addendum"]
@@ -44,7 +44,8 @@ def _depth_missed(offs: np.ndarray, ok: np.ndarray) -> str:
     first the lowest point the pinion tip reaches, −h_am1; the last the gear tip, h_am2),
     ``ok`` which are generated. The FM spiral bevel 14x19 at Sigma 60 deg (round 36 of
     issue 71's unseen designs, branch unseen98) stopped every gear process on the bare
-    sentence; its generated gear misses the lowest of the nine points only."""
+    sentence; its generated gear missed the lowest of the nine points only (an envelope
+    solver's miss on the 1-D line, recovered by :func:`_line_points` since branch gen98)."""
     bad = np.flatnonzero(~ok)
     if bad.size == 0:
         return ""
@@ -206,7 +207,7 @@ def design_point(gear_blade: Blade, gear_settings: MachineSettings, gear_blank: 
     lo, hi = -mean_addendum(pinion_blank), mean_addendum(gear_blank)
     offs = np.linspace(lo, hi, 9)
     zp = pm + offs[:, None] * up
-    pt = flank_points(gear_blade, gear_settings, gear_blank, gear_hand, zp[:, 0], zp[:, 1])
+    pt = _line_points(gear_blade, gear_settings, gear_blank, gear_hand, zp)
     if not pt.ok.all():
         raise InputError("synthesis: the gear flank is not generated along the working depth "
                          f"at the mean cone distance{_depth_missed(offs, np.asarray(pt.ok))}")
@@ -216,8 +217,7 @@ def design_point(gear_blade: Blade, gear_settings: MachineSettings, gear_blank: 
         if lo > offs[0]:
             offs = np.linspace(lo, hi, 9)
             zp = pm + offs[:, None] * up
-            pt = flank_points(gear_blade, gear_settings, gear_blank, gear_hand, zp[:, 0],
-                              zp[:, 1])
+            pt = _line_points(gear_blade, gear_settings, gear_blank, gear_hand, zp)
             if not pt.ok.all():
                 raise InputError("synthesis: the gear flank is not generated along the "
                                  "working depth at the mean cone distance")
@@ -230,6 +230,39 @@ def design_point(gear_blade: Blade, gear_settings: MachineSettings, gear_blank: 
     order = np.argsort(q)
     o = float(np.interp(target, q[order], offs[order]))
     return pm + o * up
+
+
+def _line_points(blade: Blade, settings: MachineSettings, blank: Blank, hand: str,
+                 zp: np.ndarray) -> FlankPoint:
+    """:func:`geometry.machine.flank_point.flank_points` at the working-depth line's points
+    ``zp`` (n, 2) [mm, (z, ρ)]; on a generated flank the points the line's solve misses are
+    solved alone (each its own seed search) and the line solved again from those roots and
+    its own (its ``guess``), so that each recovered point passes the line's checks against
+    the line's seed (the undercut test's sign of ∂f/∂q, the blade sections).
+
+    Why: the envelope solver continues from converged neighbours on 2-D grids only; on this
+    1-D line every point is predicted from the middle one (first order), and across a blade
+    section junction Newton may not converge from that prediction (nor from a neighbour's on
+    the other section). The FM spiral bevel 14x19 at Sigma 60 deg (issue 71, round 36;
+    branch gen98) lost its generated gear so: the line's lowest point, -4.79 mm (the pinion
+    tip's reach), cut by the gear blade's edge radius (s 0.78 mm, section 0), solves alone
+    but not from the middle point 3.2 mm above it on the profile section (at beta_m 42 deg,
+    -4.34 mm, not from its neighbour 0.72 mm above either). A Formate gear's line is not
+    retried: the auto process choice
+    (:func:`geometry.synthesis.case_synthesis.gear_processes`) follows the Formate gear's
+    failures, and a point its imprint misses is the documented Formate limit."""
+    pt = flank_points(blade, settings, blank, hand, zp[:, 0], zp[:, 1])
+    ok = np.asarray(pt.ok)
+    if ok.all() or not ok.any() or settings.process != "Generate":
+        return pt
+    guess = np.array(pt.params, dtype=float)
+    for k in np.flatnonzero(~ok):
+        alone = flank_points(blade, settings, blank, hand, zp[k:k + 1, 0], zp[k:k + 1, 1])
+        if bool(alone.ok[0]):
+            guess[k] = alone.params[0]
+    if not np.isfinite(guess[~ok]).any():
+        return pt
+    return flank_points(blade, settings, blank, hand, zp[:, 0], zp[:, 1], guess=guess)
 
 
 def _generated_flank_start(blade: Blade, settings: MachineSettings, blank: Blank, hand: str,
