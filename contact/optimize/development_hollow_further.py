@@ -123,13 +123,19 @@ def further_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets, cu
     -----
     Source: issue 71 (module docstring).
     """
-    if not (cut and best.checked_full and best.case is not None):
-        return False
-    if not float(best.values.get("profile_crowning", 0.0)) < 0.0:
-        return False
-    if not lte_missed(best, targets):
+    if not (_gate_before_floor(best, targets, cut) and best.case is not None):
         return False
     return math.isfinite(floor) and floor < float(targets.max_lte)
+
+
+def _gate_before_floor(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                       cut: bool) -> bool:
+    """:func:`further_runs_on`'s conditions that need no floor (a cut made, ``best``
+    checked, its profile hollow, its LTE missed): the step asks for the floor's analysis
+    only where they hold."""
+    return (cut and best.checked_full
+            and float(best.values.get("profile_crowning", 0.0)) < 0.0
+            and lte_missed(best, targets))
 
 
 def lte_missed(best: DevelopmentEvaluation, targets: DevelopmentTargets) -> bool:
@@ -240,29 +246,22 @@ def analysed_further(case: Any, values: Mapping[str, float], crowning: float,
 
     Notes
     -----
-    The analysis is :func:`~contact.optimize.development_hollow_limit.hollow_probes`'
-    (``run_analysis`` with the kept teeth's compliance of the design's bearing).
+    The analysis is :func:`~contact.optimize.development_hollow_limit.checked_contact`,
+    the hollow probes' own.
     """
-    from contact.chain import AnalysisChain
     from contact.optimize.development_evaluate import (
-        CHECK_LTCA,
         KeptTeeth,
-        bearing_key,
         grid_bounds,
         ltca_metrics,
         static_strength,
     )
-    from contact.optimize.development_hollow_limit import probe_of
+    from contact.optimize.development_hollow_limit import checked_contact, probe_of
     from contact.optimize.development_pitting import pitting_pressure_limit
     from contact.optimize.development_targets import development_score
-    from contact.pipeline import run_analysis
 
     c0 = time.process_time()
     light, design = (float(t) for t in setup["torques"])
-    options = dataclasses.replace(
-        CHECK_LTCA, compliance=KeptTeeth().compliance(bearing_key(dict(values))))
-    tree = run_analysis(case, [light, design], flank="drive", options=options,
-                        deviations=False, steps=AnalysisChain.contact_only())
+    tree = checked_contact(case, values, (light, design), KeptTeeth())
     ltca = tree["/ltca"].to_dataset()
     static = static_strength(ltca)
     ms = ltca_metrics(ltca, case)
@@ -330,8 +329,7 @@ def checked_hollow_further(best: DevelopmentEvaluation, targets: DevelopmentTarg
     from geometry.core.errors import InputError
 
     c0 = time.process_time()
-    if not (cut and best.checked_full and float(best.values.get("profile_crowning", 0.0))
-            < 0.0 and lte_missed(best, targets)):
+    if not _gate_before_floor(best, targets, cut):
         return Further(best)
     low = float(floor())
     if not further_runs_on(best, targets, cut, low):

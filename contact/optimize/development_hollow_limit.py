@@ -33,7 +33,8 @@ reaches 40 µrad loses the toe and the heel at ΔE ± 0.05 mm.
 
 Public names
 ------------
-HOLLOW_PROBES, HOLLOW_STEP, HollowProbe, probe_of, hollow_probes, hollow_text
+HOLLOW_PROBES, HOLLOW_STEP, HollowProbe, checked_contact, probe_of, hollow_probes,
+hollow_text
 """
 
 from __future__ import annotations
@@ -45,8 +46,8 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["HOLLOW_PROBES", "HOLLOW_STEP", "HollowProbe", "hollow_probes", "hollow_text",
-           "probe_of"]
+__all__ = ["HOLLOW_PROBES", "HOLLOW_STEP", "HollowProbe", "checked_contact", "hollow_probes",
+           "hollow_text", "probe_of"]
 
 #: [µm at a mean normal module of 3 mm and above; × the size scale] the profile crownings
 #: probed (negative: hollow): on the 13×33 −5 µm lowered the design torque's LTE 53 → 43
@@ -147,6 +148,50 @@ def probe_of(ltca: Any, case: Any, crowning: float, pitting_limit: float,
         pitting_limit=float(pitting_limit), static=float(static))
 
 
+def checked_contact(case: Any, values: Mapping[str, float], torques: Sequence[float],
+                    teeth: Any) -> Any:
+    """The drive flank of ``case`` analysed as ``ltca run`` reads a written case: its
+    sampling (:data:`~contact.optimize.development_evaluate.CHECK_LTCA`), the shell teeth
+    ``teeth`` keeps for the bearing of ``values``, the contact analysis alone, no
+    deviations — the one analysis a hollow probe (:func:`hollow_probes`) and a design of
+    the step after the cut (:func:`~contact.optimize.development_hollow_further.
+    analysed_further`) read.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+        The design's case.
+    values : mapping
+        Its drive prescriptions [file units: µm, deg, 1] (their bearing keys the teeth).
+    torques : (float, float) — [N·m]
+        The light and the design pinion torque.
+    teeth : contact.optimize.development_evaluate.KeptTeeth
+        The kept shell teeth.
+
+    Returns
+    -------
+    xarray.DataTree
+        The analysis tree (its ``/ltca``).
+
+    Raises
+    ------
+    InputError, ValueError, KeyError, ArithmeticError
+        From the analysis.
+
+    Notes
+    -----
+    Source: issue 71; the check sampling of :mod:`contact.optimize.development_evaluate`.
+    """
+    from contact.chain import AnalysisChain
+    from contact.optimize.development_evaluate import CHECK_LTCA, bearing_key
+    from contact.pipeline import run_analysis
+
+    options = dataclasses.replace(CHECK_LTCA,
+                                  compliance=teeth.compliance(bearing_key(dict(values))))
+    return run_analysis(case, [float(t) for t in torques], flank="drive", options=options,
+                        deviations=False, steps=AnalysisChain.contact_only())
+
+
 def hollow_probes(basic: Any, values: Mapping[str, float], torques: Sequence[float],
                   written: Any = None, crownings: Sequence[float] | None = None
                   ) -> list[HollowProbe]:
@@ -189,15 +234,8 @@ def hollow_probes(basic: Any, values: Mapping[str, float], torques: Sequence[flo
     """
     import logging
 
-    from contact.chain import AnalysisChain
-    from contact.optimize.development_evaluate import (
-        CHECK_LTCA,
-        KeptTeeth,
-        bearing_key,
-        static_strength,
-    )
+    from contact.optimize.development_evaluate import KeptTeeth, static_strength
     from contact.optimize.development_pitting import pitting_pressure_limit
-    from contact.pipeline import run_analysis
     from geometry.core.errors import InputError
     from geometry.synthesis.basic_design import with_flank_options
     from geometry.synthesis.case_synthesis import synthesize
@@ -217,10 +255,7 @@ def hollow_probes(basic: Any, values: Mapping[str, float], torques: Sequence[flo
         design_values = dict(values) | {"profile_crowning": float(c)}
         try:
             case = synthesize(with_flank_options(basic, flank, design_values), memo=memo)[0]
-            options = dataclasses.replace(
-                CHECK_LTCA, compliance=teeth.compliance(bearing_key(design_values)))
-            tree = run_analysis(case, [light, design], flank="drive", options=options,
-                                deviations=False, steps=AnalysisChain.contact_only())
+            tree = checked_contact(case, design_values, (light, design), teeth)
             limit = pitting_pressure_limit(written if written is not None else case, design)
             out.append(probe_of(tree["/ltca"].to_dataset(), case, c, limit,
                                 static_strength(tree)))
