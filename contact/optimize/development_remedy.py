@@ -463,6 +463,16 @@ def targets_bought(given, remedied) -> bool:
     return every_drive_target(remedied) and not every_drive_target(given)
 
 
+def _torque_lowered(given, remedied) -> tuple[float, float] | None:
+    """(design torque as given, remedied) [N·m] where the remedied one is lower at the
+    printed 0.1 N·m, else None (equal, higher, or either not finite)."""
+    before, after = float(given.torque[1]), float(remedied.torque[1])
+    if not (math.isfinite(before) and math.isfinite(after)) or round(after, 1) >= round(
+            before, 1):
+        return None
+    return before, after
+
+
 def torque_bought(given, remedied) -> str:
     """Why a remedied design torque below the design as given's was kept: the drive targets
     the remedy bought (:func:`targets_bought`), in numbers; empty where it did not lower
@@ -490,12 +500,10 @@ def torque_bought(given, remedied) -> str:
     Source: issue 71 (round 35): ``--apply-remedy`` printed both torques without saying
     why the lower one was written.
     """
-    if not targets_bought(given, remedied):
+    lowered = _torque_lowered(given, remedied)
+    if lowered is None or not targets_bought(given, remedied):
         return ""
-    before, after = float(given.torque[1]), float(remedied.torque[1])
-    if not (math.isfinite(before) and math.isfinite(after)) or round(after, 1) >= round(
-            before, 1):
-        return ""
+    before, after = lowered
     full = getattr(given.best, "full", None)
     missed = [k for k, v in (full[1] if full is not None else {}).items() if v > 0]
     names = f" ({', '.join(missed)})" if missed else ""
@@ -549,12 +557,10 @@ def torque_given_up(given, remedied, lte_met: bool) -> str:
     every drive target, tolerant, at 643.8 N·m, 0.95 of its 677.1, and was refused as
     giving up load "for an LTE the design has").
     """
-    if not lte_met or targets_bought(given, remedied):
+    lowered = _torque_lowered(given, remedied)
+    if not lte_met or lowered is None or targets_bought(given, remedied):
         return ""
-    before, after = float(given.torque[1]), float(remedied.torque[1])
-    if not (math.isfinite(before) and math.isfinite(after)) or round(after, 1) >= round(
-            before, 1):
-        return ""
+    before, after = lowered
     return (f"its design torque {plain_number(round(after, 1))} N m is below the design as "
             f"given's {plain_number(round(before, 1))} N m ({after / before:.2f} of it), "
             "whose LTE p-p is within the verdict's limit already "
