@@ -1749,17 +1749,12 @@ def _hollow_further(written: tuple, targets: DevelopmentTargets, setup: dict[str
     ``written`` as it is after the step (the kept design's where one was kept)."""
     best, case, report, developed = written
     from contact.optimize.development_hollow_further import checked_hollow_further
-    from contact.optimize.development_lte_floor import load_sharing_floor
+    from contact.optimize.development_lte_floor import floor_or_nan
 
     flank = developed.options.drive_flank
 
     def floor() -> float:
-        try:
-            return load_sharing_floor(case, *(float(t) for t in setup["torques"]))
-        except (InputError, ValueError, KeyError) as exc:
-            log.info("development: the drive LTE's load-sharing floor not analysed: %s",
-                     exc)
-            return math.nan
+        return floor_or_nan(case, *(float(t) for t in setup["torques"]))
 
     try:
         scale = float(developed.size_scale())

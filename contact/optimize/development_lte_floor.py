@@ -44,7 +44,7 @@ import xarray as xr
 
 from geometry.case import Case
 
-__all__ = ["floor_text", "load_sharing_floor", "te_floor"]
+__all__ = ["floor_or_nan", "floor_text", "load_sharing_floor", "te_floor"]
 
 log = logging.getLogger("contact.optimize.development")
 
@@ -122,6 +122,33 @@ def load_sharing_floor(case: Case, light: float, design: float,
     tree = run_analysis(case, [light, design], flank=flank, deviations=False,
                         steps=AnalysisChain.contact_only())
     return te_floor(tree["/ltca"].to_dataset())
+
+
+def floor_or_nan(case: Case, light: float, design: float) -> float:
+    """:func:`load_sharing_floor` of the written case's drive flank [µrad], or NaN where
+    the analysis fails (logged, not raised): the development's step after the cut and
+    ``ltca synthesize``'s LTE line ask for it as a reading, not as a check.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    light, design : float — [N·m]
+
+    Returns
+    -------
+    float — [µrad], NaN where not analysed.
+
+    Raises
+    ------
+    Nothing.
+    """
+    from geometry.core.errors import InputError
+
+    try:
+        return load_sharing_floor(case, light, design)
+    except (InputError, ValueError, KeyError) as exc:
+        log.info("development: the drive LTE's load-sharing floor not analysed: %s", exc)
+        return math.nan
 
 
 def floor_text(floor: float, target: float) -> str:

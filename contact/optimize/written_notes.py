@@ -672,26 +672,16 @@ def written_floor(case, development) -> float:
     analysis at ``ltca run``'s sampling) where its LTE p-p misses the development's target
     at those torques within the verdict's limit; NaN elsewhere or where the analysis fails
     (logged)."""
-    from contact.optimize.development_lte_floor import load_sharing_floor
-    from contact.study.verdicts import LTE_LIMIT
-    from geometry.core.errors import InputError
+    from contact.optimize.development_hollow_further import lte_missed
+    from contact.optimize.development_lte_floor import floor_or_nan
 
-    lte = [float(x) for x in development.best.metrics["lte_peak_to_peak"]]
-    worst = max(lte[0], lte[-1])
-    if not float(development.targets.max_lte) < worst <= LTE_LIMIT:
+    if not lte_missed(development.best, development.targets):
         return math.nan
     further = getattr(development, "hollow_further", None)
     if (further is not None and further.case is None
             and math.isfinite(float(further.floor))):
         return float(further.floor)  # the development's reading of this case: not again
-    try:
-        return load_sharing_floor(case, *(float(t) for t in development.torque))
-    except (InputError, ValueError, KeyError) as exc:
-        import logging
-
-        logging.getLogger(__name__).info("the drive LTE's load-sharing floor not "
-                                         "analysed: %s", exc)
-        return math.nan
+    return floor_or_nan(case, *(float(t) for t in development.torque))
 
 
 def deflection_note(case, development) -> str | None:
