@@ -141,6 +141,10 @@ def floor_or_nan(case: Case, light: float, design: float) -> float:
     Raises
     ------
     Nothing.
+
+    Notes
+    -----
+    Source: issue 71 (the floor, :func:`te_floor`: ½ p-p(TE_design − TE_light)).
     """
     from geometry.core.errors import InputError
 
