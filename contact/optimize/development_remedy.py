@@ -533,6 +533,15 @@ def _missed_names(given) -> str:
     return f" ({', '.join(missed)})" if missed else ""
 
 
+def _ratio_and_floor(ratio: float) -> tuple[str, str]:
+    """A torque ratio and :data:`REMEDY_TORQUE_FLOOR` printed at 3 decimals, more (up to 6)
+    where they would print the same: a refusal never reads "0.909 ... below the 0.909"."""
+    digits = 3
+    while digits < 6 and f"{ratio:.{digits}f}" == f"{REMEDY_TORQUE_FLOOR:.{digits}f}":
+        digits += 1
+    return f"{ratio:.{digits}f}", f"{REMEDY_TORQUE_FLOOR:.{digits}f}"
+
+
 def below_floor(given, remedied) -> bool:
     """Whether the remedied design torque is below :data:`REMEDY_TORQUE_FLOOR` × the
     design as given's (both finite; compared unrounded).
@@ -612,9 +621,10 @@ def torque_given_up(given, remedied, lte_met: bool) -> str:
     if targets_bought(given, remedied):
         if not below_floor(given, remedied):
             return ""
+        ratio, floor = _ratio_and_floor(after / before)
         return (f"its design torque {plain_number(round(after, 1))} N m, "
-                f"{after / before:.3f} of the design as given's "
-                f"{plain_number(round(before, 1))} N m: below the {REMEDY_TORQUE_FLOOR:.3f} "
+                f"{ratio} of the design as given's "
+                f"{plain_number(round(before, 1))} N m: below the {floor} "
                 "of it a remedy may give up for targets (one step of the drive LTE window's "
                 "torques, 1/1.1), though it meets the drive targets the design as given "
                 f"misses{_missed_names(given)}")
