@@ -656,9 +656,10 @@ def test_a_lower_torque_that_buys_the_targets_is_kept_only_above_the_floor(
     stand-ins: the remedied design meets every drive target the design as given misses;
     at or above 0.909 of 677.1 N m (615.55) it is applied and its line says the floor,
     below it an InputError names both torques, their ratio and the floor, after the two
-    developments, nothing returned. The bound values are 0.05 N m either side of the
-    floor x 677.1 (the torques are compared unrounded; the ratio and the floor are printed
-    at 3 decimals, at 4 where 3 would print them the same: 0.9090 below 0.9091)."""
+    developments, nothing returned. The bound values straddle the floor x 677.1 = 615.55
+    N m: 615.5 below, 616.0 above (the torques are compared unrounded; the ratio and the
+    floor are printed at 3 decimals, at 4 where 3 would print them the same: 0.9090 below
+    0.9091)."""
     from contact.optimize.development_remedy import REMEDY_TORQUE_FLOOR, below_floor
 
     basic = load_basic(FIVE)
