@@ -490,7 +490,8 @@ def _torque_lowered(given, remedied) -> tuple[float, float] | None:
 def torque_bought(given, remedied) -> str:
     """Why a remedied design torque below the design as given's was kept: the drive targets
     the remedy bought (:func:`targets_bought`), in numbers; empty where it did not lower
-    the design torque or bought none.
+    the design torque, bought none, or gave up more than :data:`REMEDY_TORQUE_FLOOR`
+    allows (:func:`below_floor`).
 
     Parameters
     ----------
@@ -515,6 +516,8 @@ def torque_bought(given, remedied) -> str:
     why the lower one was written.
     """
     lowered = _torque_lowered(given, remedied)
+    # below the floor no line: refused where the given LTE keeps the limit, and a trial's
+    # torque is the trial's, not bought for targets
     if lowered is None or not targets_bought(given, remedied) or below_floor(given, remedied):
         return ""
     before, after = lowered
@@ -608,11 +611,10 @@ def torque_given_up(given, remedied, lte_met: bool) -> str:
     design torque (:func:`below_floor`; below it the refusal says the floor, with both
     torques and their ratio: issue 71, remedy99): the torque is then given up for those,
     not for an LTE the design has, and both developments' torques are printed beside their
-    LTE (issue 71,
-    round 35: the FM hypoid 12×31 at a = 0.20 d_e2, its LTE 27/34 µrad, missed the pattern
-    length 0.65 and centre v 0.64 and was not tolerant at ±0.05 mm; its b2 32 → 36 mm met
-    every drive target, tolerant, at 643.8 N·m, 0.95 of its 677.1, and was refused as
-    giving up load "for an LTE the design has").
+    LTE (issue 71, round 35: the FM hypoid 12×31 at a = 0.20 d_e2, its LTE 27/34 µrad,
+    missed the pattern length 0.65 and centre v 0.64 and was not tolerant at ±0.05 mm; its
+    b2 32 → 36 mm met every drive target, tolerant, at 643.8 N·m, 0.95 of its 677.1, and
+    was refused as giving up load "for an LTE the design has").
     """
     lowered = _torque_lowered(given, remedied)
     if not lte_met or lowered is None:
