@@ -599,7 +599,9 @@ def test_apply_remedy_keeps_a_lower_torque_that_buys_the_drive_targets(monkeypat
     # (the stand-in's missed target: length), in the record and on the written lines
     assert result.remedy.torque_why == (
         "its design torque 643.8 N m, 0.95 of the design as given's 677.1 N m: kept, for "
-        "the drive targets the design as given misses (length) and it meets")
+        "the drive targets the design as given misses (length) and it meets (at or above "
+        "the 0.909 of it a remedy may give up for targets: one step of the drive LTE "
+        "window's torques)")
     from contact.optimize.development_remedy import applied_table, torque_bought
 
     assert applied_table(result.remedy)["torque_why"] == result.remedy.torque_why
@@ -623,3 +625,84 @@ def test_apply_remedy_keeps_a_remedy_at_the_given_design_torque(monkeypatch):
     assert result.remedy.check.change.field == "alpha_dD"
     assert math.degrees(developed[1].design.alpha_dD) == pytest.approx(16.3, abs=1e-9)
     assert result.remedy.record.lte_met is True
+
+
+# --- the floor on the torque a remedy may give up for targets (issue 71, remedy99) ---
+
+
+def test_the_torque_floor_is_one_step_of_the_drive_lte_window():
+    """The floor is the development's own torque resolution: one step of the drive LTE
+    window's torques (a design torque within 1.1 x of one developed is redeveloped no
+    more: development_written_lte.WINDOW_LOWER_STEP). Identity, exact."""
+    from contact.optimize.development_remedy import REMEDY_TORQUE_FLOOR
+    from contact.optimize.development_written_lte import WINDOW_LOWER_STEP
+
+    assert REMEDY_TORQUE_FLOOR == 1.0 / WINDOW_LOWER_STEP
+    # round 35's 12x31 (643.8 of 677.1 N m, 0.951) above it, round 34's 5x48 (81.7 of
+    # 206.7, 0.395) below it
+    assert 643.8 / 677.1 > REMEDY_TORQUE_FLOOR > 81.7 / 206.7
+
+
+@pytest.mark.parametrize("design_torque, refused, printed", [
+    (643.8, False, ""),   # round 35's 12x31: 0.951 of 677.1, kept
+    (616.0, False, ""),   # 0.9098: just above the floor 0.9091 (616.0 > 615.55)
+    (615.5, True, r"0\.9090 of the design as given's 677\.1 N m: below the 0\.9091"),
+    # half the design torque: an engineer's capacity, not a trade
+    (338.6, True, r"0\.500 of the design as given's 677\.1 N m: below the 0\.909"),
+])
+def test_a_lower_torque_that_buys_the_targets_is_kept_only_above_the_floor(
+        monkeypatch, design_torque, refused, printed):
+    """Both sides of the floor, through developed_with_remedy with the 12x31's torques as
+    stand-ins: the remedied design meets every drive target the design as given misses;
+    at or above 0.909 of 677.1 N m (615.55) it is applied and its line says the floor,
+    below it an InputError names both torques, their ratio and the floor, after the two
+    developments, nothing returned. The bound values straddle the floor x 677.1 = 615.55
+    N m: 615.5 below, 616.0 above (the torques are compared unrounded; the ratio and the
+    floor are printed at 3 decimals, at 4 where 3 would print them the same: 0.9090 below
+    0.9091)."""
+    from contact.optimize.development_remedy import REMEDY_TORQUE_FLOOR, below_floor
+
+    basic = load_basic(FIVE)
+    _stand_in_checks(monkeypatch, FIVE_MEASURED, FIVE_WRITTEN)
+    developed: list = []
+
+    def run(b):
+        developed.append(b)
+        first = len(developed) == 1
+        return _targets(_five_result(b, (27.0, 34.0) if first else (26.0, 39.0),
+                                     677.1 if first else design_torque), not first)
+
+    given = _targets(_five_result(basic, (27.0, 34.0), 677.1), False)
+    lower = _targets(_five_result(basic, (26.0, 39.0), design_torque), True)
+    assert below_floor(given, lower) is refused
+    assert (design_torque < REMEDY_TORQUE_FLOOR * 677.1) is refused
+    if refused:
+        with pytest.raises(InputError, match=(
+                rf"alpha_dD 22\.5 -> 16\.3 deg developed: its design torque "
+                rf"{design_torque:g} N m, {printed} of it a remedy may give up for targets "
+                r"\(one step of "
+                r"the drive LTE window's torques, 1/1\.1\), though it meets the drive "
+                r"targets the design as given misses \(length\); nothing written")):
+            developed_with_remedy(run, basic)
+        assert len(developed) == 2
+    else:
+        result = developed_with_remedy(run, basic)
+        assert result.torque[1] == design_torque
+        assert "at or above the 0.909 of it a remedy may give up for targets" in (
+            result.remedy.torque_why)
+
+
+def test_the_floor_leaves_the_other_torque_rules_as_they_were():
+    """The floor is for targets bought only: a remedy that buys none is refused below the
+    given torque at any ratio (round 34's rule, its own words), a trial (the design as
+    given's LTE above the limit) is kept whatever its torque, an equal torque is no
+    lowering."""
+    from contact.optimize.development_remedy import torque_given_up
+
+    basic = load_basic(FIVE)
+    given = _targets(_five_result(basic, (27.0, 34.0), 677.1), True)
+    half = _targets(_five_result(basic, (26.0, 39.0), 338.6), True)
+    assert "for an LTE the design has" in torque_given_up(given, half, True)
+    assert torque_given_up(_targets(given, False), half, False) == ""
+    assert torque_given_up(_targets(given, False), _targets(
+        _five_result(basic, (26.0, 39.0), 677.1), True), True) == ""

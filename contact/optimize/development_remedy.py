@@ -32,10 +32,11 @@ change that passed its check, on request:
 
 Public names
 ------------
-REMEDY_TABLE, AppliedRemedy, ratio_changes, contact_ratios_of, prescribed_basic,
-checked_record, chosen_check, remedied_basic, file_value, change_text, lte_parts, worst_lte,
-flanks_above, above_limit_text, lte_within, every_drive_target, targets_bought,
-torque_bought, torque_given_up, developed_with_remedy, applied_table
+REMEDY_TABLE, REMEDY_TORQUE_FLOOR, AppliedRemedy, ratio_changes, contact_ratios_of,
+prescribed_basic, checked_record, chosen_check, remedied_basic, file_value, change_text,
+lte_parts, worst_lte, flanks_above, above_limit_text, lte_within, every_drive_target,
+targets_bought, torque_bought, torque_given_up, below_floor, developed_with_remedy,
+applied_table
 """
 
 from __future__ import annotations
@@ -43,22 +44,35 @@ from __future__ import annotations
 import dataclasses
 import logging
 import math
+import time
 from collections.abc import Callable
 from typing import Any, NamedTuple
 
 from geometry.core.text import plain_number
 
-__all__ = ["REMEDY_TABLE", "AppliedRemedy", "above_limit_text", "applied_table", "change_text",
-           "checked_record", "chosen_check", "contact_ratios_of", "developed_with_remedy",
-           "every_drive_target", "file_value", "flanks_above", "lte_parts", "lte_within",
-           "prescribed_basic", "ratio_changes", "remedied_basic", "targets_bought",
-           "torque_bought", "torque_given_up", "worst_lte"]
+__all__ = ["REMEDY_TABLE", "REMEDY_TORQUE_FLOOR", "AppliedRemedy", "above_limit_text",
+           "applied_table", "below_floor", "change_text", "checked_record", "chosen_check",
+           "contact_ratios_of", "developed_with_remedy", "every_drive_target", "file_value",
+           "flanks_above", "lte_parts", "lte_within", "prescribed_basic", "ratio_changes",
+           "remedied_basic", "targets_bought", "torque_bought", "torque_given_up",
+           "worst_lte"]
 
 log = logging.getLogger(__name__)
 
 #: the written case's informational table that records the remedy applied to the basic
 #: data (:func:`applied_table`)
 REMEDY_TABLE = "applied_remedy"
+
+#: [1] the least share of the design as given's design torque a remedied design may keep
+#: where its lower torque buys the drive targets the design as given misses
+#: (:func:`targets_bought`, :func:`torque_given_up`): one step of the drive LTE window's
+#: torques, 1 / :data:`~contact.optimize.development_written_lte.WINDOW_LOWER_STEP`
+#: (0.909): the development itself takes a design torque within that step of one developed
+#: as the same load (its light torque and load-matched TE change by as little), so a remedy
+#: that costs less gives up no load the development tells apart, and one that costs more
+#: trades a rating for a bearing. Round 35's 12x31 b2 32 -> 36 mm kept 0.95 (643.8 of
+#: 677.1 N m); round 34's 5x48 alpha_dD 16.3 deg 0.40 (a scuffing FAIL). Issue 71, remedy99
+REMEDY_TORQUE_FLOOR = 1.0 / 1.1
 
 #: each remedy field: (its name in words, its unit as the basic file gives it, whether the
 #: design data hold it in radians)
@@ -476,7 +490,8 @@ def _torque_lowered(given, remedied) -> tuple[float, float] | None:
 def torque_bought(given, remedied) -> str:
     """Why a remedied design torque below the design as given's was kept: the drive targets
     the remedy bought (:func:`targets_bought`), in numbers; empty where it did not lower
-    the design torque or bought none.
+    the design torque, bought none, or gave up more than :data:`REMEDY_TORQUE_FLOOR`
+    allows (:func:`below_floor`).
 
     Parameters
     ----------
@@ -501,15 +516,57 @@ def torque_bought(given, remedied) -> str:
     why the lower one was written.
     """
     lowered = _torque_lowered(given, remedied)
-    if lowered is None or not targets_bought(given, remedied):
+    # below the floor no line: refused where the given LTE keeps the limit, and a trial's
+    # torque is the trial's, not bought for targets
+    if lowered is None or not targets_bought(given, remedied) or below_floor(given, remedied):
         return ""
     before, after = lowered
-    full = getattr(given.best, "full", None)
-    missed = [k for k, v in (full[1] if full is not None else {}).items() if v > 0]
-    names = f" ({', '.join(missed)})" if missed else ""
     return (f"its design torque {plain_number(round(after, 1))} N m, {after / before:.2f} "
             f"of the design as given's {plain_number(round(before, 1))} N m: kept, for "
-            f"the drive targets the design as given misses{names} and it meets")
+            f"the drive targets the design as given misses{_missed_names(given)} and it "
+            f"meets (at or above the {REMEDY_TORQUE_FLOOR:.3f} of it a remedy may give up "
+            "for targets: one step of the drive LTE window's torques)")
+
+
+def _missed_names(given) -> str:
+    """" (length, centre_v)": the drive targets the design as given's chosen design misses
+    (its ``full`` score), empty where it names none."""
+    full = getattr(given.best, "full", None)
+    missed = [k for k, v in (full[1] if full is not None else {}).items() if v > 0]
+    return f" ({', '.join(missed)})" if missed else ""
+
+
+def _ratio_and_floor(ratio: float) -> tuple[str, str]:
+    """A torque ratio and :data:`REMEDY_TORQUE_FLOOR` printed at 3 decimals, more (up to 6)
+    where they would print the same: a refusal never reads "0.909 ... below the 0.909"."""
+    digits = 3
+    while digits < 6 and f"{ratio:.{digits}f}" == f"{REMEDY_TORQUE_FLOOR:.{digits}f}":
+        digits += 1
+    return f"{ratio:.{digits}f}", f"{REMEDY_TORQUE_FLOOR:.{digits}f}"
+
+
+def below_floor(given, remedied) -> bool:
+    """Whether the remedied design torque is below :data:`REMEDY_TORQUE_FLOOR` × the
+    design as given's (both finite; compared unrounded).
+
+    Parameters
+    ----------
+    given, remedied : contact.optimize.development.DevelopmentResult
+        Their ``torque`` (light, design) [N·m].
+
+    Returns
+    -------
+    bool
+        False where either design torque is not finite or the given one is not positive.
+
+    Raises
+    ------
+    Nothing.
+    """
+    before, after = float(given.torque[1]), float(remedied.torque[1])
+    if not (math.isfinite(before) and math.isfinite(after)) or before <= 0.0:
+        return False
+    return after < REMEDY_TORQUE_FLOOR * before
 
 
 def torque_given_up(given, remedied, lte_met: bool) -> str:
@@ -550,17 +607,29 @@ def torque_given_up(given, remedied, lte_met: bool) -> str:
     the printed 0.1 N·m.
 
     Not a refusal where the remedy buys the development's drive targets the design as given
-    misses (:func:`targets_bought`): the torque is then given up for those, not for an LTE
-    the design has, and both developments' torques are printed beside their LTE (issue 71,
-    round 35: the FM hypoid 12×31 at a = 0.20 d_e2, its LTE 27/34 µrad, missed the pattern
-    length 0.65 and centre v 0.64 and was not tolerant at ±0.05 mm; its b2 32 → 36 mm met
-    every drive target, tolerant, at 643.8 N·m, 0.95 of its 677.1, and was refused as
-    giving up load "for an LTE the design has").
+    misses (:func:`targets_bought`) and keeps at least :data:`REMEDY_TORQUE_FLOOR` of its
+    design torque (:func:`below_floor`; below it the refusal says the floor, with both
+    torques and their ratio: issue 71, remedy99): the torque is then given up for those,
+    not for an LTE the design has, and both developments' torques are printed beside their
+    LTE (issue 71, round 35: the FM hypoid 12×31 at a = 0.20 d_e2, its LTE 27/34 µrad,
+    missed the pattern length 0.65 and centre v 0.64 and was not tolerant at ±0.05 mm; its
+    b2 32 → 36 mm met every drive target, tolerant, at 643.8 N·m, 0.95 of its 677.1, and
+    was refused as giving up load "for an LTE the design has").
     """
     lowered = _torque_lowered(given, remedied)
-    if not lte_met or lowered is None or targets_bought(given, remedied):
+    if not lte_met or lowered is None:
         return ""
     before, after = lowered
+    if targets_bought(given, remedied):
+        if not below_floor(given, remedied):
+            return ""
+        ratio, floor = _ratio_and_floor(after / before)
+        return (f"its design torque {plain_number(round(after, 1))} N m, "
+                f"{ratio} of the design as given's "
+                f"{plain_number(round(before, 1))} N m: below the {floor} "
+                "of it a remedy may give up for targets (one step of the drive LTE window's "
+                "torques, 1/1.1), though it meets the drive targets the design as given "
+                f"misses{_missed_names(given)}")
     return (f"its design torque {plain_number(round(after, 1))} N m is below the design as "
             f"given's {plain_number(round(before, 1))} N m ({after / before:.2f} of it), "
             "whose LTE p-p is within the verdict's limit already "
@@ -611,7 +680,12 @@ def developed_with_remedy(run: Callable[[Any], Any], basic,
         :func:`~contact.optimize.remedy_check.no_better`); the design as given is then not
         returned in place of a remedied one. After the remedied development: the design as
         given's LTE within the verdict's limit and the remedied design torque below its
-        own (:func:`torque_given_up`).
+        own (:func:`torque_given_up`), unless the remedy buys the drive targets the design
+        as given misses at :data:`REMEDY_TORQUE_FLOOR` of its torque or more; or ``ltca
+        run``'s verdict of the remedied design worse than the design as given's on a
+        finding of either flank (:func:`~contact.optimize.development_remedy_verdict.
+        verdict_worse`: a FAIL, an LTE above the limit, a plastic share, a light-torque
+        edge, judged on both developments' measurements).
 
     Notes
     -----
@@ -627,6 +701,7 @@ def developed_with_remedy(run: Callable[[Any], Any], basic,
     """
     from contact.load_capacity.iso10300.face_contact import RATIO_AT_TARGET
     from contact.optimize.development_remedy_next import next_remedies
+    from contact.optimize.development_remedy_verdict import verdict_worse
     from contact.optimize.remedy_check import ranked_changes, unloaded_te_pp
     from contact.study.verdicts import LTE_LIMIT
     from geometry.core.errors import InputError, ModelUnavailableError
@@ -682,6 +757,19 @@ def developed_with_remedy(run: Callable[[Any], Any], basic,
         raise InputError(
             f"apply_remedy: {text(chosen)} developed: {given_up}; nothing written: the "
             "design as given is developed and written without apply_remedy (ltca "
+            "synthesize without --apply-remedy)")
+    # the written case judged as `ltca run` judges it, both flanks, on what both
+    # developments measured: a remedy whose verdict is worse is not written
+    cpu = time.process_time()
+    worse = verdict_worse(first, second, LTE_LIMIT)
+    log.info("apply_remedy: the remedied design's verdict judged against the design as "
+             "given's in %.4f s CPU%s", time.process_time() - cpu,
+             f": worse ({worse})" if worse else ": no worse")
+    if worse:
+        raise InputError(
+            f"apply_remedy: {text(chosen)} developed: ltca run's verdict of the remedied "
+            f"design would be worse than the design as given's ({worse}); nothing written: "
+            "the design as given is developed and written without apply_remedy (ltca "
             "synthesize without --apply-remedy)")
     kept = given[id(chosen)]
     applied = AppliedRemedy(chosen, record, kept, file_value(basic.design, chosen.change.field),

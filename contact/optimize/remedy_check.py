@@ -387,7 +387,9 @@ def checked_remedy_text(checks: Sequence[ChangeCheck], target: float, none: str,
         changes offered are said not checked for the design torque: "…, not checked for
         the design torque: its development may lower the design torque (`ltca synthesize
         --apply-remedy` develops it and refuses it then, unless it meets the drive targets
-        the design misses)" (:func:`~contact.optimize.development_remedy.targets_bought`).
+        the design misses at 0.909 of its design torque or more)"
+        (:func:`~contact.optimize.development_remedy.targets_bought`,
+        :data:`~contact.optimize.development_remedy.REMEDY_TORQUE_FLOOR`).
 
     Notes
     -----
@@ -419,10 +421,13 @@ def checked_remedy_text(checks: Sequence[ChangeCheck], target: float, none: str,
             # the design torque is the development's own: `--apply-remedy` refuses a
             # remedy whose development lowers it below this design's
             # (development_remedy.torque_given_up), which no synthesis here reads
+            from contact.optimize.development_remedy import REMEDY_TORQUE_FLOOR
+
             out += (f", {'not' if len(passed) == 1 else 'none'} checked for the design "
                     "torque: its development may lower the design torque "
                     "(`ltca synthesize --apply-remedy` develops it and refuses it then, "
-                    "unless it meets the drive targets the design misses)")
+                    "unless it meets the drive targets the design misses at "
+                    f"{REMEDY_TORQUE_FLOOR:.3f} of its design torque or more)")
     elif idle:
         out = (f"no change that reaches {target:g} checks better than the written design, "
                f"whose LTE p-p is within {limit:g} urad")
