@@ -307,3 +307,19 @@ def test_the_fail_level_cut_tries_again_where_the_lte_is_no_straight_line(monkey
     assert 282.5 < setup["torques"][1] <= 323.2
     assert np.all(got.metrics["lte_peak_to_peak"] <= 120.0)
     assert len(seen) >= 3  # the design torque's range, the first lowered try, the second
+
+
+def test_an_lte_just_above_the_limit_is_not_written_as_the_limit():
+    """Issue 71, round 37 (the FM 24x29 at Σ 105°): the lowered torques tried were refused
+    for an LTE p-p above 60 µrad by less than 0.05 µrad, and the line read "60.0 urad" —
+    the limit itself, as if kept. A value above the limit is given to the decimal that
+    shows it above (exact string formatting, no tolerance); one at or below the limit, or
+    clear of it, keeps 0.1 µrad."""
+    from contact.optimize.development_written_lte import _curve
+
+    text = _curve(((28.7, 137.4, 191.7), (15.6, 41.5, 60.004)))
+    assert text == "15.6 / 41.5 / 60.004 urad at 28.7 / 137.4 / 191.7 N m"
+    assert _curve(((191.8,), (60.04,))) == "60.04 urad at 191.8 N m"
+    assert _curve(((194.2,), (60.8,))) == "60.8 urad at 194.2 N m"
+    assert _curve(((150.0,), (59.97,))) == "60.0 urad at 150 N m"  # within: at the limit
+    assert _curve(((150.0,), (60.0,))) == "60.0 urad at 150 N m"

@@ -797,6 +797,24 @@ def _rated_as(setup: dict[str, Any]) -> str:
 
 
 def _curve(found: tuple[Sequence[float], Sequence[float]]) -> str:
-    """``"a / b / … urad at x / y / … N m"`` of an LTE p-p over torques."""
-    return (" / ".join(f"{x:.1f}" for x in found[1]) + " urad at "
+    """``"a / b / … urad at x / y / … N m"`` of an LTE p-p over torques.
+
+    Each LTE p-p [µrad] to 0.1 µrad, but one above ``ltca run``'s limit
+    (:func:`~contact.optimize.development_range_lte.verdict_lte_limit`) that rounds to it
+    or below is given to the decimal that shows it above (at most 3: "60.004"): issue 71,
+    round 37, the FM 24x29 at Σ 105° read "no design torque … where it keeps 60 urad
+    (tried … at 191.7 N m … 60.0 urad …)" for an LTE above 60 by less than 0.05 µrad.
+    """
+    limit = verdict_lte_limit()
+    return (" / ".join(_lte_text(float(x), limit) for x in found[1]) + " urad at "
             + " / ".join(plain_number(float(t)) for t in found[0]) + " N m")
+
+
+def _lte_text(lte: float, limit: float) -> str:
+    """An LTE p-p [µrad] to 0.1 µrad, or to the decimal (at most 3) that shows one above
+    ``limit`` [µrad] above it."""
+    for digits in (1, 2, 3):
+        text = f"{lte:.{digits}f}"
+        if not (lte > limit >= float(text)):
+            return text
+    return f"{lte:.3f}"
