@@ -18,7 +18,6 @@ from collections.abc import Callable
 
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import DevelopmentTargets
-from contact.optimize.development_variant import check_rank
 
 __all__ = ["AFTER_TARGETS", "after_runs_on", "checked_after_edge_peak"]
 
@@ -92,4 +91,11 @@ def checked_after_edge_peak(before: DevelopmentEvaluation, after: DevelopmentEva
     say(f"  the check's steps again on the design the edge-peak step wrote (it misses "
         f"{missed})")
     again = steps(after)
-    return again if check_rank(again) < check_rank(after) else after
+    if again is after:
+        return after
+    if not bool(again.full[2]):
+        say(f"  not kept: the check's steps again end on a design that misses "
+            f"{', '.join(k for k, v in again.full[1].items() if v > 0.0)} (kept only "
+            "where every target is met)")
+        return after
+    return again
