@@ -14,7 +14,10 @@ development saw, not on hand-set flags.
 
 from __future__ import annotations
 
-from development_stand_ins import law_evaluation
+import dataclasses
+
+import numpy as np
+from development_stand_ins import law_evaluation, seen_designs, stand_in
 from development_stand_ins import metrics as _metrics
 
 from contact.optimize import development_centre_after as ca
@@ -140,3 +143,103 @@ def test_the_steps_do_not_run_where_the_edge_peak_step_kept_nothing_or_others_ar
     assert ca.checked_after_edge_peak(before, edge, TARGETS, print, steps) is edge
     assert calls == []
     assert ca.AFTER_TARGETS == {"length", "centre_v", "lte"}
+
+
+# --- the pattern still high alone, lowered by both reliefs (height_by_reliefs) -----------
+
+#: the 12x31's design where the check's steps again ended (ellipse 0.575, path -80 deg)
+E575 = WRITTEN_12X31 | {"ellipse_length": 0.575}
+
+
+def _relief_law(lte_te25=(29.7, 35.6), tolerant=True):
+    """The 12x31 after the steps again, measured (development_levers.py --check
+    --tolerance, branch len99): (tip relief, root relief, te_level) -> (centre v, edge
+    share at the design torque, LTE light / design, tolerant). The written reliefs: v
+    0.65, edge 1.7 %, LTE 34 / 35, not tolerant (2.6 % at dE +0.05 mm); tip relief 18 um
+    from 0.9 with the root relief 22.5 um: v 0.62, edge 0.9 %, LTE 36.7 / 39.6, tolerant;
+    the same at te_level 25: 29.7 / 35.6 (``lte_te25`` and ``tolerant`` vary them)."""
+    rows = {(22.5, 15.0, 45.0): (0.65, 0.017, (34.0, 35.0), False),
+            (18.0, 22.5, 25.0): (0.62, 0.010, lte_te25, tolerant),
+            (18.0, 22.5, 45.0): (0.62, 0.009, (36.7, 39.6), tolerant)}
+
+    def law(case, torques, misalignment=None, **kw):
+        key = (round(float(case["tip_relief"]), 4), round(float(case["root_relief"]), 4),
+               round(float(case["te_level"]), 4))
+        v, edge, lte, ok = rows[key]
+        m = _metrics(pattern_toe_u=[0.2, 0.0], pattern_heel_u=[0.8, 1.0],
+                     pattern_root_v=[0.29, 0.24], pattern_tip_v=[0.95, 1.0],
+                     pattern_centre_u=[0.5, 0.5], pattern_centre_v=[v, v + 0.01],
+                     edge_load_share=[0.0, edge], lte_peak_to_peak=list(lte))
+        if misalignment is not None and not ok:
+            m["edge_load_share"] = np.asarray([0.0, 0.026])
+        return m, (0.0, 1.0, 0.0, 1.0, 2400.0)
+
+    return law
+
+
+def test_the_relief_designs_are_the_tip_steps_and_the_tolerance_steps_moves():
+    got = ca.relief_designs(E575, TARGETS)
+    # 0.8 x 22.5 = 18 um from the upper bound 0.9; root 15 x 1.5 = 22.5 um (> 15 + 5);
+    # te_level 45 - 20 = 25 first, then the same at its own level
+    assert got == [E575 | {"tip_relief": 18.0, "tip_relief_start": 0.9, "root_relief": 22.5,
+                           "te_level": 25.0},
+                   E575 | {"tip_relief": 18.0, "tip_relief_start": 0.9, "root_relief": 22.5}]
+    # a shallow root relief is raised by the least step (6 um -> 11, not 9); the TE level
+    # at its lower bound is not lowered again
+    low = ca.relief_designs(E575 | {"root_relief": 6.0, "te_level": 10.0}, TARGETS)
+    assert [(d["root_relief"], d["te_level"]) for d in low] == [(11.0, 10.0)]
+    assert ca.relief_designs({"tip_relief": 10.0}, TARGETS) == []
+
+
+def test_the_12x31s_high_pattern_is_lowered_by_both_reliefs(monkeypatch):
+    """The first design (te_level 25) meets every target and is tolerant: returned, the
+    second not analysed."""
+    seen, fake = seen_designs(_relief_law())
+    targets, setup, chosen = stand_in(monkeypatch, fake, (101.5, 677.1),
+                                      centre_v=CENTRE_12X31)
+    start = dataclasses.replace(chosen(dict(E575)), case=dict(E575))
+    assert {k for k, v in start.full[1].items() if v > 0.0} == {"centre_v"}
+    seen.clear()
+    lines: list[str] = []
+    got = ca.height_by_reliefs(start, targets, setup, None, lines.append, lambda v: dict(v))
+    assert got is not None and got.full[2] and got.stage == ca.STAGE
+    assert got.values == ca.relief_designs(E575, TARGETS)[0]
+    assert [s["te_level"] for s in seen] == [25.0]
+    assert "its centre v 0.65 high" in lines[0]
+
+
+def test_the_reliefs_alone_where_the_lower_te_level_misses_and_none_where_not_tolerant(
+        monkeypatch):
+    _, fake = seen_designs(_relief_law(lte_te25=(41.0, 35.6)))
+    targets, setup, chosen = stand_in(monkeypatch, fake, (101.5, 677.1),
+                                      centre_v=CENTRE_12X31)
+    start = dataclasses.replace(chosen(dict(E575)), case=dict(E575))
+    got = ca.height_by_reliefs(start, targets, setup, None, print, lambda v: dict(v))
+    assert got is not None and got.values["te_level"] == 45.0
+    # neither tolerant: None (the caller writes the design the edge-peak step left)
+    _, fake = seen_designs(_relief_law(tolerant=False))
+    targets, setup, chosen = stand_in(monkeypatch, fake, (101.5, 677.1),
+                                      centre_v=CENTRE_12X31)
+    start = dataclasses.replace(chosen(dict(E575)), case=dict(E575))
+    assert ca.height_by_reliefs(start, targets, setup, None, print, lambda v: dict(v)) is None
+    # a design missing more than its centre v (the written 12x31: the length too) or a
+    # pattern below its centre is not the step's
+    written = dataclasses.replace(chosen(dict(E575)), case=dict(E575))
+    written.full[1]["length"] = 0.5
+    assert ca.height_by_reliefs(written, targets, setup, None, print,
+                                lambda v: dict(v)) is None
+
+
+def test_the_reliefs_design_is_returned_where_the_steps_again_end_short():
+    after = law_evaluation(WRITTEN_12X31, M_12X31, TARGETS, CENTRE_12X31)
+    before = law_evaluation(WRITTEN_12X31 | {"tip_relief": 15.0}, M_12X31, TARGETS,
+                            CENTRE_12X31)
+    again = law_evaluation(AGAIN_12X31, M_AGAIN_12X31, TARGETS, CENTRE_12X31)
+    lowered = law_evaluation(AGAIN_9X35, M_AGAIN_9X35, TARGETS, CENTRE_9X35)
+    asked: list = []
+    out = ca.checked_after_edge_peak(before, after, TARGETS, print, lambda e: again,
+                                     lambda e: asked.append(e) or lowered)
+    assert out is lowered and asked == [again]
+    # none found: the design the edge-peak step wrote
+    assert ca.checked_after_edge_peak(before, after, TARGETS, print, lambda e: again,
+                                      lambda e: None) is after
