@@ -1,11 +1,26 @@
-"""The check's steps again on the drive design the edge-peak step left (issue 71,
-"``ltca synthesize`` meets every development target on the drive flank", branch len99).
+"""The check's steps again on the drive design the edge-peak step left, and a pattern
+still high lowered by both reliefs at once (issue 71, "``ltca synthesize`` meets every
+development target on the drive flank", branch len99).
 
 The check's steps (:func:`~contact.optimize.development_check.check_steps`) run before the
 edge-peak step (:func:`~contact.optimize.development_edge_peak.checked_edge_peak`); the
 relief that step gives an edge changes what those steps can do: a design refused for its
 tolerance before may be tolerant on the deeper relief, and a design that missed the edge
 target (outside the near-miss step's margin) becomes a near miss on its pattern.
+:func:`checked_after_edge_peak` runs them again there and keeps their design only where it
+meets every target; where it misses the centre v alone, :func:`height_by_reliefs` moves
+the tip and the root relief together (each alone is barred or refused on such a design).
+
+Measured (``ltca synthesize -v``, 2026-11-29; docs/synthesis.md, "The check's steps again
+after the edge-peak step, and the height by both reliefs"): the FM hypoid 9x35 at Σ 88° of
+benchmarks/data/unseen_designs — its path step (−80°: centre v 0.63, LTE 23 / 30 µrad)
+refused in the check for the edge at ΔE +0.05 mm, tolerant on the edge-peak step's root
+relief 15.25 µm, then the length step's ellipse 0.583: every drive target (v 0.62 against
+0.541 ± 0.08, LTE 30 / 38 µrad), 385.8 N m kept; the FM hypoid 12x31 at a 0.20 d_e2 — the
+steps again end on the ellipse 0.575 (0.60 long, v 0.65, not tolerant), both reliefs then
+(tip relief 18 µm from 0.9, root relief 22.5 µm, ``te_level`` 25): every drive target (v
+0.619 against 0.540 ± 0.08, LTE 30 / 36 µrad, tolerant), 677.1 N m kept (S_F,FE 1.31).
+Kept by rank instead, the 12x31's steps-again design cut its torque to 663 N m.
 
 Public names
 ------------
