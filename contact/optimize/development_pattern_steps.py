@@ -369,9 +369,7 @@ def checked_near_miss(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                       setup: Mapping[str, Any], teeth: KeptTeeth | None,
                       say: Callable[[str], None],
                       placed: Callable[[Mapping[str, float]], Case], level: float, *,
-                      slope: float | None = None,
-                      refused_out: list[DevelopmentEvaluation] | None = None
-                      ) -> DevelopmentEvaluation:
+                      slope: float | None = None) -> DevelopmentEvaluation:
     """A design that misses its targets by a small margin after every other check step,
     its light-load centre v among them (:func:`near_miss`), given a small blade-angle
     step with its TE level lowered: the pinion's blade-angle change
@@ -394,9 +392,7 @@ def checked_near_miss(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     that keeps nothing and the smallest blade
     step was refused for the LTE or the pattern length alone, two more
     (:func:`~contact.optimize.development_band_edge.band_edge_designs`): the smallest
-    blade step into the band, then with the path turned. ``refused_out``, where given,
-    gets the blade steps analysed and not kept (in the order tried), for the caller to
-    say what the centre costs (:mod:`contact.optimize.development_centre_after`).
+    blade step into the band, then with the path turned.
 
     Why: the search and the check's other steps develop the height with large levers
     (the root-find of the height stage, the tip and root reliefs); where the check leaves
@@ -457,8 +453,6 @@ def checked_near_miss(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         if not (vb - va) / (xb - xa) > 0.05:
             break  # no slope to step on
         s = (vb - va) / (xb - xa)  # the slope measured: the next design a secant
-    if refused_out is not None:
-        refused_out.extend(refused)
     # the blade steps that gave up the edge or plastic target: the same aimed at the
     # target centre with the pinion's tip edge relieved and the profile crowned
     # (development_height_relieved; the truck hypoid 8x47)
