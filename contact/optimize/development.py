@@ -124,6 +124,7 @@ from typing import Any
 # those are called through their modules, and patched there
 from contact.optimize import development_coast_flank as coast_flank
 from contact.optimize.development_basic_arg import basic_design_of
+from contact.optimize.development_centre_after import checked_after_edge_peak, height_by_reliefs
 from contact.optimize.development_check import (
     PATH_STEPS,
     VERIFIED_DESIGNS,
@@ -589,7 +590,12 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
     # relief of the edge the light-load pattern reaches, grown until it is clear, kept
     # where no met target is lost (development_light_edge_relief)
     best = checked_light_edge(best, targets, setup, teeth, say, placed)
-    best = checked_edge_peak(best, targets, setup, teeth, say, placed)
+    # the check's steps again on the design the edge-peak step changed, and the pattern
+    # still high alone lowered by both reliefs (development_centre_after)
+    best = checked_after_edge_peak(
+        best, checked_edge_peak(best, targets, setup, teeth, say, placed), targets, say,
+        steps, functools.partial(height_by_reliefs, targets=targets, setup=setup,
+                                 teeth=teeth, say=say, placed=placed))
     # the development's own LTE target alone missed: the hollow profile with the tip
     # relief deeper, on the design as it is written (after the edge-peak step's relief;
     # development_hollow_target)
