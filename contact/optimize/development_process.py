@@ -36,6 +36,7 @@ Public names
 TORQUE_CUT_FRACTION   design torque below this share of the rated one: a failed outcome
 FORESEEN_CUT_MARGIN   the share of that torque a Formate pitting bound must fall below
 cut_foreseen          whether a pitting bound foresees the Formate design's torque cut
+flank_fails           the verdict's FAIL criteria a flank's (light, design) metrics meet
 static_cut_foreseen   whether the flank's static capacity foresees it (an upper bound)
 CutForeseen           a Formate development stopped there
 failed_outcome        why a developed design fails its own check (empty where it does not)
@@ -64,8 +65,8 @@ from geometry.core.text import plain_number
 
 __all__ = ["AT_CHECK", "AT_CHECK_MARGIN", "AT_STATIC", "FORESEEN_CUT_MARGIN",
            "TORQUE_CUT_FRACTION", "CutForeseen", "Outclassed", "better_outcome", "cut_below",
-           "cut_foreseen", "cut_reference", "failed_outcome", "lte_over", "outclassing_torque",
-           "static_cut_foreseen", "with_generated_gear"]
+           "cut_foreseen", "cut_reference", "failed_outcome", "flank_fails", "lte_over",
+           "outclassing_torque", "static_cut_foreseen", "with_generated_gear"]
 
 log = logging.getLogger(__name__)
 
@@ -98,7 +99,7 @@ _RULE = ("(contact.optimize.development_process.better_outcome: no failed outcom
          "development's objective).")
 
 
-def _flank_fails(metrics: Any, torques: tuple[float, ...], flank: str) -> list[str]:
+def flank_fails(metrics: Any, torques: tuple[float, ...], flank: str) -> list[str]:
     """The verdict's FAIL criteria a flank's (light, design) metrics meet: the LTE spread
     and the plastic share beyond :mod:`contact.ltca.plausibility`'s limits — an LTE spread
     the verdict reads as a quiet mesh's own transfer (no edge share, LTE p-p within its
@@ -159,8 +160,8 @@ def failed_outcome(result: Any, rated: float) -> str:
 
 def _verdict_fails(result: Any) -> str:
     """The verdict's FAIL criteria the drive and coast flank meet (:func:`failed_outcome`)."""
-    out = _flank_fails(result.best.metrics, tuple(result.torque), "drive")
-    return "; ".join(out + _flank_fails(result.coast, result.coast_design_torques, "coast"))
+    out = flank_fails(result.best.metrics, tuple(result.torque), "drive")
+    return "; ".join(out + flank_fails(result.coast, result.coast_design_torques, "coast"))
 
 
 def _torque_cut(result: Any, rated: float) -> str:
@@ -208,7 +209,7 @@ def cut_reference(result: Any, rated: float) -> float:
     -----
     An LTE-window cut (:mod:`contact.optimize.development_written_lte`) is the contact
     ratio's, not the gear process's: the LTE p-p of a localised bearing falls with
-    ε_vβ, which both gear processes of a pair share, as :func:`_flank_fails` leaves the
+    ε_vβ, which both gear processes of a pair share, as :func:`flank_fails` leaves the
     verdict's LTE FAIL out of the failed outcome. Measured (issue 71, docs/synthesis.md,
     "An LTE-window cut is no failed outcome"): the FM spiral bevel 17x23 (ε_vβ 0.93), its
     generated gear kept 60 µrad up to 537.1 of 1449 N·m; counted as a failed outcome

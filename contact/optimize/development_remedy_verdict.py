@@ -175,12 +175,12 @@ def flank_findings(metrics: Mapping[str, Any] | None, torques: tuple[float, ...]
     :func:`contact.optimize.development_process.failed_outcome`'s reading of the
     plausibility FAILs on a development's metrics (a quiet transfer's LTE spread no FAIL).
     """
-    from contact.optimize.development_process import _flank_fails
+    from contact.optimize.development_process import flank_fails
 
     if metrics is None:
         return {}
     out: dict[str, Finding] = {}
-    fails = _flank_fails(metrics, tuple(torques), "")
+    fails = flank_fails(metrics, tuple(torques), "")
     if fails:
         out["implausible"] = Finding("implausible", "fail",
                                      "; ".join(f.strip() for f in fails))
