@@ -157,7 +157,11 @@ def synthesize_case(basic, *, fe_level: str | None = None, development: bool = T
     Notes
     -----
     Source: ``ltca synthesize`` (issue 71, round 28 of docs/own_gear_set.md: the API's
-    ``written_case()`` lacked the remedies' record and the notes); docs/api.md.
+    ``written_case()`` lacked the remedies' record and the notes); docs/api.md. After a
+    development the written case's scuffing safety at its design torque and operation is
+    computed as ``ltca run`` computes it, and said under the development's line where
+    ``ltca run`` would FAIL on it (:mod:`contact.optimize.written_scuffing`; one more LTCA,
+    ~2 s of CPU; docs/synthesis.md, "Scuffing at the design torque").
     """
     import tomllib
 
