@@ -102,3 +102,32 @@ def test_a_scuffing_failure_names_the_oil_temperature_and_roughness(monkeypatch)
     case = resolve_case(CASE)  # the example: 20 K below the case's inlet, half its Rq
     assert args.temperature == case.operating.temperature - 20.0
     assert args.roughness == case.operating.roughness / 2.0
+
+
+def test_a_scuffing_failure_is_not_answered_by_the_bearings_optimisation(monkeypatch):
+    """Issue 71, Round 37: the truck hypoid 8x45 FAILed on S_B 0.93 alone, with a bearing
+    attention beside it (the pattern at the gear's heel and tip, 0.07 % edge share); the
+    verdict printed `ltca optimize` first, whose objective and constraints hold no S_B: run
+    as printed it kept its start and the FAIL. A scuffing FAIL gets the operation's remedy
+    alone; a bearing finding that fails itself still gets the bearing's steps."""
+    edge = ("attention", "edge_contact", "at 1750 N m: the loaded pattern reaches the gear's "
+            "heel and tip; edge contact carries 0.07 % of the torque")
+    scuff = ("fail", "scuffing", "scuffing safety S_B 0.927 at 1750 N m below 1")
+    _verdict(monkeypatch, scuff, edge)
+    lines = next_steps(_tree((262.5, 1750.0)), resolve_case(CASE), "case.toml", "drive")
+    commands = _commands(lines)
+    assert [c[1] for c in commands] == ["run"], lines
+    assert lines[0].startswith("  next, scuffing:")
+    assert "`ltca optimize` (the bearing) does not model it" in lines[0]
+    args = build_parser().parse_args(commands[0][1:])
+    assert args.torque == [262.5, 1750.0]
+    # a failing bearing finding beside it: both answered, each by its own step
+    _verdict(monkeypatch, scuff, ("fail", "edge_contact", "edge contact 5 %"))
+    both = [c[1] for c in _commands(next_steps(_tree((262.5, 1750.0)), resolve_case(CASE),
+                                               "case.toml", "drive"))]
+    assert both == ["vh-check", "optimize", "run"]
+    # a FAIL the bearing can change (here the LTE spread's plasticity check) keeps the
+    # optimisation for a bearing attention beside it, as before
+    _verdict(monkeypatch, ("fail", "implausible", "plastic contact 5.7 %"), edge)
+    assert "optimize" in [c[1] for c in _commands(
+        next_steps(_tree(), resolve_case(CASE), None, "drive"))]

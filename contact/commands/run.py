@@ -487,11 +487,27 @@ BEARING_CHECKS = ("implausible", "plastic_edges", "edge_pressure", "edge_contact
                   "flank_pressure")
 #: the checks only a larger or stronger gear set answers
 CAPACITY_CHECKS = ("rating", "static")
+#: the failing checks the bearing's optimisation (``ltca optimize``) cannot change: its
+#: objective and constraints hold no scuffing or micropitting safety, which the operation
+#: (oil, inlet temperature, speed, finish) moves (issue 71, Round 37: the truck hypoid
+#: 8x45's S_B 0.93 FAIL, the optimisation printed for a 0.07 % edge attention beside it
+#: kept its start, "ltca run's verdict is FAIL: scuffing safety S_B 0.927")
+OPERATION_CHECKS = ("scuffing", "micropitting")
 #: the case-level variables the bearing hint offers, with their half-range about the
 #: flank's own value (file units): lengthwise crowning by the point radius, profile
 #: position by the blade angle, the bias by the ratio of roll, and the profile relief;
 #: measured on the reference design's coast flank (docs/optimize.md, "A flank that fails")
 BEARING_VARIABLES = {"point_radius": 4.0, "blade_angle": 1.25, "ratio_of_roll": 0.03}
+
+
+def _bearing_answers(findings) -> bool:
+    """Whether the bearing's next steps (V-H check, ``ltca optimize``) answer a FAIL
+    verdict's ``findings``: a bearing finding that fails itself, or a bearing attention
+    beside a failing finding the bearing can change. A bearing attention beside FAILs of
+    :data:`OPERATION_CHECKS` alone is not printed an optimisation: it would keep the FAIL."""
+    fails = [f for f in findings if f.severity == "fail"]
+    return any(f.check in BEARING_CHECKS for f in fails) or any(
+        f.check not in OPERATION_CHECKS for f in fails)
 
 
 def next_steps(tree, case, case_arg: str | None, flank: str | None,
@@ -584,7 +600,7 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None,
     if overloaded:
         out += capacity
     out += root
-    if failed & set(BEARING_CHECKS):
+    if failed & set(BEARING_CHECKS) and _bearing_answers(v.findings):
         # a flank peak above the static strength: the optimisation is given it as a limit;
         # an optimised case's own optimisation is not printed again (its [optimize] table)
         static = any(f.check == "flank_pressure" and f.severity == "fail" for f in v.findings)
@@ -605,8 +621,8 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None,
         out += ["  next, scuffing: the flash temperature falls with a cooler oil inlet, smoother "
                 "flanks and a lower speed, and an oil of a higher FZG load stage has a higher "
                 "scuffing temperature (--lubricant OIL.toml, an oil file: docs/friction.md; "
-                "docs/scuffing_micropitting.md); the same run 20 K cooler with flanks half as "
-                "rough, for example:",
+                "docs/scuffing_micropitting.md); `ltca optimize` (the bearing) does not model "
+                "it; the same run 20 K cooler with flanks half as rough, for example:",
                 f"    ltca run {shown} --flank {side} --torque {torques} --temperature "
                 f"{op.temperature - 20.0:g} --roughness {op.roughness / 2.0:g}"]
     return out

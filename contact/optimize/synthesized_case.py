@@ -157,7 +157,11 @@ def synthesize_case(basic, *, fe_level: str | None = None, development: bool = T
     Notes
     -----
     Source: ``ltca synthesize`` (issue 71, round 28 of docs/own_gear_set.md: the API's
-    ``written_case()`` lacked the remedies' record and the notes); docs/api.md.
+    ``written_case()`` lacked the remedies' record and the notes); docs/api.md. After a
+    development the written case's scuffing safety at its design torque and operation is
+    computed as ``ltca run`` computes it, and said under the development's line where
+    ``ltca run`` would FAIL on it (:mod:`contact.optimize.written_scuffing`; one more LTCA,
+    ~2 s of CPU; docs/synthesis.md, "Scuffing at the design torque").
     """
     import tomllib
 
@@ -236,6 +240,14 @@ def synthesize_case(basic, *, fe_level: str | None = None, development: bool = T
     head = [*first_lines(basic, found, record, shown),
             *_summary_lines(case, report, basic, found, targets, raised,
                             (torque, torque_why, coast_torque, coast_why), ratios)]
+    if found is not None:
+        # the development's "every target met" is the bearing's: where `ltca run` of the
+        # written case FAILs on scuffing at the design torque, said under it (issue 71)
+        scuffing = _scuffing_line(case, torque)
+        if scuffing is not None:
+            at = next((i + 1 for i, line in enumerate(head)
+                       if line.startswith("  development:")), len(head))
+            head.insert(at, "note: " + scuffing)
     return SynthesizedCase(case, text, tuple(head),
                            tuple(_note_lines(basic, report, notes, shown)), found, basic)
 
@@ -295,6 +307,22 @@ def _summary_lines(case, report, basic, found, targets, raised, torques,
     if process is not None:
         out.append("note: " + process)
     return out
+
+
+def _scuffing_line(case, torque: float) -> str | None:
+    """The scuffing note of the written case at its design torque
+    (:func:`contact.optimize.written_scuffing.scuffing_note`), or what stopped its
+    analysis; None where S_B is not below the verdict's minimum or there is no torque."""
+    from contact.optimize.written_scuffing import design_scuffing, scuffing_note
+    from geometry.core.errors import LTCAError
+
+    if not math.isfinite(torque) or torque <= 0.0:
+        return None
+    try:
+        return scuffing_note(design_scuffing(case, torque))
+    except (LTCAError, ArithmeticError, RuntimeError) as exc:  # said, not hidden
+        return (f"scuffing not checked at the design torque {plain_number(torque)} N m: "
+                f"{exc} (`ltca run` of the case judges it)")
 
 
 def _note_lines(basic, report, notes: list[str], shown: str) -> list[str]:
