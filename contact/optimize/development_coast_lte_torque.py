@@ -104,7 +104,8 @@ def lte_torque_reason(before: tuple[tuple[float, ...], tuple[float, ...]],
     return (f"the torque up to which the written coast bearing keeps its LTE within "
             f"{limit:g} urad at every torque: at {plain_number(design)} N m its LTE p-p "
             f"was {_curve(before)} after every coast step (none of its bearing steps kept "
-            f"{limit:g} urad there), {_curve(there)} at {plain_number(torque)} N m")
+            f"{limit:g} urad there); {_curve(there)} at the coast design torque "
+            f"{plain_number(torque)} N m")
 
 
 def coast_lte_torque(case: Case, basic: BasicDesign, coast: Any, cap: CoastCapacity | None,
@@ -187,7 +188,8 @@ def coast_lte_torque(case: Case, basic: BasicDesign, coast: Any, cap: CoastCapac
     tried: list[str] = []
     for _ in range(LTE_TRIES):
         ts = sorted(seen)
-        new = floor_torque(within_torque(ts, [seen[t] for t in ts], LTE_LIMIT))
+        within = within_torque(ts, [seen[t] for t in ts], LTE_LIMIT)
+        new = floor_torque(within) if math.isfinite(within) and within > 0 else math.nan
         if not (math.isfinite(new) and light < new < design):
             break  # the light torque above the limit already, or no lower torque
         again, there = coast_flank_capacity(case, basic, coast, targets, setup, new,
