@@ -59,11 +59,12 @@ def _patched(monkeypatch, knots=KNOTS, holds=True, lower_to=None):
         calls.append(start)
         torque = start if lower_to is None else min(start, lower_to)
         best = SimpleNamespace(checked_full=True, values=dict(coast.best.values),
-                               metrics={"lte_peak_to_peak": [law(LIGHT, knots),
-                                                             law(torque, knots)]})
+                               metrics={"lte_peak_to_peak": [
+                                   law(LIGHT / DESIGN * torque, knots), law(torque, knots)]})
         check = CoastCheck(torque, 1400.0, 2400.0)
         reason = "" if torque == start else f"its peak at {start} N m"
-        return (SimpleNamespace(best=best, torques=(LIGHT, torque)),
+        # the coast light torque the same share of the coast design torque as before
+        return (SimpleNamespace(best=best, torques=(LIGHT / DESIGN * torque, torque)),
                 CoastCapacity(torque, start, (check,), reason, holds))
 
     monkeypatch.setattr(lte_torque, "range_lte", fake_range)
@@ -76,10 +77,11 @@ _BASIC = SimpleNamespace(gives_design_torque=False, rating={})
 _BEFORE = CoastCapacity(DESIGN, DESIGN, (CoastCheck(DESIGN, 1500.0, 2400.0),), "", True)
 
 
-def _run(coast, cap=_BEFORE, basic=_BASIC, targets=None):
+def _run(coast, cap=_BEFORE, basic=_BASIC, targets=None, drive_light=LIGHT):
     lines: list[str] = []
+    setup = {"torques": [drive_light, DESIGN]}  # the drive's light and design torque
     got = lte_torque.coast_lte_torque(None, basic, coast, cap, _DRIVE,
-                                      targets or DevelopmentTargets(), {}, None, True,
+                                      targets or DevelopmentTargets(), setup, None, True,
                                       lines.append)
     return got, lines
 
@@ -88,8 +90,9 @@ def test_the_coast_design_torque_is_lowered_to_where_its_lte_keeps_60_urad(monke
     """56 / 79.6 / 90 µrad at 18.4 / 87.93 / 122.7 N m: the crossing of 60 µrad, linear
     between the light torque and the knot, is 18.4 + 4 / 23.6 × 69.53 = 30.18 N m, written
     rounded down to 0.1 N m (30.1); its own range (56 / 57.3 / 59.98 µrad) keeps the limit,
-    so it is written, the light torque (the drive's) unchanged, and the line and reason say
-    the LTE before and after with the numbers."""
+    so it is written, its light torque the same share of it (0.15: 4.51 N m), and the line
+    and reason say the LTE before and after with the numbers. Below the drive's light
+    torque nothing is lowered (a coast design torque under it is a failed outcome)."""
     calls = _patched(monkeypatch)
     coast = _coast()
     (outcome, cap), lines = _run(coast)
@@ -98,13 +101,18 @@ def test_the_coast_design_torque_is_lowered_to_where_its_lte_keeps_60_urad(monke
     assert calls == [pytest.approx(30.1)]
     assert cap.torque == pytest.approx(30.1) and cap.lowered and cap.holds
     assert cap.start == DESIGN and len(cap.checks) == 2  # the capacity's checks kept
-    assert outcome.torques == (LIGHT, pytest.approx(30.1))
+    assert outcome.torques == (pytest.approx(LIGHT / DESIGN * 30.1), pytest.approx(30.1))
     assert max(outcome.best.metrics["lte_peak_to_peak"]) <= 60.0
     assert lines[-1].startswith("development: coast design torque 122.7 -> 30.1 N m")
     # the range before (its middle 56 + 52.15 / 69.53 × 23.6 = 73.7 µrad) and at 30.1
     assert "56.0 / 73.7 / 90.0 urad at 18.4 / 70.55 / 122.7 N m" in cap.reason
-    assert "56.0 / 58.0 / 60.0 urad at 18.4 / 24.25 / 30.1 N m at the coast design" in cap.reason
+    assert "60.0 urad at 4.514 / 17.31 / 30.1 N m at the coast design torque 30.1" in cap.reason
     assert "none of its bearing steps kept 60 urad there" in cap.reason
+    # the drive's light torque above the crossing: nothing lowered
+    calls.clear()
+    (outcome, cap), lines = _run(coast, drive_light=35.0)
+    assert outcome is coast and cap is _BEFORE and calls == []
+    assert "no coast design torque below 122.7 N m found" in lines[-1]
 
 
 def test_a_capacity_reason_before_is_kept_and_a_further_cut_said(monkeypatch):

@@ -25,10 +25,14 @@ within_torque`, linear between the torques analysed), the coast capacity searche
 there (every criterion: it may lower it further) and kept only where the LTE over the
 lowered torques' own range keeps the limit at every torque. The bearing is not changed
 (no step runs again) and the drive flank is not touched. The coast light torque is the
-drive's (:func:`contact.pipeline.flank_torques`), so a lower coast design torque does
-not move it: where the light torque's LTE exceeds the limit already no torque keeps it
-and nothing is lowered. A design torque or coast design torque the basic file gives is
-kept (as the drive's rule keeps a given design torque).
+same share of the coast design torque as the drive's of the design torque
+(:func:`contact.pipeline.flank_torques`), so a lower coast design torque lowers it too:
+where the light torque's LTE exceeds the limit already, or the lowered light torque's
+does, no lower torque is tried (as the drive's rule). The coast design torque is not
+lowered below the drive's light torque (a coast design torque cut below it is a failed
+outcome, :func:`~contact.optimize.development_process.failed_outcome`). A design torque
+or coast design torque the basic file gives is kept (as the drive's rule keeps a given
+design torque).
 
 Public names
 ------------
@@ -46,9 +50,9 @@ from contact.optimize.development_coast import CoastCapacity
 from contact.optimize.development_coast_flank import coast_flank_capacity
 from contact.optimize.development_evaluate import KeptTeeth, bearing_key
 from contact.optimize.development_range_lte import range_lte
-from contact.optimize.development_result import DevelopmentEvaluation, floor_torque
+from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import DevelopmentTargets
-from contact.study.lte_within import within_torque
+from contact.optimize.development_written_lte import lowered_torque
 from geometry.case import Case
 from geometry.core.text import plain_number
 from geometry.synthesis.basic_design import BasicDesign
@@ -185,17 +189,18 @@ def coast_lte_torque(case: Case, basic: BasicDesign, coast: Any, cap: CoastCapac
             f"{LTE_LIMIT:g} urad; the design torque the basic file gives is kept")
         return coast, cap
     seen = dict(zip(before[0], before[1], strict=True))
+    # never below the drive's light torque (a failed outcome, development_process)
+    floor = float(setup.get("torques", (light,))[0])
     tried: list[str] = []
     for _ in range(LTE_TRIES):
         ts = sorted(seen)
-        within = within_torque(ts, [seen[t] for t in ts], LTE_LIMIT)
-        new = floor_torque(within) if math.isfinite(within) and within > 0 else math.nan
-        if not (math.isfinite(new) and light < new < design):
+        new = lowered_torque(ts, [seen[t] for t in ts], LTE_LIMIT, design)
+        if not (math.isfinite(new) and new > floor):
             break  # the light torque above the limit already, or no lower torque
         again, there = coast_flank_capacity(case, basic, coast, targets, setup, new,
                                             root_stress, True, say)
         if (there is None or not there.holds or again.best is None
-                or len(again.torques) != 2 or not float(again.torques[1]) > light):
+                or len(again.torques) != 2 or not float(again.torques[1]) > floor):
             break
         at = [float(t) for t in again.torques]
         found = range_lte(again.best, dict(setup, torques=at), teeth, flank="coast",
@@ -215,6 +220,8 @@ def coast_lte_torque(case: Case, basic: BasicDesign, coast: Any, cap: CoastCapac
                 prior + reason, True)
         tried.append(f"at {plain_number(at[1])} N m {_curve(found)}")
         seen.update(zip(found[0], found[1], strict=True))
+        if found[1][0] > LTE_LIMIT:  # the lowered light torque above the limit already
+            break
     say(f"development: the written coast LTE p-p {_curve(before)}, above {LTE_LIMIT:g} "
         f"urad: no coast design torque below {plain_number(design)} N m found where it "
         f"keeps it at every torque"
