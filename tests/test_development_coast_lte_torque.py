@@ -184,6 +184,13 @@ def test_a_given_torque_is_kept(monkeypatch):
         (outcome, cap), lines, coast, before = _run(TWELVE, basic=basic)
         assert outcome is coast and cap is before and calls == []
         assert lines[-1].endswith("the design torque the basic file gives is kept")
+    # the drive developed again in its LTE window gives its own torque: not a given one
+    lines: list[str] = []
+    got = lte_torque.coast_lte_torque(
+        None, SimpleNamespace(gives_design_torque=True, rating={}), _coast(TWELVE),
+        _before(TWELVE), _DRIVE, DevelopmentTargets(), {"torques": [5.5, 36.7]}, None, True,
+        lines.append, own_torque=True)
+    assert got[1].torque == pytest.approx(15.0) and calls == [pytest.approx(15.0)]
 
 
 def test_no_torque_that_holds_leaves_it_and_a_failed_range_is_tried_again(monkeypatch):

@@ -790,7 +790,8 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
         # after every coast step: the coast design torque no higher than where it keeps it
         # (development_coast_lte_torque; the drive's written_lte_capacity on the coast)
         coast, coast_cap = coast_lte_torque(case, basic, coast, coast_cap, best, targets,
-                                            setup, teeth, root_stress, say)
+                                            setup, teeth, root_stress, say,
+                                            own_torque=bool(torque_name))
     coast_seconds += time.process_time() - c_cap
     # a root-limited torque decided on the default FE model: the case written names it
     # (ltca run reads the model the torque was decided with)

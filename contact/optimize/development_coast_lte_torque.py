@@ -124,7 +124,8 @@ def lte_torque_reason(before: tuple[tuple[float, ...], tuple[float, ...]],
 def coast_lte_torque(case: Case, basic: BasicDesign, coast: Any, cap: CoastCapacity | None,
                      drive: DevelopmentEvaluation, targets: DevelopmentTargets,
                      setup: dict[str, Any], teeth: KeptTeeth | None, root_stress: bool,
-                     say: Callable[[str], None]) -> tuple[Any, CoastCapacity | None]:
+                     say: Callable[[str], None], *, own_torque: bool = False
+                     ) -> tuple[Any, CoastCapacity | None]:
     """The written coast flank at a coast design torque no higher than where its LTE p-p
     keeps the verdict's limit at every torque ``ltca run --flank coast`` judges.
 
@@ -154,6 +155,10 @@ def coast_lte_torque(case: Case, basic: BasicDesign, coast: Any, cap: CoastCapac
         rating).
     say : callable str → None
         Where the lines go.
+    own_torque : bool, optional
+        The design torque ``basic`` gives is the development's own, not the basic file's
+        (the drive developed again in its LTE window, ``develop``'s ``torque_name``): not
+        kept as a given one. Default False.
 
     Returns
     -------
@@ -192,7 +197,7 @@ def coast_lte_torque(case: Case, basic: BasicDesign, coast: Any, cap: CoastCapac
                        key_prefix=key)
     if before is None or not max(before[1]) > LTE_LIMIT:
         return coast, cap
-    if basic is not None and (basic.gives_design_torque
+    if basic is not None and ((basic.gives_design_torque and not own_torque)
                               or basic.rating.get("coast_design_torque") is not None):
         say(f"development: the written coast LTE p-p {_curve(before)}, above "
             f"{LTE_LIMIT:g} urad; the design torque the basic file gives is kept")
