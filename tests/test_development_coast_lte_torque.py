@@ -123,7 +123,8 @@ def test_no_cut_below_half_the_coast_design_torque(monkeypatch):
     / 69.53 × 23.6); the crossing 18.4 + 4 / 17.7 × 52.15 = 30.18 → 30.1 N m, 25 % of
     122.7: below half of it (61.35), so nothing is analysed or lowered (the lead's gate:
     an attention-level LTE does not cut a coast design torque below half), and the line
-    says the crossing and its share."""
+    says the crossing and its share (``ltca synthesize``'s finer range, 58.0 / 65.7 µrad
+    at 44.48 / 53.17 N m, puts the 13x17's at 46.7 N m, 38 %: below the bound too)."""
     calls = _patched(monkeypatch, THIRTEEN)
     (outcome, cap), lines, coast, before = _run(THIRTEEN)
     assert outcome is coast and cap is before and calls == []
