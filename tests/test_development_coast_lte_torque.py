@@ -203,6 +203,13 @@ def test_no_torque_that_holds_leaves_it_and_a_failed_range_is_tried_again(monkey
     calls = _patched(monkeypatch, TWELVE, holds=False)
     (outcome, cap), _, coast, before = _run(TWELVE)
     assert outcome is coast and cap is before and len(calls) == 1
+    # a coast root check refined at a torque not kept leaves no record in the setup
+    monkeypatch.setattr(lte_torque, "coast_flank_capacity", lambda c, b, o, t, setup, *a:
+                        (setup.update(fe_level_why="refined at 15.0 N m"), (o, None))[1])
+    setup = {"torques": [5.5, 36.7], "fe_level_why": "the drive's"}
+    lte_torque.coast_lte_torque(None, _BASIC, _coast(TWELVE), _before(TWELVE), _DRIVE,
+                                DevelopmentTargets(), setup, None, True, print)
+    assert setup["fe_level_why"] == "the drive's"
     steep = dict(TWELVE, knots=((3.3, 50.0), (12.95, 58.0), (13.0, 100.0), (22.6, 100.0)))
     calls = _patched(monkeypatch, steep)
     (outcome, cap), _, _, _ = _run(steep)

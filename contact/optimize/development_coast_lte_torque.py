@@ -210,6 +210,9 @@ def coast_lte_torque(case: Case, basic: BasicDesign, coast: Any, cap: CoastCapac
                    else math.nan)
     crossing = math.nan
     tried: list[str] = []
+    # a coast root check refined on the default FE model at a torque not kept says
+    # nothing of the torque written (coast_flank_capacity records it in the setup)
+    fe_why = setup.get("fe_level_why")
     for _ in range(LTE_TRIES):
         ts = sorted(seen)
         new = lowered_torque(ts, [seen[t] for t in ts], LTE_LIMIT, design)
@@ -247,6 +250,10 @@ def coast_lte_torque(case: Case, basic: BasicDesign, coast: Any, cap: CoastCapac
         seen.update(zip(found[0], found[1], strict=True))
         if found[1][0] > LTE_LIMIT:  # the lowered light torque above the limit already
             break
+    if fe_why is None:
+        setup.pop("fe_level_why", None)
+    else:
+        setup["fe_level_why"] = fe_why
     say(f"development: the written coast LTE p-p {_curve(before)}, above {LTE_LIMIT:g} "
         f"urad: no coast design torque below {plain_number(design)} N m found where it "
         f"keeps it at every torque" + _why_not(tried, before, crossing, design, floor))
@@ -265,10 +272,12 @@ def _why_not(tried: list[str], before: tuple[tuple[float, ...], tuple[float, ...
     if before[1][0] > LTE_LIMIT:
         return " (its light torque's above it already)"
     if math.isfinite(crossing):
+        bound = (f"{TORQUE_CUT_FRACTION:g} of it" if floor <= TORQUE_CUT_FRACTION * design
+                 else "the drive's light torque")
         return (f" at or above {plain_number(floor)} N m: it keeps {LTE_LIMIT:g} urad up to "
                 f"{plain_number(crossing)} N m only, {crossing / design:.0%} of "
                 f"{plain_number(design)} N m, and a coast design torque is not cut below "
-                f"{TORQUE_CUT_FRACTION:g} of it for an LTE the verdict calls an attention; "
+                f"{bound} for an LTE the verdict calls an attention; "
                 "the coast flank cannot hold its LTE at its design torque on this bearing "
                 "(the contact ratio's remedy, if offered, is the lever)")
     return ""
