@@ -165,6 +165,7 @@ from contact.optimize.development_coast_light_edge import (
     coast_light_edge_after_peak,
     written_coast_light_edge_line,
 )
+from contact.optimize.development_coast_lte_torque import coast_lte_torque
 from contact.optimize.development_edge_peak import checked_edge_peak
 from contact.optimize.development_evaluate import (  # noqa: F401
     CHECK_LTCA,
@@ -791,6 +792,12 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
         coast, developed, case, report = _coast_edge_steps(
             (coast, developed, case, report), best, targets, setup, teeth, memo, say,
             coast_cap, basic, root_stress, write, rebuilt)
+        # the written coast bearing's LTE still above the verdict's limit over its torques
+        # after every coast step: the coast design torque no higher than where it keeps it
+        # (development_coast_lte_torque; the drive's written_lte_capacity on the coast)
+        coast, coast_cap = coast_lte_torque(case, basic, coast, coast_cap, best, targets,
+                                            setup, teeth, root_stress, say,
+                                            own_torque=bool(torque_name))
     coast_seconds += time.process_time() - c_cap
     # a root-limited torque decided on the default FE model: the case written names it
     # (ltca run reads the model the torque was decided with)

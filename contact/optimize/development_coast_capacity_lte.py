@@ -673,8 +673,10 @@ def coast_lte_within_capacity(developed: BasicDesign, drive: DevelopmentEvaluati
         # design torque lowered by coast_torque_that_holds to where its LTE keeps it. An
         # LTE between 60 and 120 urad is an attention the verdict says, not a reason to
         # cut the coast design torque (the 20x24 at Sigma 100 deg: 104 urad at 603.3 N m
-        # would cut it to 169.4, 28 % of the drive's). Nearest by its largest LTE over
-        # the range (its own torques' where not analysed between them)
+        # would cut it to 169.4, 28 % of the drive's; after every coast step
+        # development_coast_lte_torque lowers it for such an LTE, never below half of it).
+        # Nearest by its largest LTE over the range (its own torques' where not analysed
+        # between them)
         got = min(near, key=lambda e: _largest(e, over(e)))
         say(nearest_text(float(coast.torques[1]), _largest(got, over(got)), LTE_LIMIT))
     text = capacity_text(got, cap, float(coast.torques[1]), between=over(got))
