@@ -826,7 +826,7 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
                                given_root_text=given_root_text,
                                lte_torque=float(setup.get("lte_torque", math.nan)),
                                coast_lte_range=_coast_judged(setup, coast, best, teeth),
-                               hollow_further=further)
+                               hollow_further=further, memo=memo)
     log_reused(teeth, reused)
     say(result.headline())
     return result
