@@ -77,7 +77,8 @@ def _stand_in_checks(monkeypatch, measured, written=WRITTEN):
     monkeypatch.setattr(remedy_check, "unloaded_te_pp", lambda case: written)
     # the unloaded TE without the relief (one more synthesis where the written one exceeds
     # the limit): not measured here
-    monkeypatch.setattr(remedy_check, "unrelieved_te_pp", lambda basic: (math.nan, math.nan))
+    monkeypatch.setattr(remedy_check, "unrelieved_te_pp",
+                        lambda basic, memo=None: (math.nan, math.nan))
     return seen
 
 

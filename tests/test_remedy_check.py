@@ -641,7 +641,7 @@ def test_the_unrelieved_te_is_the_same_synthesis_without_the_drive_relief(monkey
     assert (got.flank(drive).tip_relief, got.flank(drive).root_relief) == (0.0, 0.0)
     assert got.flank(drive).path_angle == -1.0
     assert got.flank(coast) == basic.options.flank(coast)
-    assert seen["kw"] == {"tip_planes": False}
+    assert seen["kw"] == {"tip_planes": False, "memo": None}
 
     def failing(b, **kw):
         raise InputError("synthesis: no solution")

@@ -368,7 +368,10 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
         development of a basic design developed before in it reads back what that one
         computed with the same inputs. Default: new ones (the ``gear_fallback`` wrapper
         makes one for the developments it runs: the Formate gear developed in full after a
-        foreseen cut's stop repeats the stopped development's search and check).
+        foreseen cut's stop repeats the stopped development's search and check). The
+        drive developed again at a given design torque (its LTE window's) is handed it
+        too: its memo is seeded with the first development's syntheses but their tip
+        planes (:func:`~geometry.synthesis.case_synthesis.memo_at_torque`).
     stop_over_lte : bool, optional
         Default False. True (the drive developed again in its LTE window,
         :func:`~contact.optimize.development_written_lte.redeveloped_in_window`, which
@@ -601,10 +604,11 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
     # relief deeper, on the design as it is written (after the edge-peak step's relief;
     # development_hollow_target)
     best = checked_hollow_target(best, targets, setup, teeth, say, placed)
-    # the development of the same basic data at a given design torque (a torque window's)
+    # the development of the same basic data at a given design torque (a torque window's;
+    # its synthesis memo seeded with this one's syntheses: development_shared)
     rerun = functools.partial(_at_given_torque, basic, targets=targets, progress=progress,
                               synthesis_progress=synthesis_progress, root_stress=root_stress,
-                              outclassed_below=outclassed_below)
+                              outclassed_below=outclassed_below, shared=shared)
     # after the last drive step that can raise its LTE: the design torque no higher than
     # where the written bearing keeps the verdict's LTE limit at every torque, else the
     # drive developed again where it could (development_written_lte)
@@ -839,7 +843,7 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
                                given_root_text=given_root_text,
                                lte_torque=float(setup.get("lte_torque", math.nan)),
                                coast_lte_range=_coast_judged(setup, coast, best, teeth),
-                               hollow_further=further)
+                               hollow_further=further, memo=memo)
     log_reused(teeth, reused)
     say(result.headline())
     return result

@@ -221,7 +221,7 @@ def prescribed_basic(basic, case, development=None):
 
 
 def checked_record(prescribed, design, written: tuple[float, float] | None, limit: float,
-                   lte_met: bool = False):
+                   lte_met: bool = False, memo: dict | None = None):
     """Each change of :func:`ratio_changes` checked by one synthesis at the written
     prescriptions (:func:`~contact.optimize.remedy_check.check_change`).
 
@@ -240,6 +240,11 @@ def checked_record(prescribed, design, written: tuple[float, float] | None, limi
         Whether the written design's developed LTE p-p is within ``limit``
         (:func:`worst_lte`): a change whose check measures no lower unloaded TE is then
         no remedy (:func:`~contact.optimize.remedy_check.no_better`). Default False.
+    memo : dict, optional
+        The synthesis memo of the development that wrote the case
+        (:attr:`~contact.optimize.development_result.DevelopmentResult.memo`): the
+        measure without the relief reads the written flanks' steps 3–6 back from it
+        (:func:`~contact.optimize.remedy_check.unrelieved_te_pp`). Default None.
 
     Returns
     -------
@@ -256,7 +261,7 @@ def checked_record(prescribed, design, written: tuple[float, float] | None, limi
     if not changes:
         return None
     checks = tuple(check_change(prescribed, c) for c in changes)
-    unrelieved = (unrelieved_te_pp(prescribed)[0]
+    unrelieved = (unrelieved_te_pp(prescribed, memo)[0]
                   if written is not None and written[0] > limit else math.nan)
     return RemedyRecord(checks, *(written if written is not None else (math.nan,) * 2),
                         float(limit), unrelieved, bool(lte_met))
@@ -724,7 +729,8 @@ def developed_with_remedy(run: Callable[[Any], Any], basic,
         log.info("the written case's unloaded TE not measured: %s", exc)
         written = None
     record = checked_record(prescribed_basic(basic, first.case, first), basic.design,
-                            written, LTE_LIMIT, lte_within(first, LTE_LIMIT))
+                            written, LTE_LIMIT, lte_within(first, LTE_LIMIT),
+                            memo=getattr(first, "memo", None))
     chosen = chosen_check(record)
     if chosen is None:
         raise InputError(

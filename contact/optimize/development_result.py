@@ -281,6 +281,12 @@ class DevelopmentResult:
         (:func:`contact.optimize.development_hollow_further.checked_hollow_further`): its
         readings and the written case's load-sharing floor, which ``ltca synthesize``'s
         drive LTE line reuses; None where the development did not reach it.
+    memo : dict or None
+        The synthesis memo of the development that wrote the case
+        (:func:`geometry.synthesis.case_synthesis.synthesize`'s ``memo``): a later
+        synthesis of the written prescriptions reads its steps 3–6 back
+        (:func:`contact.optimize.remedy_check.unrelieved_te_pp`); None where not kept.
+        Not in the result's text.
     """
 
     basic: BasicDesign
@@ -318,6 +324,7 @@ class DevelopmentResult:
     given_root_text: str = ""
     lte_torque: float = math.nan
     hollow_further: Any = None
+    memo: dict | None = dataclasses.field(default=None, repr=False)
 
     @property
     def tolerant(self) -> bool:

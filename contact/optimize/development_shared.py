@@ -33,10 +33,12 @@ log_reused           the log line of the analyses a development read back
 
 from __future__ import annotations
 
+import dataclasses
 import logging
 from typing import Any
 
 from contact.optimize.development_evaluate import KeptTeeth
+from geometry.synthesis.case_synthesis import memo_at_torque, options_at_torque
 
 __all__ = ["SharedDevelopments", "kept_for", "log_reused"]
 
@@ -55,12 +57,19 @@ class SharedDevelopments:
     repeated : int
         How many of them were of a basic design developed before (its memo and teeth
         handed over again).
+    seeded : int
+        How many of them were of a basic design developed before at another design torque
+        only (a new memo holding that first development's syntheses but its tip planes,
+        :func:`~geometry.synthesis.case_synthesis.memo_at_torque`; new kept teeth).
     """
 
     def __init__(self) -> None:
         self._kept: dict[str, tuple[dict, KeptTeeth]] = {}
+        # the memo of the first development of each basic design whatever its design torque
+        self._first: dict[str, dict] = {}
         self.developments = 0
         self.repeated = 0
+        self.seeded = 0
 
     def kept(self, basic: Any) -> tuple[dict, KeptTeeth]:
         """The synthesis memo and kept teeth of ``basic``'s developments: those of an equal
@@ -84,10 +93,24 @@ class SharedDevelopments:
         if key in self._kept:
             self.repeated += 1
         else:
-            self._kept[key] = ({}, KeptTeeth())
+            # the same basic data developed before at another design torque (the drive
+            # developed again in its LTE window): its syntheses' steps 1-7 read back, not
+            # its tip planes (case_synthesis.memo_at_torque)
+            free = _torque_free(basic)
+            first = self._first.get(free)
+            memo = {} if first is None else memo_at_torque(first, basic.options.design_torque)
+            self.seeded += first is not None
+            self._first.setdefault(free, memo)
+            self._kept[key] = (memo, KeptTeeth())
         memo, teeth = self._kept[key]
         teeth.begin_development()  # its analyses counted anew: the n-th reads the n-th
         return memo, teeth
+
+
+def _torque_free(basic: Any) -> str:
+    """``repr`` of ``basic`` with no design torque of its own (every other field and float
+    as it is: :func:`~geometry.synthesis.case_synthesis.options_at_torque`)."""
+    return repr(dataclasses.replace(basic, options=options_at_torque(basic.options, None)))
 
 
 def kept_for(shared: SharedDevelopments | None, basic: Any) -> tuple[dict, KeptTeeth]:

@@ -51,11 +51,12 @@ blank_ute_text, unloaded_te_pp, refusal,
 no_better, ranked_changes, checked_remedy_text, ute_sets_lte, ute_lte_text, unrelieved_te_pp,
 relief_lte_text, RECORD_TABLE,
 RemedyRecord, remedy_record, read_record, recorded_judge, LteDiagnosis, RATIO_TRIAL_TEXT,
-lte_diagnosis, lowest_checked, ute_lowered_text
+lte_diagnosis, lowest_checked, ute_lowered_text, memo_options
 """
 
 from __future__ import annotations
 
+import copy
 import dataclasses
 import logging
 import math
@@ -68,10 +69,10 @@ from contact.optimize.development_conjugacy import VALID_NODE_FRACTION_MIN
 __all__ = ["BLANK_SHARE", "RATIO_TRIAL_TEXT", "RECORD_TABLE", "UTE_GROWTH_MAX",
            "UTE_KEPT_SHARE", "ChangeCheck", "LteDiagnosis", "RemedyRecord", "blank_lowers",
            "blank_ute_text", "check_change",
-           "checked_remedy_text", "lowest_checked", "lte_diagnosis", "no_better", "ranked_changes",
-           "read_record", "recorded_judge", "refusal", "relief_lte_text", "remedy_record",
-           "unloaded_te_pp", "unrelieved_te_pp", "ute_lowered_text", "ute_lte_text",
-           "ute_sets_lte"]
+           "checked_remedy_text", "lowest_checked", "lte_diagnosis", "memo_options", "no_better",
+           "ranked_changes", "read_record", "recorded_judge", "refusal", "relief_lte_text",
+           "remedy_record", "unloaded_te_pp", "unrelieved_te_pp", "ute_lowered_text",
+           "ute_lte_text", "ute_sets_lte"]
 
 log = logging.getLogger(__name__)
 
@@ -180,13 +181,18 @@ def check_change(basic, change) -> ChangeCheck:
     return ChangeCheck(change, ute, span, valid, "", time.process_time() - t0)
 
 
-def unrelieved_te_pp(basic) -> tuple[float, float]:
+def unrelieved_te_pp(basic, memo: dict | None = None) -> tuple[float, float]:
     """The written drive flank's unloaded TE p-p and ease-off without its profile relief.
 
     Parameters
     ----------
     basic : geometry.synthesis.basic_design.BasicDesign
         The basic data at the written case's prescriptions (as :func:`check_change`'s).
+    memo : dict, optional
+        The synthesis memo of the development that wrote the case
+        (:attr:`~contact.optimize.development_result.DevelopmentResult.memo`): the
+        synthesis reads the written flanks' steps 3–6 back from it (:func:`memo_options`)
+        instead of making them again. Default None: a synthesis of its own.
 
     Returns
     -------
@@ -196,7 +202,9 @@ def unrelieved_te_pp(basic) -> tuple[float, float]:
         ``tip_relief`` and ``root_relief`` 0 (steps 1-6 and the blade unchanged: the relief
         of step 7 lies beyond corners away from M); (NaN, NaN) where that synthesis or its
         measure has no solution (said in the log). One synthesis without tip-plane
-        placement, 5-8 s of CPU.
+        placement, 5-8 s of CPU; with the development's ``memo`` the relief alone (step
+        7; the FH hypoid 13x40 of benchmarks/data/unseen_designs: ≈ 2.5 s less, its two
+        flanks' face-hobbing tool solves read back).
 
     Notes
     -----
@@ -212,17 +220,82 @@ def unrelieved_te_pp(basic) -> tuple[float, float]:
     from geometry.core.errors import LTCAError
     from geometry.synthesis.case_synthesis import synthesize
 
-    opt = basic.options
+    opt = memo_options(basic, memo)
     drive = opt.drive_flank
-    plain = dataclasses.replace(opt.flank(drive), tip_relief=0.0, root_relief=0.0)
+    plain = _without_relief(opt.flank(drive))
     try:
         case = synthesize(dataclasses.replace(basic, options=dataclasses.replace(
-            opt, **{drive: plain})), tip_planes=False)[0]
+            opt, **{drive: plain})), tip_planes=False, memo=memo)[0]
         ute, span, _ = unloaded_te_pp(case)
     except (LTCAError, ValueError, ArithmeticError) as exc:
         log.info("the drive flank's unloaded TE without its relief not measured: %s", exc)
         return math.nan, math.nan
     return ute, span
+
+
+def _without_relief(flank):
+    """The flank options ``flank`` with ``tip_relief`` and ``root_relief`` 0 and every
+    other field the same float: not through ``dataclasses.replace``, whose validation
+    converts each field to its file unit and back (``te_level`` µrad → rad moves the last
+    bit: 4.4999999999999996e-05 → 4.499999999999999e-05), which the synthesis memo's keys
+    would read as another prescription."""
+    plain = copy.copy(flank)
+    object.__setattr__(plain, "tip_relief", 0.0)
+    object.__setattr__(plain, "root_relief", 0.0)
+    return plain
+
+
+def memo_options(basic, memo: dict | None):
+    """``basic``'s synthesis options as the development that holds ``memo`` synthesised
+    them, so that a synthesis of ``basic`` with ``memo`` reads that development's entries
+    back.
+
+    Parameters
+    ----------
+    basic : geometry.synthesis.basic_design.BasicDesign
+        The basic data at the written prescriptions (:func:`~contact.optimize.
+        development_remedy.prescribed_basic`: the gear process the written case's where
+        the file leaves it to ``"auto"``; the design torque as given).
+    memo : dict or None
+        A development's synthesis memo
+        (:attr:`~contact.optimize.development_result.DevelopmentResult.memo`).
+
+    Returns
+    -------
+    geometry.synthesis.basic_design.SynthesisOptions
+        ``basic.options`` with the ``gear_process`` and ``design_torque`` of the memo's
+        development where the memo decided the gear process for ``basic``'s design and
+        options equal but for those two and the pinion flanks' prescriptions, and the
+        process it decided is ``basic``'s (or ``basic``'s is ``"auto"``); else
+        ``basic.options`` unchanged (a synthesis with ``memo`` then computes its own
+        steps, as without it).
+
+    Notes
+    -----
+    Why this is the same synthesis: :func:`geometry.synthesis.case_synthesis.synthesize`
+    reads neither field but to choose the gear process, and the memo holds the process
+    it chose for that development (the written case's), so the options here make the
+    gear and flanks ``basic``'s own would. The memo's keys hold every other option, so
+    only the written development's own entries are read back: steps 3–6 of the written
+    flanks, which are the written case's (issue 71, cpu97's count on the FH hypoid 13x40:
+    its contact-ratio note synthesised them again, 2 repeats, 2.5 s).
+    """
+    from geometry.synthesis.basic_design import FlankOptions
+
+    opt = basic.options
+    if not memo:
+        return opt
+    bare = dataclasses.replace(opt, concave=FlankOptions(), convex=FlankOptions())
+    for key, decided in memo.items():
+        if not (isinstance(key, tuple) and len(key) == 3 and key[0] == "gear process"
+                and key[1] == basic.design):
+            continue
+        theirs = key[2]
+        if (opt.gear_process in ("auto", decided[0])
+                and dataclasses.replace(theirs, gear_process=opt.gear_process,
+                                        design_torque=opt.design_torque) == bare):
+            return dataclasses.replace(theirs, concave=opt.concave, convex=opt.convex)
+    return opt
 
 
 def no_better(check: ChangeCheck, reference_ute: float, lte_met: bool) -> bool:

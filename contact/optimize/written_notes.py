@@ -319,8 +319,11 @@ def _lte_notes(basic, case, development, ratios) -> tuple[list[str], object]:
         # the sentence said from those checks
         # a change its check measures no better is no remedy where the written LTE
         # is already within the limit (contact.optimize.remedy_check.no_better)
+        # (the measure without the relief reads the written flanks' steps 3-6 back from
+        # the development's synthesis memo: remedy_check.memo_options)
         record = checked_record(prescribed_basic_of(basic, case, development), basic.design,
-                                written, LTE_LIMIT, lte_within(development, LTE_LIMIT))
+                                written, LTE_LIMIT, lte_within(development, LTE_LIMIT),
+                                memo=getattr(development, "memo", None))
         checks = () if record is None else record.checks
         unrel = math.nan if record is None else record.unrelieved_ute
         said = low_ratio_text(basic.design, FACE_CONTACT_RATIO_NOTE,

@@ -80,10 +80,14 @@ pinion_generate_tools  pinion blade and settings that realise a shape operator a
 face_hobbing_pinion_tools  the same for a face-hobbed pinion (the gear's own tool as start)
 shift_roll_origin      the same generated flank, turned about the work axis
 synthesize             basic design → complete case (and report)
+memo_at_torque         a synthesis memo's steps 1–7 for the same basic data at another
+                       design torque (not its tip-plane placements)
+options_at_torque      synthesis options at another design torque, every other field kept
 """
 
 from __future__ import annotations
 
+import copy
 import logging
 import math
 from collections.abc import Callable
@@ -144,6 +148,8 @@ __all__ = [
     "FlankSynthesis",
     "SynthesisReport",
     "gear_processes",
+    "memo_at_torque",
+    "options_at_torque",
     "relief_for_profile",
     "synthesize",
     "third_order_rule",
@@ -502,6 +508,87 @@ def synthesize(basic: BasicDesign, *, conjugate: bool = False,
         if not hint or hint in str(err):
             raise
         raise InputError(f"{err}; {hint}") from err
+
+
+#: the first element of the memo keys of step 8 (:func:`_tip_on_root_cone`): a placement,
+#: the first placement of a blade side (the start of the next), a refused placement
+_TIP_PLANE_KEYS = ("tip plane", "tip plane first", "tip plane refused")
+
+
+def options_at_torque(options: Any, design_torque: float | None) -> Any:
+    """Synthesis options at another design torque, every other field the same object.
+
+    Parameters
+    ----------
+    options : geometry.synthesis.basic_design.SynthesisOptions
+    design_torque : float or None
+        [N·m] The design torque (``[synthesis] design_torque``; None: not given). Not
+        validated: a torque a development chose (:func:`memo_at_torque`).
+
+    Returns
+    -------
+    geometry.synthesis.basic_design.SynthesisOptions
+        A copy of ``options`` with ``design_torque``: not through ``dataclasses.replace``,
+        whose validation converts fields to their file units and back (the last bit of an
+        angle may move), which the memo's keys would read as other options.
+    """
+    out = copy.copy(options)
+    object.__setattr__(out, "design_torque", design_torque)
+    return out
+
+
+def memo_at_torque(memo: dict, design_torque: float | None) -> dict:
+    """A new :func:`synthesize` memo holding ``memo``'s entries re-keyed for the same basic
+    data at the design torque ``design_torque``, less its tip-plane placements (step 8).
+
+    Parameters
+    ----------
+    memo : dict
+        The memo of a series of syntheses of one basic design (a development's).
+    design_torque : float or None
+        [N·m] The design torque (``[synthesis] design_torque``) of the basic data the new
+        memo serves (a development of the same basic data at that torque: the drive
+        developed again in its LTE window).
+
+    Returns
+    -------
+    dict
+        Every entry of ``memo`` whose key holds the synthesis options under the key with
+        those options at ``design_torque``: the gear process decided, the blanks, the gear
+        flank's design point, steps 3–6 and the relief (step 7) of each pinion flank
+        synthesised, and each flank's tool series (:class:`~geometry.synthesis.pinion.
+        WarmTools`, copied: its anchor is the memo's first synthesis). Not the tip-plane
+        placements (step 8), whose start is the first placement in the memo: a development
+        places other designs first. ``memo`` is not changed.
+
+    Notes
+    -----
+    Why a synthesis with it is the one the new development would make with a memo of its
+    own: :func:`synthesize` reads the design torque nowhere (it is the development's), the
+    entries kept are each a function of their key's inputs and the series' anchor alone
+    (the module docstring of :func:`synthesize`'s ``memo``), and every development's first
+    synthesis is the start of its search, the same design whatever its torque — so the
+    anchor is the one the new development would set. The tip planes are left out because
+    their start is not such a function. Measured (issue 71, branch cpu99): the FH spiral
+    bevel 12x27 of benchmarks/data/unseen_designs developed in its LTE window at 45.5 and
+    26.2 N·m re-made 10 of its rated development's steps 3–6 (5.4 s of CPU); the 17x23's
+    17 (2.7 s, cpu97).
+    """
+    def rekeyed(key: Any) -> Any:
+        if isinstance(key, tuple):
+            return tuple(rekeyed(k) for k in key)
+        if type(key).__name__ == "SynthesisOptions":
+            return options_at_torque(key, design_torque)
+        return key
+
+    out: dict = {}
+    for key, value in memo.items():
+        if isinstance(value, dict):  # one design's entries (_synthesize's ``kept``)
+            value = {k: (copy.deepcopy(v) if isinstance(v, WarmTools) else v)
+                     for k, v in value.items()
+                     if not (isinstance(k, tuple) and k and k[0] in _TIP_PLANE_KEYS)}
+        out[rekeyed(key)] = value
+    return out
 
 
 def _synthesize_tried(basic: BasicDesign, *, progress: Callable[[str], None] | None = None,
