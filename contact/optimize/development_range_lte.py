@@ -28,7 +28,8 @@ over the range keeps the limit, as the long bearing buys the LTE with it). The r
 Public names
 ------------
 RANGE_KEY, STAGE, ELLIPSE_STEPS, SAME_PEAK, range_lte, range_peak, range_better,
-peak_better, range_curve, range_lost, range_record, recorded_range, checked_range_lte
+peak_better, range_curve, range_ellipse_bounds, range_lost, range_record, recorded_range,
+checked_range_lte
 """
 
 from __future__ import annotations
@@ -52,7 +53,7 @@ from contact.optimize.development_keep import (
 from contact.optimize.development_lte_steps import ELLIPSE_STEP
 from contact.optimize.development_matched_te import lte_ends
 from contact.optimize.development_result import DevelopmentEvaluation
-from contact.optimize.development_targets import DevelopmentTargets
+from contact.optimize.development_targets import VARIABLES, DevelopmentTargets
 from contact.optimize.development_variant import said_variant
 from geometry.case import Case
 from geometry.core.errors import raise_if_interrupted
@@ -60,7 +61,8 @@ from geometry.core.text import plain_number
 
 __all__ = ["ELLIPSE_STEPS", "RANGE_KEY", "SAME_PEAK", "STAGE", "acts_between",
            "checked_range_lte", "kept_range_said", "peak_better", "range_better",
-           "range_curve", "range_lost", "range_lte", "range_peak", "range_record",
+           "range_curve", "range_ellipse_bounds", "range_lost", "range_lte", "range_peak",
+           "range_record",
            "recorded_range"]
 
 log = logging.getLogger("contact.optimize.development")
@@ -565,15 +567,16 @@ def _longer_ellipse(start: DevelopmentEvaluation, targets: DevelopmentTargets,
                     ) -> DevelopmentEvaluation:
     """:func:`checked_range_lte`'s second lever: the ellipse longer by each of
     :data:`ELLIPSE_STEPS` × :data:`~contact.optimize.development_lte_steps.ELLIPSE_STEP` in
-    turn from ``start``'s (clipped to its bound), until the LTE over the range keeps
-    ``limit``; each kept by the check's one rule with ``better`` judged on the LTE over the
-    range (:func:`range_better`) and, where its LTE over the range keeps the limit, the
+    turn from ``start``'s (clipped to :func:`range_ellipse_bounds`: up to 0.85 where the
+    bounds are the defaults), until the LTE over the range keeps ``limit``; each kept by
+    the check's one rule with ``better`` judged on the LTE over the range
+    (:func:`range_better`) and, where its LTE over the range keeps the limit, the
     pattern's length may be given up (:func:`~contact.optimize.development_keep.
     lost_but_length`, as the long bearing buys the LTE with it), else no met target
     (:func:`~contact.optimize.development_keep.lost_targets`)."""
     if ("ellipse_length" not in targets.variables or "ellipse_length" not in start.values):
         return start
-    lo, hi = (float(x) for x in targets.variables["ellipse_length"])
+    lo, hi = range_ellipse_bounds(targets)
     now = float(start.values["ellipse_length"])
     better = range_better(setup, teeth, limit)
     lost = range_lost(setup, teeth, limit)
@@ -598,6 +601,53 @@ def _longer_ellipse(start: DevelopmentEvaluation, targets: DevelopmentTargets,
         if range_peak(range_lte(best, setup, teeth))[0] <= limit:
             break
     return best
+
+
+def range_ellipse_bounds(targets: DevelopmentTargets) -> tuple[float, float]:
+    """[1 of the face] The bounds of ``ellipse_length`` :func:`checked_range_lte`'s longer
+    ellipse steps within: ``targets.variables``' own, the upper one raised to
+    :data:`~contact.optimize.development_pattern_steps.LENGTH_ELLIPSE_MAX` (0.85) where
+    those are the defaults of :data:`~contact.optimize.development_targets.VARIABLES`
+    (upper 0.75), as the check's length step takes a pattern too short
+    (:func:`~contact.optimize.development_pattern_steps.length_bound`).
+
+    Parameters
+    ----------
+    targets : DevelopmentTargets
+        Its ``variables`` name ``ellipse_length``.
+
+    Returns
+    -------
+    (low, high) : (float, float) — [1, fraction of the face width]
+
+    Raises
+    ------
+    KeyError
+        ``ellipse_length`` not among ``targets.variables``.
+
+    Notes
+    -----
+    Why: the default bound 0.75 is where a face-milled pinion's light-load pattern grows
+    past the length band (0.9 of the face per unit of ellipse); the step gives up the
+    length only for a design whose LTE over the range keeps the verdict's limit
+    (:func:`range_lost`), so beyond that bound it buys the limit with the length alone.
+    Measured on the FM spiral bevel 24x29 at Σ 105° of benchmarks/data/unseen_designs at
+    its ISO capacity 503 N·m (issue 71, branch window99; ``benchmarks/
+    development_levers.py --check --at --from-case`` of its written case, path −80° at
+    its bound): the ellipse 0.75 / 0.85: LTE p-p 17 / 45 / 57 / 67 / 66 / 61 / 55 / 51 and
+    18 / 42 / 51 / 53 / 52 / 48 / 45 / 41 µrad at 75.4 / 146.7 / 182.3 / 217.9 / 289.2 /
+    360.5 / 431.8 / 503 N·m, pattern 0.58 / 0.62 long; with the bound 0.75 the step tried
+    nothing and the design torque was cut to 191.6 N·m by the LTE window. Bounds given in
+    ``[development] variables`` are used as given. Source: issue 71 ("LTE p-p ≤ 60 µrad at
+    every torque").
+    """
+    from contact.optimize.development_pattern_steps import LENGTH_ELLIPSE_MAX
+
+    name = "ellipse_length"
+    lo, hi = (float(x) for x in targets.variables[name])
+    if (lo, hi) == tuple(float(x) for x in VARIABLES[name]):
+        hi = max(hi, LENGTH_ELLIPSE_MAX)
+    return lo, hi
 
 
 def checked_range_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
