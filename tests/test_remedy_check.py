@@ -775,6 +775,45 @@ def test_an_offer_says_its_design_torque_is_not_checked_where_apply_remedy_refus
     assert torque_given_up(given, remedied, False) == ""  # no clause: nothing refused
 
 
+def test_an_offer_to_a_design_meeting_every_drive_target_says_apply_remedy_refuses_a_cut():
+    """Issue 71, round 38: the FH hypoid 5x39 (eps_va 0.92) met every drive target at LTE
+    p-p 3 / 11 urad and its note offered alpha_dD 17.4 deg (checked 10 against the written
+    17 urad unloaded), saying `--apply-remedy` "refuses it then, unless it meets the drive
+    targets the design misses at 0.909 of its design torque or more" - it misses none, and
+    then no lower torque is kept at all (targets_bought is false: nothing to buy). The
+    identity checked: with ``targets_met`` the clause names no missed targets and no floor,
+    and --apply-remedy refuses a remedied torque even at 0.95 of the given one (above the
+    floor, nothing bought: torque_given_up's LTE refusal); without it the round-34 clause
+    is unchanged, and recorded_judge passes it on."""
+    from types import SimpleNamespace
+
+    from contact.optimize.development_remedy import below_floor, targets_bought
+    from contact.optimize.remedy_check import RemedyRecord, recorded_judge
+
+    one = [_check(ALPHA, 10.0, 37.0)]
+    met = checked_remedy_text(one, 1.0, "none", 17.0, 60.0, lte_met=True, targets_met=True)
+    assert ("ease-off 37 um) reaches 1, not checked for the design torque: its development "
+            "may lower the design torque (`ltca synthesize --apply-remedy` develops it and "
+            "refuses it then: the design as given meets every drive target, so no lower "
+            "design torque buys one) (each change checked") in met
+    assert "the design misses" not in met and "0.909" not in met
+    missed = checked_remedy_text(one, 1.0, "none", 17.0, 60.0, lte_met=True)
+    assert "unless it meets the drive targets the design misses at 0.909 of its" in missed
+    # the LTE above the limit: no torque clause either way
+    assert "checked for the design torque" not in checked_remedy_text(
+        one, 1.0, "none", 17.0, 60.0, targets_met=True)
+    # what --apply-remedy does with such a design: any lower torque refused, 0.95 too
+    every = SimpleNamespace(torque=(16.9, 112.8), best=SimpleNamespace(full=(0.1, "", True)))
+    cut = SimpleNamespace(torque=(16.0, 0.95 * 112.8), best=SimpleNamespace(
+        full=(0.1, "", True)))
+    # above the floor, but nothing bought: torque_given_up's refusal ("would give up load
+    # for an LTE the design has"), not its floor
+    assert not targets_bought(every, cut) and not below_floor(every, cut)
+    record = RemedyRecord(tuple(one), 17.0, 37.0, 60.0, math.nan, True)
+    assert recorded_judge(record, True)([ALPHA], 1.0, "none") == met
+    assert recorded_judge(record)([ALPHA], 1.0, "none") == missed
+
+
 def test_a_change_far_from_conjugate_is_said_so_not_compared_by_its_te():
     """Round 32 of issue 71: the FM spiral bevel 19x33 at Sigma 78 deg (eps_vb 1.23, its
     developed LTE within 60 urad, written unloaded TE 25 urad). Its b2 34.6 mm checked at

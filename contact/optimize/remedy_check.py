@@ -428,7 +428,8 @@ def _measured(c: ChangeCheck, reference_ute: float) -> str:
 
 
 def checked_remedy_text(checks: Sequence[ChangeCheck], target: float, none: str,
-                        reference_ute: float, limit: float, lte_met: bool = False) -> str:
+                        reference_ute: float, limit: float, lte_met: bool = False,
+                        targets_met: bool = False) -> str:
     """The end of the note's remedy sentence from checked remedies: those that pass, best
     first, each with its numbers, and each refused one with why.
 
@@ -446,6 +447,14 @@ def checked_remedy_text(checks: Sequence[ChangeCheck], target: float, none: str,
     lte_met : bool, optional
         As :func:`refusal` (default False): a change no better than the written design
         is said in one clause, "not a remedy here: <change> (<numbers>)".
+    targets_met : bool, optional
+        Whether the written design meets every drive development target
+        (:func:`~contact.optimize.development_remedy.every_drive_target`; default False).
+        Where it does (and ``lte_met``), ``--apply-remedy`` refuses any lower design torque
+        (:func:`~contact.optimize.development_remedy.targets_bought` is false: no target
+        left to buy), and the sentence says so instead of "the drive targets the design
+        misses" and the floor, which do not apply (issue 71, round 38: the FH hypoid 5×39,
+        every drive target met at LTE p-p 3 / 11 µrad, ε_vα 0.92).
 
     Returns
     -------
@@ -496,11 +505,14 @@ def checked_remedy_text(checks: Sequence[ChangeCheck], target: float, none: str,
             # (development_remedy.torque_given_up), which no synthesis here reads
             from contact.optimize.development_remedy import REMEDY_TORQUE_FLOOR
 
+            refused_when = (": the design as given meets every drive target, so no lower "
+                            "design torque buys one)" if targets_met else
+                            ", unless it meets the drive targets the design misses at "
+                            f"{REMEDY_TORQUE_FLOOR:.3f} of its design torque or more)")
             out += (f", {'not' if len(passed) == 1 else 'none'} checked for the design "
                     "torque: its development may lower the design torque "
-                    "(`ltca synthesize --apply-remedy` develops it and refuses it then, "
-                    "unless it meets the drive targets the design misses at "
-                    f"{REMEDY_TORQUE_FLOOR:.3f} of its design torque or more)")
+                    "(`ltca synthesize --apply-remedy` develops it and refuses it then"
+                    + refused_when)
     elif idle:
         out = (f"no change that reaches {target:g} checks better than the written design, "
                f"whose LTE p-p is within {limit:g} urad")
@@ -940,7 +952,7 @@ def read_record(extra) -> RemedyRecord | None:
         return None
 
 
-def recorded_judge(record: RemedyRecord):
+def recorded_judge(record: RemedyRecord, targets_met: bool = False):
     """The judge (:func:`contact.load_capacity.iso10300.face_contact.low_ratio_text`'s
     ``judge``) that says each remedy as the checks ``record`` holds say it: the same
     sentence ``ltca synthesize``'s note printed (:func:`checked_remedy_text`), refused
@@ -951,6 +963,9 @@ def recorded_judge(record: RemedyRecord):
     Parameters
     ----------
     record : RemedyRecord
+    targets_met : bool, optional
+        Whether the written design meets every drive development target (as
+        :func:`checked_remedy_text`; default False: ``ltca run`` reads no development).
 
     Returns
     -------
@@ -963,7 +978,7 @@ def recorded_judge(record: RemedyRecord):
                 if _RATIO_OF.get(c.change.field, c.change.field) in ratios]
         if mine:
             return checked_remedy_text(mine, target, none, record.reference_ute,
-                                       record.limit, record.lte_met)
+                                       record.limit, record.lte_met, targets_met)
         ways = [c.text for c in changes]
         return (" or ".join(ways) + (", the other kept," if len(ways) > 1 else "")
                 + f" reaches {target:g} (not checked by a synthesis: the case records no "

@@ -310,7 +310,11 @@ def _lte_notes(basic, case, development, ratios) -> tuple[list[str], object]:
         # where it is what the LTE is, named instead of the contact ratios
         from contact.load_capacity.iso10300.face_contact import low_ratio_text
         from contact.optimize.development_conjugacy import teeth_checker
-        from contact.optimize.development_remedy import checked_record, lte_within
+        from contact.optimize.development_remedy import (
+            checked_record,
+            every_drive_target,
+            lte_within,
+        )
         from contact.optimize.remedy_check import recorded_judge
         from contact.study.verdicts import LTE_LIMIT
 
@@ -328,7 +332,9 @@ def _lte_notes(basic, case, development, ratios) -> tuple[list[str], object]:
         unrel = math.nan if record is None else record.unrelieved_ute
         said = low_ratio_text(basic.design, FACE_CONTACT_RATIO_NOTE,
                               PROFILE_CONTACT_RATIO_NOTE,
-                              judge=None if record is None else recorded_judge(record),
+                              judge=None if record is None else recorded_judge(
+                                  record, development is not None
+                                  and every_drive_target(development)),
                               teeth_check=teeth_checker(basic))
         lines.append((said if said is not None else
                       f"contact ratios eps_va {ratios[0]:.2f}, eps_vb {ratios[1]:.2f}: "
