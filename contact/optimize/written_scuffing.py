@@ -232,15 +232,16 @@ def coast_design_torque(case, torque: float) -> float:
 
 
 def _finite(**values: float) -> dict[str, float]:
-    """The finite ones of ``values`` (TOML has no NaN: a value not computed is left out,
-    as the ``[development]`` table leaves out ``tolerant_up_to_Nm``)."""
-    return {k: float(v) for k, v in values.items() if math.isfinite(float(v))}
+    """The finite ones of ``values`` to 4 decimals, as the ``[development]`` table's
+    ``root_safety_fe`` (TOML has no NaN: a value not computed is left out, as that table
+    leaves out ``tolerant_up_to_Nm``)."""
+    return {k: round(float(v), 4) for k, v in values.items() if math.isfinite(float(v))}
 
 
 def scuffing_table(found: dict[str, DesignScuffing | str | None]) -> dict:
     """The ``[development.scuffing]`` table recording the check in the written case:
-    per flank its design torque, S_B, the conditions and, where S_B is below the
-    verdict's minimum, the remedy's conditions and S_B; TOML-safe (a value not computed
+    per flank its design torque, S_B (to 4 decimals), the conditions and, where S_B is
+    below the verdict's minimum, the remedy's conditions and S_B; TOML-safe (a value not computed
     left out, a flank not checked with its reason).
 
     Parameters
@@ -284,7 +285,7 @@ def scuffing_table(found: dict[str, DesignScuffing | str | None]) -> dict:
             row["remedy"] = {
                 "oil_inlet_temperature_degC": float(one.temperature - REMEDY_COOLER),
                 "roughness_rq_um": float(one.roughness / REMEDY_SMOOTHER),
-                "safety": float(one.remedy_safety)}
+                **_finite(safety=one.remedy_safety)}
         out[flank] = row
     return out
 
