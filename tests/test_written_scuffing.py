@@ -223,7 +223,8 @@ def test_both_flanks_are_checked_and_recorded(monkeypatch):
     assert made.case.extra["development"]["torque_Nm"] == [75.0, 500.0]  # kept
 
     def failing(case, torque, flank="drive"):
-        raise LTCAError("no contact found")
+        # the coast flank's unloaded contact may fail with a plain ValueError
+        raise (LTCAError if flank == "drive" else ValueError)("no contact found")
 
     monkeypatch.setattr(ws, "design_scuffing", failing)
     made = ws.checked_scuffing(case, 500.0)

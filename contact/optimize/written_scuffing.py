@@ -297,7 +297,9 @@ def _checked(case, torque: float, flank: str) -> DesignScuffing | str | None:
 
     try:
         return design_scuffing(case, torque, flank)
-    except (LTCAError, ArithmeticError, RuntimeError) as exc:
+    # ValueError: a coast flank whose unloaded contact cannot be computed (written_contact
+    # notes it and writes the case) fails as its analysis does there
+    except (LTCAError, ValueError, ArithmeticError, RuntimeError) as exc:
         logger.info("scuffing of the %s flank not checked at %g N m: %s", flank, torque, exc)
         return str(exc)
 
