@@ -11,7 +11,7 @@ temperature and roughness, and FAILs below 1. Round 37's FM truck hypoid 8×45 (
 
 :func:`design_scuffing` runs the same analysis steps ``ltca run`` runs for S_B (LTCA,
 efficiency, scuffing; no root stress, rating or LTE range, which S_B does not read) at the
-design torque on the drive flank, and, where S_B is below the verdict's minimum, the
+design torque of a flank (drive or coast), and, where S_B is below the verdict's minimum, the
 verdict's own example remedy (the oil inlet 20 K cooler, the flanks half as rough) on the
 same LTCA. :func:`scuffing_note` says it. The design torque is **not** lowered for it:
 S_B depends on what the operation chooses (oil, its scuffing temperature, inlet
