@@ -142,7 +142,8 @@ def _stand_in_checks(monkeypatch):
 
     monkeypatch.setattr(remedy_check, "check_change", check)
     monkeypatch.setattr(remedy_check, "unloaded_te_pp", lambda case: (73.0, 89.0, 0.7))
-    monkeypatch.setattr(remedy_check, "unrelieved_te_pp", lambda basic: (float("nan"),) * 2)
+    monkeypatch.setattr(remedy_check, "unrelieved_te_pp",
+                        lambda basic, memo=None: (float("nan"),) * 2)
 
 
 @pytest.mark.parametrize("coast, refused", [

@@ -59,7 +59,8 @@ def _stand_ins(monkeypatch) -> list:
     monkeypatch.setattr(dev, "develop", develop)
     monkeypatch.setattr(remedy_check, "check_change", check)
     monkeypatch.setattr(remedy_check, "unloaded_te_pp", lambda case: WRITTEN)
-    monkeypatch.setattr(remedy_check, "unrelieved_te_pp", lambda basic: (math.nan, math.nan))
+    monkeypatch.setattr(remedy_check, "unrelieved_te_pp",
+                        lambda basic, memo=None: (math.nan, math.nan))
     found = development_deflection.DeflectionLTE((91.8, 350.0, 612.4), (86.0, 90.0, 93.0),
                                                  (150.0, 400.0, 600.0), 60.0)
     monkeypatch.setattr(development_deflection, "analysed", lambda *a, **k: found)

@@ -468,8 +468,11 @@ class DevelopmentResult:
             Also check the contact-ratio remedies where a contact ratio is below its
             limit and record them in the case's
             :data:`~contact.optimize.remedy_check.RECORD_TABLE` table, which ``ltca run``'s
-            next step reads: the case ``ltca synthesize`` writes (one synthesis for each
-            remedy checked). Default False: the case without it, as before
+            next step reads, and each flank's scuffing safety at its design torque in
+            ``[development.scuffing]``
+            (:func:`contact.optimize.written_scuffing.checked_scuffing`): the case ``ltca
+            synthesize`` writes (one synthesis for each remedy checked, two LTCAs at one
+            torque each). Default False: the case without it, as before
             (issue 71, branch api88). The command's lines and notes:
             :func:`contact.optimize.synthesized_case.synthesize_case`.
 
@@ -480,12 +483,14 @@ class DevelopmentResult:
         """
         from contact.optimize.development_written import written_case
 
-        case = written_case(self, design_torque).case
+        written = written_case(self, design_torque)
+        case = written.case
         if not noted:
             return case
         from contact.optimize.written_notes import noted_case
+        from contact.optimize.written_scuffing import checked_scuffing
 
-        return noted_case(self.basic, case, self)[0]
+        return checked_scuffing(noted_case(self.basic, case, self)[0], written.torque).case
 
     def with_coast_capacity(self, case: Case) -> tuple[Case, float]:
         """``case`` with ``[rating] coast_design_torque`` lowered to

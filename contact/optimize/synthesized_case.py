@@ -50,6 +50,17 @@ class SynthesizedCase:
         The development (None with ``development=False``).
     basic : geometry.synthesis.basic_design.BasicDesign
         The basic data written: the remedied where a remedy was applied.
+    scuffing : dict
+        After a development, per flank (``"drive"``, ``"coast"``) the LTCA's scuffing
+        safety at its design torque and the case's operation
+        (:class:`contact.optimize.written_scuffing.DesignScuffing`: ``.safety`` S_B [1],
+        ``.torque`` [N·m], ``.remedy_safety``), None (pinion speed 0: no S_B) or the
+        text of what stopped its analysis; empty without a development. The case records
+        it in ``[development.scuffing]``.
+    scuffing_notes : tuple of str
+        The scuffing lines in :attr:`head` (without their "note: "): one per flank whose
+        S_B is below the verdict's minimum (``ltca run`` of the case FAILs on it) or
+        whose check failed; empty otherwise.
     """
 
     case: Case
@@ -58,6 +69,8 @@ class SynthesizedCase:
     notes: tuple[str, ...]
     development: Any
     basic: Any
+    scuffing: dict = dataclasses.field(default_factory=dict)
+    scuffing_notes: tuple[str, ...] = ()
 
     def lines(self, path: str | os.PathLike[str] | None = None) -> list[str]:
         """The lines ``ltca synthesize`` prints on standard output: :attr:`head`,
@@ -158,10 +171,13 @@ def synthesize_case(basic, *, fe_level: str | None = None, development: bool = T
     -----
     Source: ``ltca synthesize`` (issue 71, round 28 of docs/own_gear_set.md: the API's
     ``written_case()`` lacked the remedies' record and the notes); docs/api.md. After a
-    development the written case's scuffing safety at its design torque and operation is
-    computed as ``ltca run`` computes it, and said under the development's line where
-    ``ltca run`` would FAIL on it (:mod:`contact.optimize.written_scuffing`; one more LTCA,
-    ~2 s of CPU; docs/synthesis.md, "Scuffing at the design torque").
+    development each flank's scuffing safety at its design torque (the coast flank's
+    ``[rating] coast_design_torque`` where it is lower) and the case's operation is
+    computed as ``ltca run`` (``--flank coast``) computes it, recorded in the case's
+    ``[development.scuffing]`` table and :attr:`SynthesizedCase.scuffing`, and said under
+    the development's line, one line per flank, where ``ltca run`` would FAIL on it
+    (:attr:`SynthesizedCase.scuffing_notes`; :mod:`contact.optimize.written_scuffing`; two
+    more LTCAs at one torque each; docs/synthesis.md, "Scuffing at the design torque").
     """
     import tomllib
 
@@ -234,22 +250,28 @@ def synthesize_case(basic, *, fe_level: str | None = None, development: bool = T
     coast = checked_contact(case, basic.design, basic)
     case, ratios, notes, record = noted_case(basic, case, found)
     notes += coast + fe_level_notes(found, case)
+    scuffing = None
+    if found is not None:
+        # the development's "every target met" is the bearing's: each flank's scuffing
+        # safety at its design torque as `ltca run` (--flank coast) computes it, recorded
+        # in the [development] table and said under the development's line where `ltca
+        # run` of the written case FAILs on it (issue 71, branches scuff99, scuff100)
+        scuffing = _scuffing(case, torque)
+        case = scuffing.case
     text = header_text(shown, case.gear.process) + case.to_toml()
     # the written text must load back to the same case
     case_from_dict(tomllib.loads(text))
     head = [*first_lines(basic, found, record, shown),
             *_summary_lines(case, report, basic, found, targets, raised,
                             (torque, torque_why, coast_torque, coast_why), ratios)]
-    if found is not None:
-        # the development's "every target met" is the bearing's: where `ltca run` of the
-        # written case FAILs on scuffing at the design torque, said under it (issue 71)
-        scuffing = _scuffing_line(case, torque)
-        if scuffing is not None:
-            at = next((i + 1 for i, line in enumerate(head)
-                       if line.startswith("  development:")), len(head))
-            head.insert(at, "note: " + scuffing)
+    if scuffing is not None and scuffing.lines:
+        at = next((i + 1 for i, line in enumerate(head)
+                   if line.startswith("  development:")), len(head))
+        head[at:at] = ["note: " + line for line in scuffing.lines]
     return SynthesizedCase(case, text, tuple(head),
-                           tuple(_note_lines(basic, report, notes, shown)), found, basic)
+                           tuple(_note_lines(basic, report, notes, shown)), found, basic,
+                           {} if scuffing is None else dict(scuffing.found),
+                           () if scuffing is None else scuffing.lines)
 
 
 def _summary_lines(case, report, basic, found, targets, raised, torques,
@@ -309,20 +331,12 @@ def _summary_lines(case, report, basic, found, targets, raised, torques,
     return out
 
 
-def _scuffing_line(case, torque: float) -> str | None:
-    """The scuffing note of the written case at its design torque
-    (:func:`contact.optimize.written_scuffing.scuffing_note`), or what stopped its
-    analysis; None where S_B is not below the verdict's minimum or there is no torque."""
-    from contact.optimize.written_scuffing import design_scuffing, scuffing_note
-    from geometry.core.errors import LTCAError
+def _scuffing(case, torque: float):
+    """Both flanks' scuffing check of the written case, recorded in it
+    (:func:`contact.optimize.written_scuffing.checked_scuffing`)."""
+    from contact.optimize.written_scuffing import checked_scuffing
 
-    if not math.isfinite(torque) or torque <= 0.0:
-        return None
-    try:
-        return scuffing_note(design_scuffing(case, torque))
-    except (LTCAError, ArithmeticError, RuntimeError) as exc:  # said, not hidden
-        return (f"scuffing not checked at the design torque {plain_number(torque)} N m: "
-                f"{exc} (`ltca run` of the case judges it)")
+    return checked_scuffing(case, torque)
 
 
 def _note_lines(basic, report, notes: list[str], shown: str) -> list[str]:
