@@ -39,7 +39,7 @@ re-developed bearing's own root-stress and local pitting capacity hold at that t
 Public names
 ------------
 written_lte_capacity, lowered_torque, lte_window, redeveloped_in_window, window_name,
-window_missed, WindowMissed, judged_where
+window_missed, WindowMissed, judged_where, WINDOW_STRAIGHT_TO_MIDDLE
 """
 
 from __future__ import annotations
@@ -66,9 +66,9 @@ from contact.study.lte_within import within_torque
 from geometry.core.errors import raise_if_interrupted
 from geometry.core.text import plain_number
 
-__all__ = ["WindowMissed", "given_torque_of", "judged_where", "lowered_torque", "lte_window",
-           "redeveloped_in_window",
-           "window_missed", "window_name", "written_lte_capacity"]
+__all__ = ["WINDOW_STRAIGHT_TO_MIDDLE", "WindowMissed", "given_torque_of", "judged_where",
+           "lowered_torque", "lte_window", "redeveloped_in_window", "window_missed",
+           "window_name", "written_lte_capacity"]
 
 log = logging.getLogger("contact.optimize.development")
 
@@ -335,7 +335,8 @@ def _below_fail_level(best: DevelopmentEvaluation, targets: DevelopmentTargets,
 
 
 def redeveloped_in_window(run: Callable[..., Any], setup: dict[str, Any], basic: Any,
-                          say: Callable[[str], None], middle: bool = False) -> Any:
+                          say: Callable[[str], None], middle: bool = False,
+                          straight: bool | None = None) -> Any:
     """The drive development run again at the upper end of the torque window its written
     bearing kept the verdict's LTE limit in (:func:`written_lte_capacity` records it where
     no lowered torque kept it with that bearing), kept where its own written design keeps
@@ -363,6 +364,13 @@ def redeveloped_in_window(run: Callable[..., Any], setup: dict[str, Any], basic:
         :data:`WINDOW_LOWER_STEPS` times, each below the last one missed and only where
         it is at least :data:`WINDOW_LOWER_STEP` × lower; ``run`` is then given
         ``torque_name`` (:func:`window_name` with ``middle``).
+    straight : bool or None, optional
+        With ``middle`` only: True develops the drive first at the window's geometric
+        middle ``floor_torque(√(low · floor_torque(high)))``, not at its upper end (then
+        at the middles below it as above, at most :data:`WINDOW_LOWER_STEPS`
+        developments in all); where that middle is within :data:`WINDOW_LOWER_STEP` of
+        the upper end, at the upper end as with False. Default None:
+        :data:`WINDOW_STRAIGHT_TO_MIDDLE`.
 
     Returns
     -------
@@ -413,6 +421,11 @@ def redeveloped_in_window(run: Callable[..., Any], setup: dict[str, Any], basic:
     limit = verdict_lte_limit()
     torque = floor_torque(high)
     design = float(setup["torques"][1])
+    if straight is None:
+        straight = WINDOW_STRAIGHT_TO_MIDDLE
+    first = floor_torque(math.sqrt(low * torque)) if middle and straight else math.nan
+    if math.isfinite(first) and first * WINDOW_LOWER_STEP <= torque:
+        return _straight_to_middle(run, setup, basic, say, first)
     say(f"development: the written drive bearing keeps {limit:g} urad from about "
         f"{plain_number(round(low, 1))} to {plain_number(round(high, 1))} N m only; the drive "
         f"developed again at {plain_number(torque)} N m")
@@ -443,6 +456,58 @@ def redeveloped_in_window(run: Callable[..., Any], setup: dict[str, Any], basic:
             f"{'; '.join(misses)}, so at the window's geometric middle below it; ")
         torque = lower
     return kept
+
+
+def _straight_to_middle(run: Callable[..., Any], setup: dict[str, Any], basic: Any,
+                        say: Callable[[str], None], first: float) -> Any:
+    """:func:`redeveloped_in_window` with ``straight``: the drive developed at the window's
+    geometric middle ``first`` [N·m] below its upper end (not developed), then, where its
+    bearing breaks the limit, at the middle below the last torque missed, at most
+    :data:`WINDOW_LOWER_STEPS` developments in all. Returns what
+    :func:`redeveloped_in_window` returns."""
+    low, high, _ = setup["lte_window"]
+    limit = verdict_lte_limit()
+    upper = floor_torque(high)
+    design = float(setup["torques"][1])
+    say(f"development: the written drive bearing keeps {limit:g} urad from about "
+        f"{plain_number(round(low, 1))} to {plain_number(round(high, 1))} N m only; the drive "
+        f"developed again at {plain_number(first)} N m, the window's geometric middle below "
+        f"its upper end {plain_number(upper)} N m (the upper end not developed)")
+    kept, missed = _window_try(
+        run, first, setup, basic, say,
+        {"torque_name": window_name(setup, middle=(upper, ""))},
+        f"straight at the window's geometric middle below its upper end "
+        f"{plain_number(upper)} N m (not developed); ")
+    torque = first
+    misses: list[str] = []
+    for _ in range(WINDOW_LOWER_STEPS - 1):
+        if kept is not None or not missed:
+            return kept
+        misses.append(f"at {plain_number(torque)} N m {missed}")
+        lower = floor_torque(math.sqrt(low * torque))
+        if not (math.isfinite(lower) and lower * WINDOW_LOWER_STEP <= torque):
+            say(f"development: the design torque kept at {plain_number(design)} N m (the "
+                f"window's middle {plain_number(lower)} N m below {plain_number(torque)} N m "
+                "too close to it to develop a bearing of its own)")
+            return None
+        say(f"development: the drive developed again at {plain_number(lower)} N m, the "
+            f"geometric middle of {plain_number(round(low, 1))}-{plain_number(torque)} N m "
+            f"(at {plain_number(torque)} N m {missed})")
+        kept, missed = _window_try(
+            run, lower, setup, basic, say,
+            {"torque_name": window_name(setup, middle=(torque, missed))},
+            f"straight at the window's geometric middle below its upper end "
+            f"{plain_number(upper)} N m (not developed); {'; '.join(misses)}, so at the "
+            "window's geometric middle below it; ")
+        torque = lower
+    return kept
+
+
+#: whether :func:`redeveloped_in_window` (``middle``) develops the drive first at the
+#: window's geometric middle rather than at its upper end (``straight``; issue 71, branch
+#: middle100). Off: measured on five designs, docs/performance.md ("The window
+#: re-development straight to the middle").
+WINDOW_STRAIGHT_TO_MIDDLE = False
 
 
 #: most developments of :func:`redeveloped_in_window` (``middle``) at the geometric middle
@@ -704,7 +769,9 @@ def window_name(setup: dict[str, Any], middle: tuple[float, str] | None = None) 
     middle : (float, str), optional
         Where the development is one at the window's geometric middle below a torque
         whose bearing broke the limit (:func:`redeveloped_in_window`): that torque [N·m]
-        and its drive LTE reading in words. Default None: the upper end's development.
+        and its drive LTE reading in words (empty: the upper end, not developed,
+        :func:`redeveloped_in_window` ``straight``). Default None: the upper end's
+        development.
 
     Returns
     -------
@@ -727,6 +794,10 @@ def window_name(setup: dict[str, Any], middle: tuple[float, str] | None = None) 
     kept = (f"the written drive bearing kept {verdict_lte_limit():g} urad at every torque "
             f"from about {plain_number(round(low, 1))} to {plain_number(round(high, 1))} N m "
             "only")
+    if middle is not None and not middle[1]:
+        return (f"the LTE window's geometric middle below its upper end "
+                f"{plain_number(middle[0])} N m: {kept}; the upper end not developed "
+                "(contact.optimize.development_written_lte)")
     if middle is not None:
         return (f"the LTE window's geometric middle below {plain_number(middle[0])} N m: "
                 f"{kept}; the drive developed at {plain_number(middle[0])} N m: at "
