@@ -420,7 +420,6 @@ def redeveloped_in_window(run: Callable[..., Any], setup: dict[str, Any], basic:
     low, high, _ = window
     limit = verdict_lte_limit()
     torque = floor_torque(high)
-    design = float(setup["torques"][1])
     if straight is None:
         straight = WINDOW_STRAIGHT_TO_MIDDLE
     first = floor_torque(math.sqrt(low * torque)) if middle and straight else math.nan
@@ -436,8 +435,23 @@ def redeveloped_in_window(run: Callable[..., Any], setup: dict[str, Any], basic:
     # of the window below it, at most WINDOW_LOWER_STEPS times, each from the last missed
     # (raised back from the torque kept as far as its own LTE allows:
     # development._window_raised)
+    return _lower_middles(run, setup, basic, say, (kept, missed), torque,
+                          WINDOW_LOWER_STEPS, "")
+
+
+def _lower_middles(run: Callable[..., Any], setup: dict[str, Any], basic: Any,
+                   say: Callable[[str], None], tried: tuple[Any, str], torque: float,
+                   steps: int, lead: str) -> Any:
+    """The window's re-developments below a torque missed: where ``tried`` (the design kept
+    at ``torque`` [N·m], or None, and why it missed) kept none, the drive developed again
+    at the geometric middle of the window below the last torque missed, at most ``steps``
+    times; ``lead`` starts each one's torque reason (:func:`redeveloped_in_window` and
+    :func:`_straight_to_middle`). Returns the design kept, or None."""
+    low = setup["lte_window"][0]
+    design = float(setup["torques"][1])
+    kept, missed = tried
     misses: list[str] = []
-    for _ in range(WINDOW_LOWER_STEPS):
+    for _ in range(steps):
         if kept is not None or not missed:
             return kept
         misses.append(f"at {plain_number(torque)} N m {missed}")
@@ -453,7 +467,7 @@ def redeveloped_in_window(run: Callable[..., Any], setup: dict[str, Any], basic:
         kept, missed = _window_try(
             run, lower, setup, basic, say,
             {"torque_name": window_name(setup, middle=(torque, missed))},
-            f"{'; '.join(misses)}, so at the window's geometric middle below it; ")
+            f"{lead}{'; '.join(misses)}, so at the window's geometric middle below it; ")
         torque = lower
     return kept
 
@@ -468,40 +482,15 @@ def _straight_to_middle(run: Callable[..., Any], setup: dict[str, Any], basic: A
     low, high, _ = setup["lte_window"]
     limit = verdict_lte_limit()
     upper = floor_torque(high)
-    design = float(setup["torques"][1])
     say(f"development: the written drive bearing keeps {limit:g} urad from about "
         f"{plain_number(round(low, 1))} to {plain_number(round(high, 1))} N m only; the drive "
         f"developed again at {plain_number(first)} N m, the window's geometric middle below "
         f"its upper end {plain_number(upper)} N m (the upper end not developed)")
-    kept, missed = _window_try(
-        run, first, setup, basic, say,
-        {"torque_name": window_name(setup, middle=(upper, ""))},
-        f"straight at the window's geometric middle below its upper end "
-        f"{plain_number(upper)} N m (not developed); ")
-    torque = first
-    misses: list[str] = []
-    for _ in range(WINDOW_LOWER_STEPS - 1):
-        if kept is not None or not missed:
-            return kept
-        misses.append(f"at {plain_number(torque)} N m {missed}")
-        lower = floor_torque(math.sqrt(low * torque))
-        if not (math.isfinite(lower) and lower * WINDOW_LOWER_STEP <= torque):
-            say(f"development: the design torque kept at {plain_number(design)} N m (the "
-                f"window's middle {plain_number(lower)} N m below {plain_number(torque)} N m "
-                "too close to it to develop a bearing of its own)")
-            return None
-        say(f"development: the drive developed again at {plain_number(lower)} N m, the "
-            f"geometric middle of {plain_number(round(low, 1))}-{plain_number(torque)} N m "
-            f"(at {plain_number(torque)} N m {missed})")
-        kept, missed = _window_try(
-            run, lower, setup, basic, say,
-            {"torque_name": window_name(setup, middle=(torque, missed))},
-            f"straight at the window's geometric middle below its upper end "
-            f"{plain_number(upper)} N m (not developed); {'; '.join(misses)}, so at the "
-            "window's geometric middle below it; ")
-        torque = lower
-    return kept
-
+    lead = (f"straight at the window's geometric middle below its upper end "
+            f"{plain_number(upper)} N m (not developed); ")
+    tried = _window_try(run, first, setup, basic, say,
+                        {"torque_name": window_name(setup, middle=(upper, ""))}, lead)
+    return _lower_middles(run, setup, basic, say, tried, first, WINDOW_LOWER_STEPS - 1, lead)
 
 #: whether :func:`redeveloped_in_window` (``middle``) develops the drive first at the
 #: window's geometric middle rather than at its upper end (``straight``; issue 71, branch
