@@ -53,7 +53,7 @@ from contact.optimize.development_keep import (
 from contact.optimize.development_lte_steps import ELLIPSE_STEP
 from contact.optimize.development_matched_te import lte_ends
 from contact.optimize.development_result import DevelopmentEvaluation
-from contact.optimize.development_targets import VARIABLES, DevelopmentTargets
+from contact.optimize.development_targets import DevelopmentTargets
 from contact.optimize.development_variant import said_variant
 from geometry.case import Case
 from geometry.core.errors import raise_if_interrupted
@@ -641,13 +641,10 @@ def range_ellipse_bounds(targets: DevelopmentTargets) -> tuple[float, float]:
     ``[development] variables`` are used as given. Source: issue 71 ("LTE p-p ≤ 60 µrad at
     every torque").
     """
-    from contact.optimize.development_pattern_steps import LENGTH_ELLIPSE_MAX
+    from contact.optimize.development_pattern_steps import length_bound
 
-    name = "ellipse_length"
-    lo, hi = (float(x) for x in targets.variables[name])
-    if (lo, hi) == tuple(float(x) for x in VARIABLES[name]):
-        hi = max(hi, LENGTH_ELLIPSE_MAX)
-    return lo, hi
+    # the length step's bound on a pattern too short: the same defaults, the same raise
+    return float(targets.variables["ellipse_length"][0]), length_bound(targets, False)
 
 
 def checked_range_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
