@@ -617,14 +617,19 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None,
     elif "lte" in failed:  # an LTE beyond twice its limit: the same remedy, said once
         out = overlap_lines(case, "the LTE", lte, side) + out
     if "scuffing" in failed:
+        # the example remedy ltca synthesize's scuffing note computes S_B at
+        from contact.optimize.written_scuffing import REMEDY_COOLER, REMEDY_SMOOTHER
+
         op = case.operating
         out += ["  next, scuffing: the flash temperature falls with a cooler oil inlet, smoother "
                 "flanks and a lower speed, and an oil of a higher FZG load stage has a higher "
                 "scuffing temperature (--lubricant OIL.toml, an oil file: docs/friction.md; "
                 "docs/scuffing_micropitting.md); `ltca optimize` (the bearing) does not model "
-                "it; the same run 20 K cooler with flanks half as rough, for example:",
+                f"it; the same run {REMEDY_COOLER:g} K cooler with flanks half as rough, for "
+                "example:",
                 f"    ltca run {shown} --flank {side} --torque {torques} --temperature "
-                f"{op.temperature - 20.0:g} --roughness {op.roughness / 2.0:g}"]
+                f"{op.temperature - REMEDY_COOLER:g} --roughness "
+                f"{op.roughness / REMEDY_SMOOTHER:g}"]
     return out
 
 
