@@ -26,7 +26,7 @@ from contact.pipeline import run_analysis
 from contact.study import point_summary
 from contact.study.engine import analyse_point
 from contact.study.points import StudyInputs
-from contact.utca.datasets import unloaded_cycle, unloaded_tca, ute_dataset, utca_dataset
+from contact.utca.datasets import unloaded_cycle, unloaded_tca, utca_dataset, ute_dataset
 from contact.utca.easeoff import ease_off
 
 #: coarse, as tests/test_study.py (the identity does not depend on the resolution)
