@@ -192,12 +192,13 @@ def geometry_flanks(state: ChainState) -> None:
         state.groups[f"/geometry/{m}/{f}"] = ds
 
 
-def utca_easeoff(state: ChainState) -> None:
+def utca_easeoff(state: ChainState, *, curves: bool = True) -> None:
     """``/easeoff`` and ``/utca``: the ease-off and the unloaded TCA of the flank pair in
     contact (:func:`contact.utca.easeoff.ease_off`, :func:`contact.utca.unloaded_tca`; seed
     §2.3–2.4, ch. 3), of the deviated surfaces where there are deviations
     (:func:`contact.utca.deviations.apply_deviations`, seed ch. 4) with the theoretical
-    ones under ``/theoretical`` and ``ease_off_change`` [µm] in ``/easeoff``."""
+    ones under ``/theoretical`` and ``ease_off_change`` [µm] in ``/easeoff``.
+    ``curves=False``: ``/utca`` without the contact curves (:func:`utca_ute`)."""
     from contact.utca import unloaded_tca
     from contact.utca.easeoff import ease_off
 
@@ -209,7 +210,7 @@ def utca_easeoff(state: ChainState) -> None:
     if state.deviations is not None:
         from contact.utca.deviations import apply_deviations
 
-        t_eo, t_ut = unloaded_tca(c, flank=flank, easeoff=eo)
+        t_eo, t_ut = unloaded_tca(c, flank=flank, easeoff=eo, curves=curves)
         if state.theoretical:
             state.groups["/theoretical/easeoff"] = t_eo
             state.groups["/theoretical/utca"] = t_ut
@@ -218,7 +219,7 @@ def utca_easeoff(state: ChainState) -> None:
         pin_dev, gear_dev = state.deviations
         eo = apply_deviations(eo, pinion=pin_dev, gear=gear_dev, case=c)
     t0 = time.perf_counter()
-    eo_ds, utca_ds = unloaded_tca(c, flank=flank, easeoff=eo)
+    eo_ds, utca_ds = unloaded_tca(c, flank=flank, easeoff=eo, curves=curves)
     state.times["utca"] = time.perf_counter() - t0
     if t_eo is not None:
         change = (eo_ds["ease_off"] - t_eo["ease_off"]).astype(float)
@@ -233,6 +234,16 @@ def utca_easeoff(state: ChainState) -> None:
     state.groups["/utca"] = utca_ds
     state.easeoff = eo
     state.transitions = tuple(utca_ds["transition_roll"].values)
+
+
+def utca_ute(state: ChainState) -> None:
+    """``/easeoff`` and ``/utca`` as :func:`utca_easeoff`, the ``/utca`` of the UTE alone
+    (:func:`contact.utca.datasets.ute_dataset`: the pairs' and the actual UTE, the
+    transitions, the peak-to-peak — the same values bit for bit — without the contact
+    curves' flank points, separations, lines and paths). A study point's step
+    (:func:`contact.study.engine.analyse_point`: its summary reads the UTE peak-to-peak,
+    the LTCA the transitions; ≈ 9 ms of a ≈ 0.19 s point, issue 75)."""
+    utca_easeoff(state, curves=False)
 
 
 def ltca_qp(state: ChainState) -> None:
@@ -523,7 +534,7 @@ def _flash_temperature_or_reason(rating: xr.Dataset, friction: xr.Dataset | None
 #: every step's implementations by name; the first of each is the default
 STEPS: Mapping[str, Mapping[str, Callable[[ChainState], None]]] = {
     "geometry": {"flanks": geometry_flanks},
-    "utca": {"easeoff": utca_easeoff},
+    "utca": {"easeoff": utca_easeoff, "ute": utca_ute},
     "ltca": {"qp": ltca_qp},
     "root_stress": {"fe": root_stress_fe},
     "mesh_interface": {"linearised": mesh_interface_linearised},
@@ -576,7 +587,8 @@ class AnalysisChain:
         ``/geometry``: the four generated flanks (``"flanks"``, seed ch. 2).
     utca : str or callable
         ``/easeoff``, ``/utca``: ease-off and unloaded TCA (``"easeoff"``, seed §2.3–2.4,
-        ch. 3; deviations ch. 4).
+        ch. 3; deviations ch. 4); ``"ute"``: the same with ``/utca`` of the UTE alone, no
+        contact curves (a study point's, :func:`utca_ute`).
     ltca : str or callable
         ``/ltca``: the loaded TCA, the contact QP (``"qp"``, seed Eq. 3.12–3.14).
     root_stress : str, callable or None

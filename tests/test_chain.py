@@ -141,7 +141,7 @@ def test_unknown_step_names_list_the_available_ones():
         run_analysis(None, [TORQUE], options=SMALL, steps={"friction": None})
     with pytest.raises(InputError, match=r"^steps\.ltca: the analysis cannot skip it"):
         run_analysis(None, [TORQUE], options=SMALL, steps={"ltca": None})
-    with pytest.raises(InputError, match=r"^steps\.utca: must be one of easeoff, a callable"):
+    with pytest.raises(InputError, match=r"^steps\.utca: must be one of easeoff, ute, a callable"):
         AnalysisChain(utca=42)
     assert set(OPTIONAL_STEPS) == set(STEP_ORDER) - {"utca", "ltca"}
 

@@ -119,7 +119,9 @@ def analyse_point(shared: StudyInputs, index: int, point: Mapping[str, float]) -
     The analysis is exactly :func:`contact.run_analysis` of the case with the point's
     misalignment and scaled deviations (no ``/geometry``, no theoretical groups, no
     ``/mesh_interface``: the summary does not read it, and its roll problems cost 2–3 % of
-    a point; the LTCA over one mesh cycle, :func:`one_cycle`) and
+    a point; the LTCA over one mesh cycle, :func:`one_cycle`; ``/utca`` of the UTE alone,
+    the chain's ``utca="ute"`` step, :func:`contact.chain.utca_ute`: the contact curves'
+    flank points, separations and paths no summary reads are not evaluated) and
     :func:`friction.efficiency.efficiency_analysis` of its ``/ltca`` at each speed, so a
     study's numbers equal those of single analyses at the same inputs (but for the order
     of floating-point sums: ≈ 1e-15 relative, the LTE harmonics ≤ 1e-14 of the largest
@@ -147,7 +149,8 @@ def analyse_point(shared: StudyInputs, index: int, point: Mapping[str, float]) -
                 list(shared.torque), flank=shared.flank, options=one_cycle(shared.options),
                 deviations=shared.deviations_at(point.get("deviation_scale")),
                 theoretical=False,
-                steps=AnalysisChain.contact_only().with_root_stress(shared.root_stress))
+                steps=AnalysisChain.contact_only().with_steps(utca="ute")
+                .with_root_stress(shared.root_stress))
         friction = []
         if shared.speed:
             ltca = tree["/ltca"].to_dataset()

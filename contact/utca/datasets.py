@@ -15,6 +15,7 @@ UnloadedCycle      contact curves and UTE of the tooth pairs over one mesh cycle
 unloaded_cycle     compute them from an EaseOff
 easeoff_dataset    the ``/easeoff`` Dataset of an EaseOff
 utca_dataset       the ``/utca`` Dataset of an UnloadedCycle
+ute_dataset        the ``/utca`` Dataset of the UTE alone (no curves: a study point's)
 
 References
 ----------
@@ -34,6 +35,7 @@ import xarray as xr
 from scipy.interpolate import RectBivariateSpline
 
 from contact.utca.contact_curves import (
+    CURVE_SPACINGS,
     DEFAULT_SEPARATION,
     UTE_METHODS,
     ContactCurves,
@@ -61,6 +63,7 @@ __all__ = [
     "unloaded_cycle",
     "unloaded_tca",
     "utca_dataset",
+    "ute_dataset",
 ]
 
 log = logging.getLogger(__name__)
@@ -108,7 +111,8 @@ def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
                  separation: float = DEFAULT_SEPARATION, grid: dict | None = None,
                  method: str = "second_order",
                  n_point: int = 41,
-                 easeoff: EaseOff | None = None) -> tuple[xr.Dataset, xr.Dataset]:
+                 easeoff: EaseOff | None = None,
+                 curves: bool = True) -> tuple[xr.Dataset, xr.Dataset]:
     """Ease-off based unloaded TCA of a case over one mesh cycle (seed §2.3.2, §2.4, §4.4).
 
     Parameters
@@ -137,6 +141,12 @@ def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
         A precomputed ease-off of the same case, flank, misalignment and grid (the LTCA
         pipeline shares one); ``flank``, ``misalignment`` and ``grid`` are then not used
         to rebuild it.
+    curves : bool
+        True (default): the whole ``/utca`` (:func:`utca_dataset`). False: the UTE alone
+        (:func:`ute_dataset`: the pairs' and the actual UTE, the transitions and the
+        peak-to-peak, the same values bit for bit) — the contact curves' flank points,
+        normals and arms, the separations, lines and paths are not evaluated (a study
+        point's ``utca`` step, :func:`contact.chain.utca_ute`; issue 75).
 
     Returns
     -------
@@ -167,7 +177,11 @@ def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
                                                       misalignment=misalignment, grid=grid)
     cycle = _memo_cycle(_Same(eo), rolls_per_cycle,
                         _check_cycle_options(rolls_per_cycle, pairs, method, n_point),
-                        method, n_point)
+                        method, n_point, bool(curves))
+    if not curves:
+        return (easeoff_dataset(eo, case, misalignment=misalignment),
+                ute_dataset(eo, cycle, case=case, separation=separation,
+                            misalignment=misalignment))
     eo_ds, ds = _memo_datasets(_Same(eo), _Same(cycle), _Same(case), separation,
                                _Same(misalignment))
     # (each call its own datasets: a caller may add variables or attributes)
@@ -192,14 +206,15 @@ _Same = Same  # an object as a memo key compared by identity (contact.utca.field
 
 @memoised(maxsize=8)
 def _memo_cycle(eo: _Same, n_roll: int, pairs: tuple[int, ...], method: str,
-                n_point: int) -> UnloadedCycle:
+                n_point: int, flank_fields: bool) -> UnloadedCycle:
     """:func:`unloaded_cycle` of the ease-off ``eo.obj``, memoised per process by the
     ease-off object itself (arrays read-only): the analyses of a torque series or an
     analysis repeated in one process share the memoised ease-off
     (:func:`contact.utca.easeoff.ease_off`), and so its unloaded cycle (seed §2.3.2.2),
-    which depends on the ease-off alone."""
+    which depends on the ease-off alone. With and without the curves' flank fields
+    (``flank_fields``) the cycles are two entries."""
     cycle = unloaded_cycle(eo.obj, n_roll=n_roll, pairs=pairs, method=method,
-                           n_point=n_point)
+                           n_point=n_point, flank_fields=flank_fields)
     for a in (cycle.roll, cycle.pairs, cycle.envelope, *cycle.curves):
         if isinstance(a, np.ndarray):
             a.flags.writeable = False
@@ -226,7 +241,8 @@ def _check_cycle_options(n_roll, pairs, method, n_point) -> tuple[int, ...]:
 
 def unloaded_cycle(eo: EaseOff, *, n_roll: int = 30, pairs=(-1, 0, 1),
                    method: str = "second_order", n_point: int = 41,
-                   fields: EaseOffFields | None = None) -> UnloadedCycle:
+                   fields: EaseOffFields | None = None,
+                   flank_fields: bool = True) -> UnloadedCycle:
     """The contact curves and UTE of the tooth pairs over one mesh cycle (seed §2.3.2.2).
 
     Parameters
@@ -243,6 +259,12 @@ def unloaded_cycle(eo: EaseOff, *, n_roll: int = 30, pairs=(-1, 0, 1),
         Samples along each contact curve (≥ 3).
     fields : EaseOffFields, optional
         Pre-built splines of ``eo``.
+    flank_fields : bool
+        True (default): the curves with their flank points, normals and normal arms
+        (what :func:`utca_dataset` reads). False: without them (``normal_arm``,
+        ``position``, ``normal`` None; :func:`ute_dataset` reads none of them): the
+        curves' places, ease-off and UTE are the same bit for bit (the same solve, the
+        flank fields evaluated after it, :func:`contact.utca.contact_curves.contact_curves`).
 
     Returns
     -------
@@ -277,9 +299,15 @@ def unloaded_cycle(eo: EaseOff, *, n_roll: int = 30, pairs=(-1, 0, 1),
     # own; the batch changes the curve ends, found to 1e-9 of the face width, at
     # round-off: ~1e-16 rad of UTE)
     at = np.flatnonzero(np.isfinite([m1, m2]))
-    both = contact_curves(eo, np.r_[targets.ravel(), np.array([m1, m2])[at]], **kw)
+    tg = np.r_[targets.ravel(), np.array([m1, m2])[at]]
+    if flank_fields:
+        both = contact_curves(eo, tg, **kw)
+    else:  # contact_curves' solve without its last step, the flank fields (issue 75)
+        both = UTE_METHODS[method](f, tg, CURVE_SPACINGS["uniform"](int(n_point)),
+                                   flank_fields=False)
     n = targets.size
-    cc = ContactCurves(*(a[:n].reshape(targets.shape + a.shape[1:]) for a in both))
+    cc = ContactCurves(*(None if a is None else a[:n].reshape(targets.shape + a.shape[1:])
+                         for a in both))
     envelope = np.min(np.where(np.isfinite(cc.ute), cc.ute, np.inf), axis=1)
     if not np.all(np.isfinite(envelope)):
         lost = roll[~np.isfinite(envelope)]
@@ -403,6 +431,67 @@ def utca_dataset(eo: EaseOff, cycle: UnloadedCycle, *, case: Case,
     n_point = cc.u.shape[-1]
     # (xarray's Dataset of these tuples, made directly: issue 75)
     return dataset(data, _utca_coords(cycle, n_point), _utca_attrs(eo, case, mis, cycle.method))
+
+
+def ute_dataset(eo: EaseOff, cycle: UnloadedCycle, *, case: Case,
+                separation: float = DEFAULT_SEPARATION,
+                misalignment: Misalignment | None = None) -> xr.Dataset:
+    """The ``/utca`` Dataset of a mesh cycle's UTE alone, without its contact curves.
+
+    What a study point reads of the unloaded TCA (issue 75): its peak-to-peak UTE and the
+    transitions the loaded TCA's cycle starts from. The variables are those of
+    :func:`utca_dataset` of the same cycle, computed by the same lines (so the same values
+    bit for bit), less those of the curves, lines and paths.
+
+    Parameters
+    ----------
+    eo : contact.utca.easeoff.EaseOff
+    cycle : UnloadedCycle
+        The cycle (:func:`unloaded_cycle`, with or without its flank fields: none is read).
+    case : geometry.case.Case
+        The case (recorded in the attributes).
+    separation : float — [mm]
+        Separation bounding the unloaded contact line, > 0 (recorded as
+        ``separation_threshold``).
+    misalignment : geometry.pair.assembly.Misalignment, optional
+        The misalignment used (recorded in the attributes); defaults to the case's.
+
+    Returns
+    -------
+    xarray.Dataset
+        ``unloaded_transmission_error`` (roll) [µrad], ``pair_transmission_error``
+        (roll, pair) [µrad], ``active`` (roll, pair), ``transition_roll`` [rad] and
+        ``transition_transmission_error`` [µrad] (M1, M2), ``peak_to_peak_transmission_error``
+        [µrad], ``separation_threshold`` [µm]; the attributes of :func:`utca_dataset`
+        and ``curves`` = "not evaluated".
+
+    Raises
+    ------
+    InputError
+        For a separation that is not a finite length > 0.
+    """
+    separation = positive("separation", separation, "mm")
+    mis = case.misalignment if misalignment is None else misalignment
+    envelope, te = cycle.envelope, cycle.curves.ute
+    active = np.isfinite(te) & (te <= envelope[:, None] + 1e-15)
+    data = {
+        "unloaded_transmission_error": _var(
+            "roll", envelope * 1e6, "urad",
+            "unloaded transmission error: lower envelope of the pairs (gear lag)"),
+        "pair_transmission_error": _var(
+            ("roll", "pair"), te * 1e6, "urad",
+            "unloaded transmission error of each tooth pair (min of the ease-off on its "
+            "contact curve; NaN out of mesh)"),
+        "active": _var(("roll", "pair"), active.astype(np.int8), "1",
+                       "1 where the pair carries the motion (its UTE is the lower envelope)",
+                       **binary_flag("inactive", "active")),
+        **_cycle_variables(cycle, separation),
+    }
+    coords = {k: v for k, v in _utca_coords(cycle, 1).items()
+              if k in ("roll", "pair", "transition")}
+    attrs = {**_utca_attrs(eo, case, mis, cycle.method),
+             "curves": "not evaluated (the UTE alone: contact.utca.datasets.ute_dataset)"}
+    return dataset(data, coords, attrs)
 
 
 def _plane_places(eo: EaseOff):
