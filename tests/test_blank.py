@@ -392,7 +392,6 @@ _BAD = [
     ("method", 2, ModelUnavailableError),
     ("method", 1.5, InputError),
     ("Sigma", 0.0, InputError),
-    ("Sigma", 170.0, InputError),
     ("a", -1.0, InputError),
     ("a", 100.0, InputError),
     ("z1", 4, InputError),
@@ -423,6 +422,22 @@ _BAD = [
 def test_bad_input_names_the_field(field, value, error):
     with pytest.raises(error, match=field):
         design_from_annex("sample2", **{field: value})
+
+
+def test_a_shaft_angle_past_the_internal_gear_names_sigma():
+    """Σ 170° on Annex F sample 2 (13x42): the spiral bevel (a = 0) is refused on
+    construction, the hypoid (a = 15 mm) by its pitch cone, which does not close past the
+    spiral bevel's bound (issue 71, round 39: a hypoid's own pitch cone decides, the FH 12x41
+    at a = 31.5 mm has δ2 80.2° at Σ 110° past its 107.02°); both name Sigma and the bound
+    arccos(−13/42) = 108.03° first (exact to the 2 decimals printed)."""
+    limit = f"{math.degrees(math.acos(-13 / 42)):.2f}"
+    assert limit == "108.03"
+    with pytest.raises(InputError, match=rf"^Sigma: must be below {limit} for 13x42 "):
+        design_from_annex("sample2", Sigma=170.0, a=0.0)
+    hypoid = design_from_annex("sample2", Sigma=170.0)
+    with pytest.raises(InputError, match=rf"^Sigma: must be below {limit} for 13x42 .*"
+                                         r"unless the hypoid's own pitch cone closes past it"):
+        blank_geometry(hypoid)
 
 
 def test_offset_with_method0_is_rejected():

@@ -537,3 +537,75 @@ def test_a_rating_table_missing_a_required_field_says_it_replaces_the_defaults(t
     err = capsys.readouterr().err
     assert rc == 2 and "application_factor" in err
     assert "replaces the stated defaults" not in err
+
+
+def _sigma_variant(tmp_path, source: Path, sigma: float) -> Path:
+    text = source.read_text(encoding="utf-8")
+    text, n = re.subn(r"(?m)^Sigma = .*$", f"Sigma = {sigma!r}", text)
+    assert n == 1
+    path = tmp_path / f"{source.stem}_s{sigma:g}.toml"
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+UNSEEN = Path(__file__).parents[1] / "benchmarks" / "data" / "unseen_designs"
+
+
+def test_a_hypoid_past_the_spiral_bevel_shaft_angle_bound_is_made_by_its_own_pitch_cone(
+        tmp_path):
+    """The bound arccos(−z1/z2) is a spiral bevel's (tan δ2 = sin Σ / (z1/z2 + cos Σ)); a
+    hypoid's gear pitch angle is its pitch cone's, smaller. Issue 71, round 39: the FH
+    hypoid 12x41 at a = 31.5 mm by Method 2, typed at Σ 110° as its brief named, was refused
+    "design.Sigma: must be below 107.02 for 12x41 … gear pitch angle below 90°" although its
+    pitch cone has δ2 80.2°. Now its blank is made; independent checks, each an identity
+    of the result to round-off (1e-9): the two pitch cones are tangent at P (the gear cone's
+    normal cos δ2 e_r − sin δ2 e_z is normal to the pinion's circumferential direction
+    t1 = cos η x̂ + sin η (0, −cos Σ, sin Σ), the frame of pitch_cone's docstring), the
+    offset a = r_m2 sin ζ_m + r_m1 sin η, the ratio u = r_m2 cos β_m2 / (r_m1 cos β_m1);
+    δ2 below 90° by 9.8° (not a round-off question). The same pair at a = 0, a spiral
+    bevel, is still refused naming 107.02 = arccos(−12/41) (exact to the 2 decimals)."""
+    from geometry.synthesis.basic_design import load_basic
+
+    path = _sigma_variant(tmp_path, UNSEEN / "fh_hypoid_12x41_s105_a31_m2.toml", 110.0)
+    basic = load_basic(path)
+    pc = basic.blank().pitch
+    sig, d2, zm, eta = basic.design.Sigma, pc.delta2, pc.zeta_m, pc.eta
+    assert math.degrees(sig) == pytest.approx(110.0, abs=1e-12)
+    assert math.degrees(d2) < 80.5
+    n2 = (math.cos(d2) * math.sin(zm), math.cos(d2) * math.cos(zm), -math.sin(d2))
+    t1 = (math.cos(eta), -math.sin(eta) * math.cos(sig), math.sin(eta) * math.sin(sig))
+    assert abs(sum(p * q for p, q in zip(n2, t1, strict=True))) < 1e-9
+    r1, r2 = pc.dm1 / 2, pc.dm2 / 2
+    assert r2 * math.sin(zm) + r1 * math.sin(eta) == pytest.approx(31.5, abs=1e-9)
+    assert r2 * math.cos(pc.beta_m2) / (r1 * math.cos(pc.beta_m1)) == pytest.approx(
+        41 / 12, abs=1e-9)
+    text = path.read_text(encoding="utf-8").replace("a = 31.5", "a = 0.0")
+    bevel = tmp_path / "bevel_s110.toml"
+    bevel.write_text(text, encoding="utf-8")
+    limit = f"{math.degrees(math.acos(-12 / 41)):.2f}"
+    assert limit == "107.02"
+    with pytest.raises(InputError, match=rf"^design\.Sigma: must be below {limit} for 12x41"):
+        load_basic(bevel)
+
+
+def test_a_hypoid_whose_pitch_cone_does_not_close_past_the_bound_names_sigma_first(
+        tmp_path, capsys):
+    """Past arccos(−z1/z2) a hypoid whose pitch cone does not close (its δ2 would reach
+    90°) is refused naming Sigma and that bound first, the method's own reason (an rc0
+    sentence) after it — not the rc0 sentence alone, which would send the user to the
+    cutter. The FM 6x47 at a = 31 mm, Method 1 (round 35, typed at Σ 100°): bound
+    arccos(−6/47) = 97.33° (exact to 2 decimals); rc 2 and no case written."""
+    from geometry.synthesis.basic_design import load_basic
+
+    path = _sigma_variant(tmp_path, UNSEEN / "hypoid_6x47_s96_a31_m1_right.toml", 100.0)
+    limit = f"{math.degrees(math.acos(-6 / 47)):.2f}"
+    assert limit == "97.33"
+    with pytest.raises(InputError, match=rf"^Sigma: must be below {limit} for 6x47 .*"
+                                         r"unless the hypoid's own pitch cone closes past it "
+                                         r"\[deg\], got 100: at a = 31 mm the method 1 pitch "
+                                         r"cone does not \(rc0: "):
+        load_basic(path).blank()
+    rc = main(["synthesize", str(path), "-o", str(tmp_path / "case.toml")])
+    err = capsys.readouterr().err
+    assert rc == 2 and f"Sigma: must be below {limit} for 6x47" in err
+    assert not (tmp_path / "case.toml").exists()

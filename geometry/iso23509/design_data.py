@@ -71,7 +71,10 @@ class BevelGearDesign:
         zero offset), 1 (hypoid, Gleason), 2 (hypoid, Oerlikon; face hobbing only) or
         3 (hypoid, Klingelnberg; face hobbing only).
     Sigma : float
-        Shaft angle Σ [rad], 0 < Σ < π, with cos Σ > −z1/z2 (gear pitch angle below 90°).
+        Shaft angle Σ [rad], 0 < Σ < π, with cos Σ > −z1/z2 for a spiral bevel (a = 0:
+        gear pitch angle below 90°); a hypoid's bound is its pitch cone's, which closes only
+        with δ2 below 90° (:func:`~geometry.iso23509.pitch_cone.pitch_cone` names ``Sigma``
+        where it does not past that bound).
     a : float
         Hypoid offset a [mm], 0 ≤ a < d/2 (d = d_e2, or d_m2 for Method 2); must be 0 for
         Method 0. Only the offset that makes the pinion spiral angle larger than the gear's
@@ -212,14 +215,6 @@ class BevelGearDesign:
         set_(self, "z2", z2)
         sigma = real("Sigma", self.Sigma, unit="deg", low=0.0, high=math.pi,
                      low_open=True, high_open=True, scale=_DEG)
-        if math.cos(sigma) <= -z1 / z2:
-            # the bound in the field's own unit: a user typing Σ reads the degrees, not the
-            # cosine (issue 71, round 23: 9x41 typed at Σ 105° where 102.68° is the limit)
-            raise InputError(
-                f"Sigma: must be below {math.degrees(math.acos(-z1 / z2)):.2f} for "
-                f"{z1}x{z2} (cos Σ > −z1/z2 = {-z1 / z2:.4f}: gear pitch angle below 90°; "
-                f"internal bevel gears are not modelled) [deg], got {sigma / _DEG:g}"
-            )
         set_(self, "Sigma", sigma)
         given, absent = ("dm2", "de2") if method == 2 else ("de2", "dm2")
         if getattr(self, absent) is not None:
@@ -246,6 +241,18 @@ class BevelGearDesign:
         if method == 0 and a != 0.0:
             raise InputError(f"a: must be 0 for method 0 (use method 1, 2 or 3 for hypoid gears) "
                              f"[mm], got {a:g}")
+        if a == 0.0 and math.cos(sigma) <= -z1 / z2:
+            # the bound in the field's own unit: a user typing Σ reads the degrees, not the
+            # cosine (issue 71, round 23: 9x41 typed at Σ 105° where 102.68° is the limit).
+            # Exact for a spiral bevel only (tan δ2 = sin Σ / (z1/z2 + cos Σ)); a hypoid's
+            # gear pitch angle is its pitch cone's, smaller (issue 71, round 39: the FH
+            # 12x41 at a = 31.5 mm, refused at Σ 110° here, has δ2 80.2°): its bound is
+            # said where its pitch cone does not close (pitch_cone.pitch_cone)
+            raise InputError(
+                f"Sigma: must be below {math.degrees(math.acos(-z1 / z2)):.2f} for "
+                f"{z1}x{z2} (cos Σ > −z1/z2 = {-z1 / z2:.4f}: gear pitch angle below 90°; "
+                f"internal bevel gears are not modelled) [deg], got {sigma / _DEG:g}"
+            )
         set_(self, "a", a)
         set_(self, "beta_m", real("beta_m", self.beta_m, unit="deg", low=0.0,
                                   high=70 * _DEG, scale=_DEG))

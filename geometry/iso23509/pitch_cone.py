@@ -843,7 +843,9 @@ def pitch_cone(design: BevelGearDesign) -> PitchCone:
         If the design has no valid pitch cone (face width beyond the outer cone distance,
         offset not below the gear mean pitch radius, no pitch cone meeting the method's
         closing condition for this cutter radius, desired pinion spiral angle not above the
-        offset angle ζ_mp, a face-hobbing cutter too small for its lead angle).
+        offset angle ζ_mp, a face-hobbing cutter too small for its lead angle); for a
+        hypoid whose shaft angle is past a spiral bevel's bound arccos(−z1/z2), naming
+        ``Sigma`` and that bound first, the method's own reason after it.
     ModelUnavailableError
         If ``design.method`` is not implemented.
 
@@ -882,4 +884,20 @@ def pitch_cone(design: BevelGearDesign) -> PitchCone:
             f"pitch-cone method {design.method!r} is not available: choose one of "
             f"{sorted(PITCH_CONE_METHODS)}"
         ) from None
-    return method(design)
+    z1, z2, sigma = design.z1, design.z2, design.Sigma
+    if design.a == 0.0 or math.cos(sigma) > -z1 / z2:
+        return method(design)
+    # A hypoid past the spiral bevel's bound (refused for a = 0 by BevelGearDesign): its
+    # own pitch cone has a smaller gear pitch angle (issue 71, round 39: the FH 12x41 at
+    # a = 31.5 mm and Σ 110°, past 107.02°, has δ2 80.2°); where it does not close, the
+    # shaft angle is said first, the method's own reason after it
+    try:
+        return method(design)
+    except InputError as exc:
+        raise InputError(
+            f"Sigma: must be below {math.degrees(math.acos(-z1 / z2)):.2f} for {z1}x{z2} "
+            f"(cos Σ > −z1/z2 = {-z1 / z2:.4f}: a spiral bevel's gear pitch angle below "
+            f"90°; internal bevel gears are not modelled) unless the hypoid's own pitch "
+            f"cone closes past it [deg], got {math.degrees(sigma):g}: at a = {design.a:g} mm "
+            f"the method {design.method} pitch cone does not ({exc})"
+        ) from None
