@@ -115,9 +115,10 @@ import functools
 import logging
 import math
 import os
-import time
 from collections.abc import Callable
 from typing import Any
+
+from contact.compliance.fe.worker_cpu import cpu_seconds
 
 # every public name of the development's modules importable from here, but the seams tests
 # replace (development_evaluate.analyse_design, development_coast_flank.coast_development):
@@ -501,7 +502,7 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
                         synthesis_progress=synthesis_progress, root_stress=root_stress,
                         gear_fallback=gear_fallback, outclassed_below=outclassed_below,
                         shared=shared)
-    t0 = time.process_time()
+    t0 = cpu_seconds()
     basic.blank()  # blanks the basic data cannot make: its own error, before any trial
     targets = targets or targets_from_table(basic.development, size_scale=basic.size_scale())
     say = progress or (lambda line: None)
@@ -553,7 +554,7 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
     # the final check at the default sampling (ltca run's): the best designs of the
     # coarse search in turn until one meets every target (the coarse LTCA's peak pressure
     # is a few % low: 2387 against 2539 MPa on the spiral bevel 13x39)
-    c_check = time.process_time()
+    c_check = cpu_seconds()
     placed = functools.partial(placed_case, basic, flank, memo)
     others: list = []  # the checked designs not chosen: their steps may repair them
     best = checked_best(evals, targets, setup, teeth, say, placed, slopes=evaluate.slopes,
@@ -622,7 +623,7 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
     developed = with_flank_options(basic, flank, best.values)
     # the coast flank, after the drive flank is chosen (which it does not change): checked
     # at the default sampling as synthesised, developed where it misses a target
-    c_coast = time.process_time()
+    c_coast = cpu_seconds()
     # at the coast side's own design torque: the smaller of the design torque and the
     # coast side's ISO 10300 capacity (or the basic file's coast_design_torque)
     coast_iso = coast_rated_torque(best.case if best.case is not None else None, basic,
@@ -632,7 +633,7 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
     coast_setup = coast_flank.coast_setup(setup, min(setup["torques"][1], coast_iso))
     coast = coast_flank.coast_development(developed, best, targets, coast_setup, teeth, memo,
                                           say, make)
-    coast_seconds = time.process_time() - c_coast
+    coast_seconds = cpu_seconds() - c_coast
     pre_coast, developed = developed, coast.basic
     case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
     root_safety, root_text, given_root_text = math.nan, "", ""
@@ -671,7 +672,7 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
         # and its own capacity holds there
         redone = _redeveloped_after_cut(window, basic, root_text, say, rerun)
         if redone is not None:
-            return dataclasses.replace(redone, seconds=time.process_time() - t0)
+            return dataclasses.replace(redone, seconds=cpu_seconds() - t0)
     else:
         # a design torque the basic file gives stands as given, but its root stress is
         # checked as ltca run judges it (on the default FE model where the coarse level
@@ -699,7 +700,7 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
     # the coast flank at its own design torque as `ltca run --flank coast` analyses it,
     # the coast design torque lowered to what its developed bearing carries (flank static
     # strength, no plastic segment, root stress) where that is less
-    c_cap = time.process_time()
+    c_cap = cpu_seconds()
     coast_cap = None
     if coast.best is not None:
         start, start_name = coast_start(case, basic, setup["torques"][1])
@@ -802,7 +803,7 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
         coast, coast_cap = coast_lte_torque(case, basic, coast, coast_cap, best, targets,
                                             setup, teeth, root_stress, say,
                                             own_torque=bool(torque_name))
-    coast_seconds += time.process_time() - c_cap
+    coast_seconds += cpu_seconds() - c_cap
     # a root-limited torque decided on the default FE model: the case written names it
     # (ltca run reads the model the torque was decided with)
     case, developed = at_decided_level(case, developed, setup)
@@ -824,10 +825,10 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
     upto = tolerant_torque(case, targets, setup, teeth, best.values, tolerance)
     result = DevelopmentResult(developed, case, report, best, tuple(evals),
                                tuple(setup["torques"]), setup["source"], tolerance, targets,
-                               time.process_time() - t0,
+                               cpu_seconds() - t0,
                                targets.pattern_centre_v or setup["centre_v"],
                                coast.best.metrics if coast.best is not None else None,
-                               time.process_time() - c_check - coast_seconds,
+                               cpu_seconds() - c_check - coast_seconds,
                                setup["lowered"], coast.best, tuple(coast.evaluations),
                                coast.status, coast.before, coast_seconds,
                                setup.get("pressure_limit", math.inf), root_safety,
@@ -1564,7 +1565,7 @@ def _at_written_lte(best: DevelopmentEvaluation, basic: BasicDesign,
     urad at its ISO capacity, below the FAIL level ``lte_capacity`` acts on. Where the
     rule lowered the torque, the TE parabola matched to the load there (``placed``, the
     flank's own ``level`` [µrad]; :func:`~contact.optimize.development_matched_te.
-    matched_after_window`). ``since`` [s]: the ``time.process_time()`` at which the whole
+    matched_after_window`). ``since`` [s]: the ``cpu_seconds()`` at which the whole
     development began; where finite, a re-development kept carries the CPU time since
     then as its ``seconds`` (its own run's alone leaves out the first development and any
     re-development that missed: the FH 12x27 of benchmarks/data/unseen_designs said "71 s
@@ -1590,7 +1591,7 @@ def _at_written_lte(best: DevelopmentEvaluation, basic: BasicDesign,
     again = redeveloped_in_window(rerun, setup, basic, say, middle=True)
     if again is not None and math.isfinite(since):
         # DevelopmentResult.seconds is the CPU time of the whole development
-        again = dataclasses.replace(again, seconds=time.process_time() - since)
+        again = dataclasses.replace(again, seconds=cpu_seconds() - since)
     return best, again
 
 

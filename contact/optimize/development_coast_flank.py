@@ -20,12 +20,12 @@ from __future__ import annotations
 import dataclasses
 import logging
 import math
-import time
 from collections.abc import Callable
 from typing import Any, NamedTuple
 
 import numpy as np
 
+from contact.compliance.fe.worker_cpu import cpu_seconds
 from contact.optimize import development_evaluate as evaluation
 from contact.optimize.development_check import (
     checked_best,
@@ -535,7 +535,7 @@ def coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
     start = flank_option_values(developed.options.flank(side))
     drive_key = bearing_key(drive.values)
     torques = tuple(setup["torques"])  # the coast side's own light and design torque
-    c0 = time.process_time()
+    c0 = cpu_seconds()
     try:  # the flank as synthesised (its pinion tooth is the drive bearing's: the same)
         case0 = drive.case if drive.checked else synthesize(developed, memo=memo)[0]
         m0, grid = evaluation.analyse_design(case0, setup["torques"], options=CHECK_LTCA,
@@ -565,7 +565,7 @@ def coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
     synthesised = DevelopmentEvaluation(
         -1, {k: start[k] for k in targets.variables},
         m0 if m0 is not None else {k: np.full(2, np.nan) for k in METRIC_NAMES},
-        full[0], full[1], full[2], "", time.process_time() - c0, case0, full,
+        full[0], full[1], full[2], "", cpu_seconds() - c0, case0, full,
         checked=m0 is not None, stage="synthesised")
     n_max = targets.coast_max_evaluations
     if m0 is not None:

@@ -36,12 +36,12 @@ from __future__ import annotations
 import dataclasses
 import logging
 import math
-import time
 from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
 import numpy as np
 
+from contact.compliance.fe.worker_cpu import cpu_seconds
 from contact.optimize.development_hollow_limit import HOLLOW_STEP, HollowProbe
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import DevelopmentTargets
@@ -259,7 +259,7 @@ def analysed_further(case: Any, values: Mapping[str, float], crowning: float,
     from contact.optimize.development_pitting import pitting_pressure_limit
     from contact.optimize.development_targets import development_score
 
-    c0 = time.process_time()
+    c0 = cpu_seconds()
     light, design = (float(t) for t in setup["torques"])
     tree = checked_contact(case, values, (light, design), KeptTeeth())
     ltca = tree["/ltca"].to_dataset()
@@ -272,7 +272,7 @@ def analysed_further(case: Any, values: Mapping[str, float], crowning: float,
     e = dataclasses.replace(base, values=dict(values), metrics=ms, objective=full[0],
                             shortfalls=full[1], met=full[2], full=full, case=case,
                             checked=True, stage=STAGE,
-                            seconds=time.process_time() - c0)
+                            seconds=cpu_seconds() - c0)
     return e, probe
 
 
@@ -328,12 +328,12 @@ def checked_hollow_further(best: DevelopmentEvaluation, targets: DevelopmentTarg
     from contact.optimize.development_keep import kept_why
     from geometry.core.errors import InputError
 
-    c0 = time.process_time()
+    c0 = cpu_seconds()
     if not _gate_before_floor(best, targets, cut):
         return Further(best)
     low = float(floor())
     if not further_runs_on(best, targets, cut, low):
-        return Further(best, floor=low, seconds=time.process_time() - c0)
+        return Further(best, floor=low, seconds=cpu_seconds() - c0)
     lte = np.asarray(best.metrics["lte_peak_to_peak"], float).ravel()
     why = (f"its LTE {lte[0]:.1f}/{lte[-1]:.1f} urad against {targets.max_lte:g} above the "
            f"load sharing's floor {low:.0f} urad, after the design torque was cut")
@@ -362,7 +362,7 @@ def checked_hollow_further(best: DevelopmentEvaluation, targets: DevelopmentTarg
             kept = Further(e, case, report, values)
             if e.met:
                 break
-    seconds = time.process_time() - c0
+    seconds = cpu_seconds() - c0
     if kept.case is None:
         say(f"development: the hollow profile one step further kept nothing "
             f"[{seconds:.1f} s CPU]")

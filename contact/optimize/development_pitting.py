@@ -18,12 +18,12 @@ from __future__ import annotations
 
 import logging
 import math
-import time
 from collections.abc import Callable, Iterator, Mapping
 from typing import Any
 
 import numpy as np
 
+from contact.compliance.fe.worker_cpu import cpu_seconds
 from contact.optimize.development_check import checked_analysis, kept_why
 from contact.optimize.development_evaluate import KeptTeeth, bearing_key, evaluation_line
 from contact.optimize.development_result import DevelopmentEvaluation, scored
@@ -102,7 +102,7 @@ def _checked(best: DevelopmentEvaluation, values: Mapping[str, float], label: st
     analysed at ``ltca run``'s sampling at the development's torques
     (:func:`~contact.optimize.development_check.checked_analysis`), scored and said in one
     line as the check's other steps say theirs; None where that failed (logged)."""
-    c0 = time.process_time()
+    c0 = cpu_seconds()
     try:
         case, ms, grid = checked_analysis(setup, placed, values, teeth, bearing_key(values))
     except Exception as exc:  # reported, never fatal: the design it would replace stands
@@ -110,7 +110,7 @@ def _checked(best: DevelopmentEvaluation, values: Mapping[str, float], label: st
         log.info("development pitting check of %s failed: %s", dict(values), exc)
         return None
     e = scored(best, ms, grid, targets, setup["centre_v"], values=dict(values), case=case,
-               checked=True, stage="pitting", seconds=time.process_time() - c0)
+               checked=True, stage="pitting", seconds=cpu_seconds() - c0)
     say(f"  design {best.index + 1} {label}, at the default sampling: "
         + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1]
         + f"; peak {_peak(e):.0f} MPa")
@@ -217,7 +217,7 @@ def checked_pitting(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     say(f"development: flank peak {p:.0f} MPa at {plain_number(torque)} N m above its local "
         f"pitting limit {limit:.0f} MPa (S_H,loc {limit / p:.2f} of S_Hmin): a longer pattern, "
         "centred lower")
-    c0 = time.process_time()
+    c0 = cpu_seconds()
     s0 = slope if slope is not None and abs(slope) >= HEIGHT_SLOPE_MIN else HEIGHT_SLOPE
     seen: dict[str, Any] = {"missed": set()}
     chosen = best
@@ -237,12 +237,12 @@ def checked_pitting(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         tried += "none kept" + (f" (each lowered peak missed {', '.join(missed)})"
                                 if missed else " (none lowered the peak)")
         say(f"development: no longer or lower pattern lowers the peak {p:.0f} MPa and "
-            f"keeps the targets; the design kept [{time.process_time() - c0:.0f} s]")
+            f"keeps the targets; the design kept [{cpu_seconds() - c0:.0f} s]")
     else:
         tried += f"kept, {_peak(chosen):.0f} MPa"
         say(f"development: the pitting step's design kept, peak {_peak(chosen):.0f} MPa at "
             f"{plain_number(torque)} N m ({p:.0f} before; local pitting limit {limit:.0f} MPa) "
-            f"[{time.process_time() - c0:.0f} s]")
+            f"[{cpu_seconds() - c0:.0f} s]")
     if isinstance(setup, dict):  # for the design torque's source where it is cut after
         setup["pitting_tried"] = tried
     return chosen

@@ -44,10 +44,10 @@ from __future__ import annotations
 import dataclasses
 import logging
 import math
-import time
 from collections.abc import Callable
 from typing import Any, NamedTuple
 
+from contact.compliance.fe.worker_cpu import cpu_seconds
 from geometry.core.text import plain_number
 
 __all__ = ["REMEDY_TABLE", "REMEDY_TORQUE_FLOOR", "AppliedRemedy", "above_limit_text",
@@ -766,10 +766,10 @@ def developed_with_remedy(run: Callable[[Any], Any], basic,
             "synthesize without --apply-remedy)")
     # the written case judged as `ltca run` judges it, both flanks, on what both
     # developments measured: a remedy whose verdict is worse is not written
-    cpu = time.process_time()
+    cpu = cpu_seconds()
     worse = verdict_worse(first, second, LTE_LIMIT)
     log.info("apply_remedy: the remedied design's verdict judged against the design as "
-             "given's in %.4f s CPU%s", time.process_time() - cpu,
+             "given's in %.4f s CPU%s", cpu_seconds() - cpu,
              f": worse ({worse})" if worse else ": no worse")
     if worse:
         raise InputError(

@@ -37,12 +37,12 @@ from __future__ import annotations
 import dataclasses
 import logging
 import math
-import time
 from collections.abc import Callable, Mapping
 from typing import Any
 
 import numpy as np
 
+from contact.compliance.fe.worker_cpu import cpu_seconds
 from contact.ltca.edges import EDGE_KINDS
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import DevelopmentTargets, development_score
@@ -131,7 +131,7 @@ def written_drive_check(case: Case, best: DevelopmentEvaluation, targets: Develo
 
     if not best.checked_full or not reread_needed(best.case, case):
         return best
-    c0 = time.process_time()
+    c0 = cpu_seconds()
     try:
         ms, grid = evaluation.analyse_design(case, list(setup["torques"]),
                                              options=evaluation.CHECK_LTCA)
@@ -144,7 +144,7 @@ def written_drive_check(case: Case, best: DevelopmentEvaluation, targets: Develo
                              pressure_limit=grid[4])
     e = dataclasses.replace(best, metrics=ms, objective=full[0], shortfalls=full[1],
                             met=full[2], full=full, case=case, checked=True,
-                            seconds=best.seconds + time.process_time() - c0)
+                            seconds=best.seconds + cpu_seconds() - c0)
     text = written_drive_text(best, e)
     if text:
         say(text)

@@ -60,10 +60,10 @@ import copy
 import dataclasses
 import logging
 import math
-import time
 from collections.abc import Sequence
 from typing import Any, NamedTuple
 
+from contact.compliance.fe.worker_cpu import cpu_seconds
 from contact.optimize.development_conjugacy import VALID_NODE_FRACTION_MIN
 
 __all__ = ["BLANK_SHARE", "RATIO_TRIAL_TEXT", "RECORD_TABLE", "UTE_GROWTH_MAX",
@@ -166,7 +166,7 @@ def check_change(basic, change) -> ChangeCheck:
     from geometry.core.errors import LTCAError
     from geometry.synthesis.case_synthesis import synthesize
 
-    t0 = time.process_time()
+    t0 = cpu_seconds()
     try:
         changed = dataclasses.replace(basic, design=dataclasses.replace(basic.design,
                                                                         **change.design))
@@ -177,8 +177,8 @@ def check_change(basic, change) -> ChangeCheck:
         # refused with its message, never a note that ends the command
         log.info("remedy %s not checked: %s", change.text, exc)
         return ChangeCheck(change, math.nan, math.nan, 0.0, str(exc),
-                           time.process_time() - t0)
-    return ChangeCheck(change, ute, span, valid, "", time.process_time() - t0)
+                           cpu_seconds() - t0)
+    return ChangeCheck(change, ute, span, valid, "", cpu_seconds() - t0)
 
 
 def unrelieved_te_pp(basic, memo: dict | None = None) -> tuple[float, float]:

@@ -56,6 +56,7 @@ from skfem.quadrature import get_quadrature
 from contact.compliance.fe.cholmod_dense import cholmod_kernel
 from contact.compliance.fe.mapped_mesh import basis_fields
 from contact.compliance.fe.options import ELEMENTS
+from contact.compliance.fe.worker_cpu import register_worker
 from geometry.core.errors import InputError, LTCAError, ModelUnavailableError
 from geometry.core.validation import one_of, positive, real
 
@@ -498,6 +499,7 @@ class _Worker:
             self.proc = ctx.Process(target=_serve, args=(kernel, child), daemon=True,
                                     name="fe-factor")
             self.proc.start()
+            register_worker(self.proc)
         finally:
             _PENDING.clear()  # this process's reference: the worker holds its own copy
             child.close()
@@ -579,6 +581,8 @@ class _Child:
 
     def __init__(self, popen: subprocess.Popen) -> None:
         self.popen = popen
+        self.pid = popen.pid
+        register_worker(self)  # its CPU in the development's clock (worker_cpu)
 
     def is_alive(self) -> bool:
         return self.popen.poll() is None
