@@ -108,9 +108,11 @@ from contact.optimize.development_lte_steps import (  # noqa: F401  (re-exported
     CROWNING_LTE_FRACTIONS,
     CROWNING_MATCH_MAX,
     ELLIPSE_STEP,
+    FLATTER_LONG_FRACTIONS,
     RELIEF_LTE_FRACTIONS,
     checked_crowning_lte,
     checked_ellipse,
+    checked_flatter_long,
     checked_long,
     checked_overlap_lte,
     checked_relief_lte,
@@ -309,8 +311,9 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     still misses a target (:func:`checked_te_back`); M placed again where those steps
     moved the centre u off its band (:func:`checked_centre_u`); where it still misses the
     development's own LTE target, a longer, flatter bearing with M placed again
-    (:func:`checked_overlap_lte`), and where the design is not tolerant itself, the path
-    turned towards the profile judged against its own tolerance
+    (:func:`checked_overlap_lte`; with a pattern longer than its tolerance, the flatter
+    profile alone, the ellipse kept: :func:`checked_flatter_long`), and where the design
+    is not tolerant itself, the path turned towards the profile judged against its own tolerance
     (:func:`contact.optimize.development_load_lte.checked_load_lte`), and where its
     design torque's LTE still exceeds 60 µrad, a little less root relief with a longer
     ellipse (:func:`contact.optimize.development_load_lte.checked_relief_ellipse_lte`);

@@ -6,7 +6,8 @@ flanks share), a flatter profile and a deeper TE parabola (:func:`checked_crowni
 recording the least LTE the development reached; :func:`crossing_level`; the crowning
 matched to the load, :func:`matched_crowning`), the TE level
 raised back to the flank's own (:func:`checked_te_back`) and less crowning both ways
-where the development's own LTE target is still missed (:func:`checked_overlap_lte`).
+where the development's own LTE target is still missed (:func:`checked_overlap_lte`; on a
+pattern longer than its tolerance the flatter profile alone, :func:`checked_flatter_long`).
 Each design placed and checked at ``ltca run``'s sampling and kept by
 :func:`~contact.optimize.development_keep.kept_why`. Split out of
 :mod:`contact.optimize.development_check` (issue 71, Deliver 5), which re-exports every
@@ -31,6 +32,7 @@ from contact.optimize.development_keep import lost_targets as _lost_targets
 from contact.optimize.development_pattern_steps import checked_centre_u
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import CROWNING_NAME, TE_NAME, DevelopmentTargets
+from contact.optimize.development_variant import pattern_length as _pattern_length
 from contact.optimize.development_variant import said_variant as _said_variant
 from geometry.case import Case
 
@@ -332,8 +334,12 @@ def checked_overlap_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets
     ellipse 0.6 with no profile crowning and M −0.2: 37 / 38.5 µrad, 1.50 / 2.30, the
     bound 33 µrad, every target met, tolerant. Each alone did less (ellipse 0.6: 43 / 43
     µrad, centre u missed; no crowning: 43 / 51 µrad, centre v missed)."""
-    if (not best.checked_full or best.full[1]["lte"] == 0.0
-            or best.full[1]["length"] > 0.0):
+    if not best.checked_full or best.full[1]["lte"] == 0.0:
+        return best
+    if best.full[1]["length"] > 0.0:
+        band_hi = targets.pattern_length + targets.pattern_length_tolerance
+        if _pattern_length(best) > band_hi:
+            return checked_flatter_long(best, targets, setup, teeth, say, placed)
         return best
     values = dict(best.values)
     if "ellipse_length" in targets.variables and "ellipse_length" in values:
@@ -361,6 +367,81 @@ def checked_overlap_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets
     _reached(setup, placed_again, f"design {best.index + 1} with less crowning both ways",
              why)
     return best if why else placed_again
+
+
+#: the profile crowning of :func:`checked_flatter_long`'s designs, as fractions of the
+#: design's, tried in turn (clipped to the variable's lower bound; every other
+#: prescription kept): the flat profile first, which on the FH hypoid 7x33 at Σ 80° met
+#: every target, then half the crowning, which met all but the length
+FLATTER_LONG_FRACTIONS = (0.0, 0.5)
+
+
+def checked_flatter_long(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                         setup: Mapping[str, Any], teeth: KeptTeeth | None,
+                         say: Callable[[str], None],
+                         placed: Callable[[Mapping[str, float]], Case]
+                         ) -> DevelopmentEvaluation:
+    """A drive design that misses the development's LTE target with its light-load pattern
+    longer than the length's tolerance given a flatter profile, the ellipse kept: the
+    profile crowning × :data:`FLATTER_LONG_FRACTIONS` in turn (clipped to its variable's
+    lower bound), each design (a synthesis of steps 3-6) placed and checked at
+    :data:`CHECK_LTCA`, M placed again where it moved the light-load centre u off the band
+    the design met (:func:`checked_centre_u`); the first kept where it ranks better,
+    misses no target the design met (the length was missed already; the centre u and
+    the edges, plastic and pressure included) and is tolerant (:func:`_tolerant_variant`).
+    Called by :func:`checked_overlap_lte` where the pattern is too long for its longer
+    ellipse. A design whose crowning is at its lower bound already, or not a variable,
+    is returned as it is, without an analysis.
+
+    Why: on a face contact ratio below 1 the profile crowning takes the next pair's flank
+    away at the hand-over, so one pair carries the load longer and the deflection's jump
+    sets the design torque's LTE; with less of it the pairs share the load earlier, which
+    lowers the load sharing's floor itself (not only the unloaded TE), and the light-load
+    pattern, which the crowning spreads lengthwise, shortens with it. The other LTE steps
+    miss such a design: :func:`checked_crowning_lte` runs only above the verdict's 60
+    µrad, this step's longer ellipse would lengthen the pattern further, the length step's
+    shorter ellipse raises the LTE and the TE parabola raises both torques' LTE where the
+    crowning already makes the light torque's (Stadtfeld 2014, bearing development for
+    low loaded TE: less profile crowning where the face contact ratio is low). Measured on
+    the FH hypoid 7x33 at Σ 80° of benchmarks/data/unseen_designs (ε_vα 1.03, ε_vβ 0.95;
+    its written bearing path −80°, ellipse 0.75, profile crowning 22.4 µm, te_level 10
+    µrad; ``benchmarks/development_levers.py --check --floor 4 --from-case`` at 37.6 / 251
+    N m, 2026-11-29; LTE p-p light / design, pattern length, the floor ½ p-p(TE_design −
+    TE_light)): as written 31 / 56 µrad, 0.78, floor 42; crowning 15 µm: 25 / 46, 0.72,
+    33; 8 µm: 17 / 34, 0.68, 25; 0: 9 / 22, 0.60, 14 — every target met; te_level 30 / 60
+    / 90 / 130: 35 / 60 … 58 / 75 (both up); path −70° / −60°: 45 / 67, 70 / 85; ellipse
+    0.8 / 0.85: 24 / 54, 18 / 52 (0.83 long) (docs/synthesis.md, "The FH 7×33's LTE at
+    ε_vβ 0.95: the profile crowning")."""
+    if CROWNING_NAME not in targets.variables or CROWNING_NAME not in best.values:
+        return best
+    lo, _ = (float(x) for x in targets.variables[CROWNING_NAME])
+    now = float(best.values[CROWNING_NAME])
+    tried: list[float] = []
+    for fraction in FLATTER_LONG_FRACTIONS:
+        x = float(max(lo, fraction * now))
+        if not x < now - 1e-9 or any(abs(x - t) < 1e-9 for t in tried):
+            continue
+        tried.append(x)
+        e = _said_variant(best, dict(best.values) | {CROWNING_NAME: x}, "flatter long",
+                          f"with profile_crowning {x:.3g} um, the ellipse kept (its LTE "
+                          f"above {targets.max_lte:g} urad, its pattern "
+                          f"{_pattern_length(best):.2f} long)", targets, setup, teeth, say,
+                          placed)
+        if e is None:
+            continue
+        placed_again = e
+        if (best.full[1].get("centre_u", 0.0) == 0.0
+                and e.full[1].get("centre_u", 0.0) > 0.0):
+            placed_again = checked_centre_u(e, targets, setup, teeth, say, placed)
+        why = kept_why(best, placed_again, targets, setup, teeth, say,
+                       "the flatter profile", lost=_lost_targets,
+                       tolerant=placed_again is e)
+        _reached(setup, placed_again, f"design {best.index + 1} with profile_crowning "
+                 f"{x:.3g} um", why)
+        _tried(setup, "the profile crowning flattened")
+        if not why:
+            return placed_again
+    return best
 
 
 #: the profile crowning of :func:`checked_crowning_lte`'s designs, as fractions of the
