@@ -9,11 +9,14 @@ docs/synthesis.md "The development's LTE margin"). The development's keep and lo
 decisions aim at the verdict's limit less :data:`LTE_SAMPLING_MARGIN`; the verdict's limit
 is not touched.
 
-The margin is held against two independent references: the closed form of a sampled
-sinusoid's missed extremes (N samples a cycle, the extremes halfway between two samples:
-the sampled p-p is cos(π/N) of the true one) and the excesses measured on the written
-cases (the table in docs/synthesis.md). The stand-ins are the rule's choices on laws whose
-numbers are the written cases' (each cited), not numbers of a gear.
+The margin is off by default (0: the development aims at the verdict's 60 µrad and writes
+what main wrote): on the 24x29 a 2 % margin cut the design torque from 503 to 259.7 N·m
+(docs/synthesis.md). These tests set the 2 % the measurement justifies and hold it against
+two independent references: the closed form of a sampled sinusoid's missed extremes (N
+samples a cycle, the extremes halfway between two samples: the sampled p-p is cos(π/N) of
+the true one) and the excesses measured on the written cases. The stand-ins are the
+rule's choices on laws whose numbers are the written cases' (each cited), not numbers of a
+gear.
 """
 
 from __future__ import annotations
@@ -49,17 +52,35 @@ MEASURED = {
 }
 
 
-def test_the_verdicts_limit_stays_60_and_the_development_aims_below_it():
-    """The verdict's limit is 60 µrad; the development's aim is it less the margin
-    (identity, to rounding), a few tenths of a µrad to a few µrad below it."""
+#: the margin the measurement justifies (docs/synthesis.md): it covers the closed form's
+#: 1.2 % and the converged excesses below (1.4 % at most)
+MARGIN = 0.02
+
+
+@pytest.fixture
+def margin(monkeypatch):
+    """The development's aim with the 2 % margin set."""
+    monkeypatch.setattr(drl, "LTE_SAMPLING_MARGIN", MARGIN)
+    return MARGIN
+
+
+def test_by_default_the_development_aims_at_the_verdicts_limit():
+    """Off by default: the aim is the verdict's 60 µrad exactly (the cases main wrote)."""
+    assert LTE_LIMIT == 60.0 and drl.verdict_lte_limit() == 60.0
+    assert drl.LTE_SAMPLING_MARGIN == 0.0
+    assert drl.development_lte_limit() == 60.0
+
+
+def test_the_verdicts_limit_stays_60_and_the_development_aims_below_it(margin):
+    """With the margin set the verdict's limit is still 60 µrad; the development's aim is it
+    less the margin (identity, to rounding): 58.8 µrad."""
     assert LTE_LIMIT == 60.0 and drl.verdict_lte_limit() == 60.0
     aim = drl.development_lte_limit()
-    assert aim == pytest.approx(60.0 * (1.0 - drl.LTE_SAMPLING_MARGIN), rel=1e-15)
-    assert 0.0 < drl.LTE_SAMPLING_MARGIN < 0.05  # a margin, not another limit
-    assert 57.0 < aim < 60.0
+    assert aim == pytest.approx(60.0 * (1.0 - margin), rel=1e-15)
+    assert aim == pytest.approx(58.8, rel=1e-12)
 
 
-def test_the_margin_covers_a_sampled_sinusoids_missed_extremes():
+def test_the_margin_covers_a_sampled_sinusoids_missed_extremes(margin):
     """Closed form: a sinusoid of amplitude a sampled at N evenly spaced rolls a cycle whose
     extremes fall halfway between two rolls reads the p-p 2 a cos(π/N) (N even). A curve
     read at the development's aim at ``ltca run``'s N = 20 is at most aim / cos(π/20)
@@ -75,11 +96,11 @@ def test_the_margin_covers_a_sampled_sinusoids_missed_extremes():
     dense = np.ptp(a * np.sin(np.linspace(0.0, 2.0 * math.pi, 20001)))
     assert dense == pytest.approx(2.0 * a, rel=1e-6)
     assert dense <= LTE_LIMIT
-    assert drl.LTE_SAMPLING_MARGIN >= 1.0 - math.cos(math.pi / n)
+    assert margin >= 1.0 - math.cos(math.pi / n)
 
 
 @pytest.mark.parametrize("name", sorted(MEASURED))
-def test_the_margin_covers_the_measured_sampling_excess(name):
+def test_the_margin_covers_the_measured_sampling_excess(name, margin):
     """A written case at the aim whose LTE rises by the measured share at a finer sampling
     stays within 60 µrad: (1 - margin) × fine / coarse ≤ 1 (the measured pairs above)."""
     coarse, fine = MEASURED[name]
@@ -117,10 +138,12 @@ def _start(chosen):
     return dataclasses.replace(start, case=dict(start.values))
 
 
-def test_the_range_step_acts_on_a_peak_between_the_aim_and_60(monkeypatch):
+def test_the_range_step_acts_on_a_peak_between_the_aim_and_60(monkeypatch, margin):
     """59.5 µrad at 217.9 N m between the torques: within the verdict's 60 but above the
     development's aim, so the range step acts on it (before this branch it returned the
-    design as it was); the design it keeps reads 53 µrad there."""
+    design as it was); the design it keeps reads 53 µrad there (the 0.85 ellipse: in the
+    written case the tolerance rule refused it, docs/synthesis.md; the stand-in's law is
+    tolerant, the step's choice is what is tested)."""
     _seen, fake = seen_designs(_law())
     targets, setup, chosen = stand_in(monkeypatch, fake, TORQUES)
     start = _start(chosen)
@@ -135,8 +158,8 @@ def test_the_range_step_acts_on_a_peak_between_the_aim_and_60(monkeypatch):
 
 
 def test_with_no_margin_the_range_step_leaves_59_5(monkeypatch):
-    """The same law with the margin 0: the aim is the verdict's 60 and 59.5 is kept (the
-    rule before this branch; what the margin changes)."""
+    """The same law with the margin 0 (the default): the aim is the verdict's 60 and 59.5
+    is kept (main's rule; what the margin changes)."""
     monkeypatch.setattr(drl, "LTE_SAMPLING_MARGIN", 0.0)
     _seen, fake = seen_designs(_law())
     targets, setup, chosen = stand_in(monkeypatch, fake, TORQUES)
@@ -159,7 +182,7 @@ def _interp(t):
     return float(np.interp(t, ts, xs))
 
 
-def test_the_coast_design_torque_is_lowered_to_the_aim(monkeypatch):
+def test_the_coast_design_torque_is_lowered_to_the_aim(monkeypatch, margin):
     """The crossing is interpolated at the aim, not at 60: 39.5 / 56.15 / 74.2 µrad at 3.3 /
     12.95 / 22.6 N m, the aim's crossing 12.95 + (aim − 56.15) / 18.05 × 9.65 N m written
     rounded down to 0.1 (60's would be 15.0 N m); its own range keeps the aim."""

@@ -134,8 +134,10 @@ def verdict_lte_limit() -> float:
 #: halfway between two of 20 rolls read cos(π/20), 1.2 % low. 2 % covers these; it does
 #: not cover an LTE feature 20 rolls do not resolve (the FM 14x19 at Σ 60°'s coast 59.65 →
 #: 63.66 µrad at 160 rolls, +6.7 %), which a finer sampling of the check, not a margin,
-#: answers (docs/synthesis.md)
-LTE_SAMPLING_MARGIN = 0.02
+#: answers (docs/synthesis.md). **Off (0) by default**: set to 0.02 it cut the 24x29's
+#: design torque from 503 to 259.7 N m (its LTE plateau 58-60 µrad over 190-270 N m) for
+#: 0.7 µrad; the lead's decision (docs/synthesis.md, "The development's LTE margin")
+LTE_SAMPLING_MARGIN = 0.0
 
 
 def development_lte_limit() -> float:
@@ -145,8 +147,8 @@ def development_lte_limit() -> float:
     Returns
     -------
     float
-        ``verdict_lte_limit() * (1 - LTE_SAMPLING_MARGIN)`` [µrad] (58.8 µrad at the
-        verdict's 60 µrad and a 2 % margin).
+        ``verdict_lte_limit() * (1 - LTE_SAMPLING_MARGIN)`` [µrad]: the verdict's 60 µrad
+        by default (the margin off), 58.8 µrad with a 2 % margin.
 
     Raises
     ------
