@@ -127,7 +127,10 @@ def coast_lte_torque(case: Case, basic: BasicDesign, coast: Any, cap: CoastCapac
                      say: Callable[[str], None], *, own_torque: bool = False
                      ) -> tuple[Any, CoastCapacity | None]:
     """The written coast flank at a coast design torque no higher than where its LTE p-p
-    keeps the verdict's limit at every torque ``ltca run --flank coast`` judges.
+    keeps the development's aim at every torque ``ltca run --flank coast`` judges (the
+    verdict's limit less the sampling margin,
+    :func:`~contact.optimize.development_range_lte.development_lte_limit`; off by default:
+    the verdict's 60 µrad).
 
     Parameters
     ----------

@@ -342,7 +342,9 @@ def range_better(setup: Mapping[str, Any], teeth: KeptTeeth | None,
     teeth : KeptTeeth or None
         The kept shell teeth.
     limit : float, optional — [µrad]
-        Default ``ltca run``'s verdict limit (:data:`contact.study.verdicts.LTE_LIMIT`).
+        Default the development's aim (:func:`development_lte_limit`: ``ltca run``'s
+        verdict limit :data:`contact.study.verdicts.LTE_LIMIT` less
+        :data:`LTE_SAMPLING_MARGIN`, off by default).
     flank, key_prefix : optional
         :func:`range_lte`'s (default the drive flank's).
 
@@ -699,7 +701,8 @@ def checked_range_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                       placed: Callable[[Mapping[str, float]], Case]) -> DevelopmentEvaluation:
     """The check's last step: the kept drive design's LTE judged between the development's
     torques as ``ltca run`` judges it (:func:`range_lte`), and where it exceeds the
-    verdict's limit there (within it at both of its own torques, or above it at one and
+    development's aim there (:func:`development_lte_limit`: the verdict's limit less the
+    sampling margin, off by default) (within it at both of its own torques, or above it at one and
     higher still between them: :func:`acts_between`), the path turned towards the profile
     on that peak
     (:func:`~contact.optimize.development_path_lte.checked_path_lte`), then, where it is
