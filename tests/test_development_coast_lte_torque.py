@@ -20,8 +20,18 @@ import numpy as np
 import pytest
 
 from contact.optimize import development_coast_lte_torque as lte_torque
+from contact.optimize import development_range_lte as drl
 from contact.optimize.development_coast import CoastCapacity, CoastCheck
 from contact.optimize.development_targets import DevelopmentTargets
+
+
+@pytest.fixture(autouse=True)
+def _aim_at_the_verdicts_limit(monkeypatch):
+    """The rule's choices written at its aim of 60 µrad: the development's sampling margin
+    below the verdict's limit (development_range_lte.development_lte_limit) set to 0 here;
+    the margin is tests/test_development_lte_margin.py's."""
+    monkeypatch.setattr(drl, "LTE_SAMPLING_MARGIN", 0.0)
+
 
 #: the 12x27's coast (light, design) torque [N·m], the drive's light torque, its LTE law
 TWELVE = {"light": 3.3, "design": 22.6, "drive_light": 5.5,

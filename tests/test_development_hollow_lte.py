@@ -27,6 +27,15 @@ from contact.optimize import development_hollow_lte as dh
 from contact.optimize import development_range_lte as drl
 from contact.optimize.development_targets import scaled_variables
 
+
+@pytest.fixture(autouse=True)
+def _aim_at_the_verdicts_limit(monkeypatch):
+    """The rule's choices written at its aim of 60 µrad: the development's sampling margin
+    below the verdict's limit (development_range_lte.development_lte_limit) set to 0 here;
+    the margin is tests/test_development_lte_margin.py's."""
+    monkeypatch.setattr(drl, "LTE_SAMPLING_MARGIN", 0.0)
+
+
 TORQUES = (55.6, 371.2)
 #: ltca run's lte_range torques of a case run at them: 55.6 / 160.8 / 266 / 371.2 N m
 GRID = lte_range_torques(TORQUES, TORQUES[1])

@@ -20,6 +20,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from contact.optimize import development_range_lte as drl
 from contact.optimize.development_process import (
     CutForeseen,
     better_outcome,
@@ -31,6 +32,15 @@ from contact.optimize.development_process import (
 )
 from contact.optimize.development_result import DevelopmentResult
 from geometry.synthesis.basic_design import load_basic
+
+
+@pytest.fixture(autouse=True)
+def _aim_at_the_verdicts_limit(monkeypatch):
+    """The rule's choices written at its aim of 60 µrad: the development's sampling margin
+    below the verdict's limit (development_range_lte.development_lte_limit) set to 0 here;
+    the margin is tests/test_development_lte_margin.py's."""
+    monkeypatch.setattr(drl, "LTE_SAMPLING_MARGIN", 0.0)
+
 
 UNSEEN = Path(__file__).resolve().parents[1] / "benchmarks" / "data" / "unseen_designs"
 

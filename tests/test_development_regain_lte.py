@@ -19,10 +19,20 @@ import pytest
 from development_stand_ins import checked, lte_law_start
 
 from contact.optimize import development as dev
+from contact.optimize import development_range_lte as drl
 from contact.optimize import development_regain as dreg
 from contact.optimize import development_root as droot
 from contact.optimize.development_regain_lte import lte_kept_raise
 from contact.optimize.development_result import case_torques
+
+
+@pytest.fixture(autouse=True)
+def _aim_at_the_verdicts_limit(monkeypatch):
+    """The rule's choices written at its aim of 60 µrad: the development's sampling margin
+    below the verdict's limit (development_range_lte.development_lte_limit) set to 0 here;
+    the margin is tests/test_development_lte_margin.py's."""
+    monkeypatch.setattr(drl, "LTE_SAMPLING_MARGIN", 0.0)
+
 
 #: (torque [N m], LTE p-p [µrad]) of the 16×16's written drive bearing (ltca run)
 _LAW = ((41.7, 53.3), (45.0, 52.5), (58.6, 53.6), (127.8, 41.0), (150.0, 35.0),

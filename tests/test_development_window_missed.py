@@ -18,6 +18,7 @@ from development_stand_ins import WindowResult, checked
 from development_stand_ins import metrics as _metrics
 
 from contact.optimize import development as dev
+from contact.optimize import development_range_lte as drl
 from contact.optimize.development import DevelopmentTargets
 from contact.optimize.development_range_lte import RANGE_KEY
 from contact.optimize.development_written_lte import (
@@ -25,6 +26,15 @@ from contact.optimize.development_written_lte import (
     redeveloped_in_window,
     window_missed,
 )
+
+
+@pytest.fixture(autouse=True)
+def _aim_at_the_verdicts_limit(monkeypatch):
+    """The rule's choices written at its aim of 60 µrad: the development's sampling margin
+    below the verdict's limit (development_range_lte.development_lte_limit) set to 0 here;
+    the margin is tests/test_development_lte_margin.py's."""
+    monkeypatch.setattr(drl, "LTE_SAMPLING_MARGIN", 0.0)
+
 
 _VALUES = {"path_angle": -45.0, "ellipse_length": 0.7}
 _TORQUES = (80.1, 534.3)

@@ -18,7 +18,17 @@ import pytest
 from development_stand_ins import WindowResult, checked, lte_law_start
 from development_stand_ins import metrics as _metrics
 
+from contact.optimize import development_range_lte as drl
 from contact.optimize.development_written_lte import lowered_torque, written_lte_capacity
+
+
+@pytest.fixture(autouse=True)
+def _aim_at_the_verdicts_limit(monkeypatch):
+    """The rule's choices written at its aim of 60 µrad: the development's sampling margin
+    below the verdict's limit (development_range_lte.development_lte_limit) set to 0 here;
+    the margin is tests/test_development_lte_margin.py's."""
+    monkeypatch.setattr(drl, "LTE_SAMPLING_MARGIN", 0.0)
+
 
 #: (torque [N m], LTE p-p [µrad]) of the 14x36's written bearing
 _LAW = ((20.0, 45.0), (55.6, 49.1), (161.0, 60.3), (266.0, 71.2), (371.2, 83.5))

@@ -58,7 +58,7 @@ from contact.optimize.development_coast import CoastCapacity
 from contact.optimize.development_coast_flank import coast_flank_capacity
 from contact.optimize.development_evaluate import KeptTeeth, bearing_key
 from contact.optimize.development_process import TORQUE_CUT_FRACTION
-from contact.optimize.development_range_lte import range_lte
+from contact.optimize.development_range_lte import development_lte_limit, range_lte
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import DevelopmentTargets
 from contact.optimize.development_written_lte import lowered_torque
@@ -127,7 +127,10 @@ def coast_lte_torque(case: Case, basic: BasicDesign, coast: Any, cap: CoastCapac
                      say: Callable[[str], None], *, own_torque: bool = False
                      ) -> tuple[Any, CoastCapacity | None]:
     """The written coast flank at a coast design torque no higher than where its LTE p-p
-    keeps the verdict's limit at every torque ``ltca run --flank coast`` judges.
+    keeps the development's aim at every torque ``ltca run --flank coast`` judges (the
+    verdict's limit less the sampling margin,
+    :func:`~contact.optimize.development_range_lte.development_lte_limit`; off by default:
+    the verdict's 60 µrad).
 
     Parameters
     ----------
@@ -185,7 +188,7 @@ def coast_lte_torque(case: Case, basic: BasicDesign, coast: Any, cap: CoastCapac
     crossing as the drive's (:func:`~contact.optimize.development_written_lte.
     written_lte_capacity`).
     """
-    from contact.study.verdicts import LTE_LIMIT
+    limit = development_lte_limit()  # the verdict's 60 µrad less the sampling margin
 
     e = coast.best if coast is not None else None
     if (e is None or not e.checked_full or len(coast.torques) != 2
@@ -195,12 +198,12 @@ def coast_lte_torque(case: Case, basic: BasicDesign, coast: Any, cap: CoastCapac
     light, design = (float(t) for t in coast.torques)
     before = range_lte(e, dict(setup, torques=[light, design]), teeth, flank="coast",
                        key_prefix=key)
-    if before is None or not max(before[1]) > LTE_LIMIT:
+    if before is None or not max(before[1]) > limit:
         return coast, cap
     if basic is not None and ((basic.gives_design_torque and not own_torque)
                               or basic.rating.get("coast_design_torque") is not None):
         say(f"development: the written coast LTE p-p {_curve(before)}, above "
-            f"{LTE_LIMIT:g} urad; the design torque the basic file gives is kept")
+            f"{limit:g} urad; the design torque the basic file gives is kept")
         return coast, cap
     seen = dict(zip(before[0], before[1], strict=True))
     # never below half the coast design torque (a cut, development_process) nor the
@@ -215,7 +218,7 @@ def coast_lte_torque(case: Case, basic: BasicDesign, coast: Any, cap: CoastCapac
     fe_why = setup.get("fe_level_why")
     for _ in range(LTE_TRIES):
         ts = sorted(seen)
-        new = lowered_torque(ts, [seen[t] for t in ts], LTE_LIMIT, design)
+        new = lowered_torque(ts, [seen[t] for t in ts], limit, design)
         if not (math.isfinite(new) and new > floor):
             crossing = new  # the light torque above the limit already, or a deep cut
             break
@@ -235,8 +238,8 @@ def coast_lte_torque(case: Case, basic: BasicDesign, coast: Any, cap: CoastCapac
                           key_prefix=key)
         if found is None:
             break
-        if not max(found[1]) > LTE_LIMIT:
-            reason = lte_torque_reason(before, found, design, at[1], LTE_LIMIT)
+        if not max(found[1]) > limit:
+            reason = lte_torque_reason(before, found, design, at[1], limit)
             say(f"development: coast design torque {plain_number(design)} -> "
                 f"{plain_number(at[1])} N m: {reason}")
             prior = (cap.reason + "; ") if cap is not None and cap.reason else ""
@@ -248,13 +251,13 @@ def coast_lte_torque(case: Case, basic: BasicDesign, coast: Any, cap: CoastCapac
                 prior + reason, True)
         tried.append(f"at {plain_number(at[1])} N m {_curve(found)}")
         seen.update(zip(found[0], found[1], strict=True))
-        if found[1][0] > LTE_LIMIT:  # the lowered light torque above the limit already
+        if found[1][0] > limit:  # the lowered light torque above the limit already
             break
     if fe_why is None:
         setup.pop("fe_level_why", None)
     else:
         setup["fe_level_why"] = fe_why
-    say(f"development: the written coast LTE p-p {_curve(before)}, above {LTE_LIMIT:g} "
+    say(f"development: the written coast LTE p-p {_curve(before)}, above {limit:g} "
         f"urad: no coast design torque below {plain_number(design)} N m found where it "
         f"keeps it at every torque" + _why_not(tried, before, crossing, design, floor))
     return coast, cap
@@ -265,16 +268,16 @@ def _why_not(tried: list[str], before: tuple[tuple[float, ...], tuple[float, ...
     """The clause of :func:`coast_lte_torque`'s line where it lowers nothing: the
     torques tried, the light torque's LTE above the limit, or the crossing below the
     floor (half the coast design torque or the drive's light torque) [N·m]."""
-    from contact.study.verdicts import LTE_LIMIT
+    limit = development_lte_limit()  # the verdict's 60 µrad less the sampling margin
 
     if tried:
         return f" (tried {'; '.join(tried)})"
-    if before[1][0] > LTE_LIMIT:
+    if before[1][0] > limit:
         return " (its light torque's above it already)"
     if math.isfinite(crossing):
         bound = (f"{TORQUE_CUT_FRACTION:g} of it" if floor <= TORQUE_CUT_FRACTION * design
                  else "the drive's light torque")
-        return (f" at or above {plain_number(floor)} N m: it keeps {LTE_LIMIT:g} urad up to "
+        return (f" at or above {plain_number(floor)} N m: it keeps {limit:g} urad up to "
                 f"{plain_number(crossing)} N m only, {crossing / design:.0%} of "
                 f"{plain_number(design)} N m, and a coast design torque is not cut below "
                 f"{bound} for an LTE the verdict calls an attention; "

@@ -69,8 +69,9 @@ def checked_coast_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     redevelopment's pitting bound,
     :func:`contact.optimize.development_coast_flank.pitting_pressure`): the coast design
     torque, set afterwards by the coast flank's capacity, is not given up for it.
-    ``lte_limit`` [µrad]: the verdict's ``lte`` limit (default
-    :data:`contact.study.verdicts.LTE_LIMIT`, 60 µrad); a design within it at its light and
+    ``lte_limit`` [µrad]: the development's LTE aim (default
+    :func:`~contact.optimize.development_range_lte.development_lte_limit`, the verdict's
+    60 µrad less the sampling margin); a design within it at its light and
     design torque is judged between them as ``ltca run --flank coast`` judges it
     (:func:`~contact.optimize.development_range_lte.range_lte` on the coast flank: its
     ``lte_range`` torques, the crossing bisected) and returned as it is where it keeps the
@@ -110,10 +111,14 @@ def checked_coast_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     path −58.75°, ellipse 0.4, tip relief from 0.5: LTE 111 / 68 µrad, 1389 MPa); ellipse
     0.7 with the tip relief from 0.85: 54 / 38 µrad, 1079 MPa, pattern 0.60 long, no edge
     (``python -m contact run --flank coast`` on the case edited by hand, 2026-11-26)."""
-    from contact.optimize.development_range_lte import range_better, range_lte, range_peak
-    from contact.study.verdicts import LTE_LIMIT
+    from contact.optimize.development_range_lte import (
+        development_lte_limit,
+        range_better,
+        range_lte,
+        range_peak,
+    )
 
-    limit = LTE_LIMIT if lte_limit is None else float(lte_limit)
+    limit = development_lte_limit() if lte_limit is None else float(lte_limit)
     entered = best
 
     def between(e: DevelopmentEvaluation) -> float:  # its largest LTE over ltca run's range

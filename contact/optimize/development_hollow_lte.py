@@ -56,12 +56,12 @@ from typing import Any
 from contact.optimize.development_evaluate import KeptTeeth
 from contact.optimize.development_keep import kept_why
 from contact.optimize.development_range_lte import (
+    development_lte_limit,
     kept_range_said,
     range_better,
     range_lost,
     range_lte,
     range_peak,
-    verdict_lte_limit,
 )
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import VARIABLES, DevelopmentTargets
@@ -138,7 +138,7 @@ def hollow_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     if any(v > 0.0 for k, v in best.full[1].items() if k not in ("lte", "length")):
         return False
     peak = range_peak(range_lte(best, setup, teeth))[0]
-    return math.isfinite(peak) and peak > verdict_lte_limit()
+    return math.isfinite(peak) and peak > development_lte_limit()
 
 
 def hollow_designs(values: Mapping[str, float], targets: DevelopmentTargets
@@ -241,7 +241,7 @@ def checked_hollow_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     """
     if not hollow_runs_on(best, targets, setup, teeth):
         return best
-    limit = verdict_lte_limit()
+    limit = development_lte_limit()
     better = range_better(setup, teeth, limit)
     lost = range_lost(setup, teeth, limit)
     start = best

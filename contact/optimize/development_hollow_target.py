@@ -51,10 +51,10 @@ from contact.optimize.development_edge_peak import edge_excess, edge_gain
 from contact.optimize.development_evaluate import KeptTeeth
 from contact.optimize.development_keep import kept_why, lost_targets
 from contact.optimize.development_range_lte import (
+    development_lte_limit,
     kept_range_said,
     range_lte,
     range_peak,
-    verdict_lte_limit,
 )
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import VARIABLES, DevelopmentTargets
@@ -129,7 +129,7 @@ def target_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     if {k for k, v in best.full[1].items() if v > 0.0} != {"lte"}:
         return False
     peak = range_peak(range_lte(best, setup, teeth))[0]
-    return math.isfinite(peak) and peak <= verdict_lte_limit()
+    return math.isfinite(peak) and peak <= development_lte_limit()
 
 
 def target_designs(values: Mapping[str, float], targets: DevelopmentTargets
@@ -220,7 +220,7 @@ def checked_hollow_target(best: DevelopmentEvaluation, targets: DevelopmentTarge
     """
     if not target_runs_on(best, targets, setup, teeth):
         return best
-    limit = verdict_lte_limit()
+    limit = development_lte_limit()
 
     def lost(b: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:
         out = lost_targets(b, e)

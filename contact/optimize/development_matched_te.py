@@ -542,16 +542,16 @@ def matched_after_window(best: DevelopmentEvaluation, targets: DevelopmentTarget
     ``benchmarks/development_levers.py --check --floor 4 --from-case``, 2026-11-29).
     """
     from contact.optimize.development_range_lte import (
+        development_lte_limit,
         kept_range_said,
         range_lte,
         range_peak,
-        verdict_lte_limit,
     )
 
     kept = checked_matched_te(best, targets, setup, teeth, say, placed, level=level)
     if kept is best:
         return best
-    limit = verdict_lte_limit()
+    limit = development_lte_limit()
     peak, at = range_peak(range_lte(kept, setup, teeth))
     if not peak <= limit:
         say(f"  not kept: the parabola matched at the lowered torques has its LTE p-p "

@@ -33,7 +33,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
-from contact.optimize.development_range_lte import range_curve, range_lte, verdict_lte_limit
+from contact.optimize.development_range_lte import development_lte_limit, range_curve, range_lte
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import DevelopmentTargets
 from contact.optimize.development_written_lte import written_lte_capacity
@@ -113,7 +113,7 @@ def lte_kept_raise(cut: DevelopmentEvaluation, raised: DevelopmentEvaluation,
     Source: ``ltca run``'s ``lte`` check and issue 71's Done-when.
     """
     new = float(raised_torques[1])
-    limit = verdict_lte_limit()
+    limit = development_lte_limit()
     trial = {k: v for k, v in setup.items() if k not in ("lte_torque", "lte_window")}
     trial["torques"] = [float(t) for t in raised_torques]
     high = range_lte(raised, trial, teeth)

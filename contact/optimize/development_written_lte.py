@@ -54,7 +54,11 @@ import numpy as np
 
 from contact.optimize import development_evaluate as evaluation
 from contact.optimize.development_evaluate import CHECK_LTCA, KeptTeeth, bearing_key
-from contact.optimize.development_range_lte import range_lte, verdict_lte_limit
+from contact.optimize.development_range_lte import (
+    development_lte_limit,
+    range_lte,
+    verdict_lte_limit,
+)
 from contact.optimize.development_result import (
     DevelopmentEvaluation,
     case_torques,
@@ -176,7 +180,7 @@ def written_lte_capacity(best: DevelopmentEvaluation, targets: DevelopmentTarget
     and range; where that range still exceeds the limit its torques join those the crossing
     is interpolated between (at most :data:`_TRIES` lowered torques).
     """
-    limit = verdict_lte_limit()
+    limit = development_lte_limit()
     found = range_lte(best, setup, teeth)
     if found is None:
         return best
@@ -292,8 +296,8 @@ def _below_fail_level(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     """
     from contact.study.verdicts import LTE_FAIL_FACTOR
 
-    limit = verdict_lte_limit()
-    fail = LTE_FAIL_FACTOR * limit
+    limit = development_lte_limit()
+    fail = LTE_FAIL_FACTOR * verdict_lte_limit()
     design = float(setup["torques"][1])
     lowered = there = None
     tried: list[str] = []
@@ -418,7 +422,7 @@ def redeveloped_in_window(run: Callable[..., Any], setup: dict[str, Any], basic:
     if window is None:
         return None
     low, high, _ = window
-    limit = verdict_lte_limit()
+    limit = development_lte_limit()
     torque = floor_torque(high)
     if straight is None:
         straight = WINDOW_STRAIGHT_TO_MIDDLE
@@ -480,7 +484,7 @@ def _straight_to_middle(run: Callable[..., Any], setup: dict[str, Any], basic: A
     :data:`WINDOW_LOWER_STEPS` developments in all. Returns what
     :func:`redeveloped_in_window` returns."""
     low, high, _ = setup["lte_window"]
-    limit = verdict_lte_limit()
+    limit = development_lte_limit()
     upper = floor_torque(high)
     say(f"development: the written drive bearing keeps {limit:g} urad from about "
         f"{plain_number(round(low, 1))} to {plain_number(round(high, 1))} N m only; the drive "
@@ -523,7 +527,7 @@ def _window_try(run: Callable[..., Any], torque: float, setup: dict[str, Any], b
     returns it, or None; where None because its drive LTE p-p broke the limit, its
     reading in words, else "")."""
     low, high, before = setup["lte_window"]
-    limit = verdict_lte_limit()
+    limit = development_lte_limit()
     design = float(setup["torques"][1])
     try:
         again = run(torque, **kw)
@@ -677,7 +681,7 @@ def window_missed(setup: dict[str, Any], best: DevelopmentEvaluation) -> dict[st
     """
     from contact.optimize.development_range_lte import range_record
 
-    limit = verdict_lte_limit()
+    limit = development_lte_limit()
     found = range_record(setup)
     if found is None or found.get("values") != dict(best.values):
         return _unjudged_miss(setup, best, limit)
@@ -780,7 +784,7 @@ def window_name(setup: dict[str, Any], middle: tuple[float, str] | None = None) 
     if window is None:
         return ""
     low, high = float(window[0]), float(window[1])
-    kept = (f"the written drive bearing kept {verdict_lte_limit():g} urad at every torque "
+    kept = (f"the written drive bearing kept {development_lte_limit():g} urad at every torque "
             f"from about {plain_number(round(low, 1))} to {plain_number(round(high, 1))} N m "
             "only")
     if middle is not None and not middle[1]:
