@@ -82,7 +82,8 @@ def test_a_deeper_tip_relief_clears_the_pinion_edge(monkeypatch):
 
 def test_a_longer_relief_where_the_deeper_one_does_not_clear(monkeypatch):
     """The deeper relief lowers the edge to 2600 MPa (kept: lower, nothing lost), still
-    above the static strength: the relief started earlier (0.85 → 0.75) on top of it,
+    above the static strength: deeper again (33.75 µm, the stand-in's edge no lower there:
+    refused), then the relief started earlier (0.85 → 0.75) on top of the one kept,
     2400 MPa, kept; the design written with both."""
     law = functools.partial(_ten_by_43, deep=(2770.0, 2600.0))
     seen, fake = seen_designs(law)
@@ -91,9 +92,68 @@ def test_a_longer_relief_where_the_deeper_one_does_not_clear(monkeypatch):
     seen.clear()
     got = dep.checked_edge_peak(start, targets, setup, None, lambda s: None, dict)
     assert [(s["tip_relief"], s["tip_relief_start"]) for s in seen] == [
-        (22.5, 0.85), (22.5, 0.75)]
+        (22.5, 0.85), (33.75, 0.85), (22.5, 0.75)]
     assert got.values == WRITTEN | {"tip_relief": 22.5, "tip_relief_start": 0.75}
     assert dep.edges_above(got) == {}
+
+
+def _sixteen_by_41(case, torques, misalignment=None, options=None, teeth=None,
+                   pinion_key=(), flank="drive"):
+    """The FH industrial spiral bevel 16x41's law at 289 / 1927 N m (its written case's
+    map, 2026-11-29, docs/synthesis.md "Deeper again"): its pinion edge 4680 MPa with
+    the tip relief 15 µm from 0.85, 2877 with 22.5 µm, none above the static strength
+    with 28–40 µm (``ltca run``'s reading, below the share floor); the relief started
+    earlier (0.75) higher (3945 MPa); the LTE 35–39 µrad throughout, within the target."""
+    r = float(case["tip_relief"])
+    peak = float(np.interp(r, [15.0, 22.5, 28.0], [4680.0, 2877.0, 0.0]))
+    if float(case["tip_relief_start"]) < 0.8:
+        peak = 3945.0
+    m = _metrics(lte_peak_to_peak=[36.0, 37.5], **_peaks(pinion_edge=peak))
+    return m, (0.0, 1.0, 0.0, 1.0, 2400.0)
+
+
+def test_a_deeper_relief_kept_above_the_strength_goes_deeper_again(monkeypatch):
+    """The 16x41: the tip relief 15 → 22.5 µm lowers the pinion edge 4680 → 2877 MPa
+    (kept, still above 2400 by more than the peak's resolution), then 22.5 → 33.75 µm
+    (1.5 ×) clears it: kept, and the step ends there — the earlier start (3945 MPa) is not
+    tried. Before, one deeper design per relief was tried and the earlier start next:
+    the 16x41 was written with its pinion edge at 2915 MPa. The lines name the kept
+    design's peak, not the first one's."""
+    seen, fake = seen_designs(_sixteen_by_41)
+    targets, setup, chosen = stand_in(monkeypatch, fake, [289.0, 1927.0])
+    start = chosen(dict(WRITTEN))
+    assert dep.edges_above(start) == {"pinion_edge": 4680.0}
+    seen.clear()
+    lines = []
+    got = dep.checked_edge_peak(start, targets, setup, None, lines.append, dict)
+    assert [(s["tip_relief"], s["tip_relief_start"]) for s in seen] == [
+        (22.5, 0.85), (33.75, 0.85)]
+    assert got.values == WRITTEN | {"tip_relief": 33.75}
+    assert dep.edges_above(got) == {}
+    said = [s for s in lines if "tip_relief 33.75 um" in s]
+    assert said and "peak 2877 MPa" in said[0], lines
+
+
+def test_deeper_again_stops_at_the_reliefs_bound(monkeypatch):
+    """Each kept deeper relief that leaves the edge above is deepened again, up to the
+    relief's upper bound (60 µm: 22.5, 33.75, 50.62, 60), then the start: no design is
+    tried twice, and the step ends."""
+    def law(case, torques, *a, **kw):
+        r = float(case["tip_relief"])
+        m = _metrics(lte_peak_to_peak=[33.0, 37.4],
+                     **_peaks(pinion_edge=3800.0 - 10.0 * r))  # lower, never cleared
+        return m, (0.0, 1.0, 0.0, 1.0, 2400.0)
+
+    seen, fake = seen_designs(law)
+    targets, setup, chosen = stand_in(monkeypatch, fake, [53.5, 357.0])
+    start = chosen(dict(WRITTEN))
+    seen.clear()
+    got = dep.checked_edge_peak(start, targets, setup, None, lambda s: None, dict)
+    tried = [(s["tip_relief"], s["tip_relief_start"]) for s in seen]
+    assert tried == [(22.5, 0.85), (33.75, 0.85), (50.62, 0.85), (60.0, 0.85),
+                     (60.0, 0.75)]
+    assert got.values["tip_relief"] == 60.0
+    assert dep.edges_above(got) == {"pinion_edge": 3200.0}
 
 
 def test_a_relief_that_brings_edge_contact_at_the_light_torque_is_refused(monkeypatch):
@@ -156,8 +216,9 @@ def test_a_fall_within_the_peaks_resolution_is_not_kept(monkeypatch, peak, kept)
     """The keep rule's minimum gain (:data:`~contact.optimize.development_edge_peak.
     EDGE_GAIN_MIN`, 2.5 % of the static strength: 60 MPa at 2400 MPa, the edge peak's
     resolution at ``ltca run``'s sampling): the deeper relief lowering the pinion edge
-    2770 → 2711 MPa (59 MPa) is refused as no better, 2770 → 2709 (61 MPa) kept; the
-    longer relief, which clears the edge, is kept either way."""
+    2770 → 2711 MPa (59 MPa) is refused as no better, 2770 → 2709 (61 MPa) kept (and
+    deeper again, 33.75 µm, no lower in the stand-in: refused); the longer relief, which
+    clears the edge, is kept either way."""
     law = functools.partial(_ten_by_43, deep=(2770.0, peak))
     seen, fake = seen_designs(law)
     targets, setup, chosen = stand_in(monkeypatch, fake, [53.5, 357.0])
@@ -166,7 +227,8 @@ def test_a_fall_within_the_peaks_resolution_is_not_kept(monkeypatch, peak, kept)
     seen.clear()
     lines = []
     got = dep.checked_edge_peak(start, targets, setup, None, lines.append, dict)
-    assert [s["tip_relief"] for s in seen] == [22.5, 22.5 if kept else 15.0]
+    assert [s["tip_relief"] for s in seen] == ([22.5, 33.75, 22.5] if kept
+                                              else [22.5, 15.0])
     assert got.values == WRITTEN | {"tip_relief": 22.5 if kept else 15.0,
                                     "tip_relief_start": 0.75}
     assert dep.edges_above(got) == {}

@@ -18,8 +18,9 @@ first, tries its lever
 (:data:`LEVERS`): the pinion's tip relief for the pinion's edge (its tip on the gear
 flank), the pinion's root relief for the gear's tip edge (on the pinion's root, which
 a tip relief does not touch), a shorter contact ellipse (more lengthwise crowning) for
-the gear's heel and toe — each relief first deeper (:func:`deeper`), then started earlier
-(:func:`earlier`), the ellipse shortened by :data:`ELLIPSE_FRACTIONS`. Each design goes
+the gear's heel and toe — each relief first deeper (:func:`deeper`; deeper again while
+each deeper one is kept and its edge still above, up to the relief's bound), then started
+earlier (:func:`earlier`), the ellipse shortened by :data:`ELLIPSE_FRACTIONS`. Each design goes
 through the check's one relief loop
 (:func:`~contact.optimize.development_relief_lte.checked_relief_variants`, the table row
 :data:`EDGE_PEAK`): placed and checked at ``ltca run``'s sampling, kept by the check's
@@ -38,7 +39,10 @@ N m) clears it by the root relief 40 → 60 µm; the face-hobbed truck hypoid 8x
 0.425, the root relief → 58.6 µm and the tip relief → 37 µm (LTE 11 / 8 → 28 / 25 µrad);
 the truck hypoid 9x37 its gear tip (4059 MPa), its pinion edge left at 2419 MPa; on the
 10x37 at Σ 95° each relief loses the LTE target and on the 10x43 the deeper tip relief its
-local pitting bound (:func:`pitting_lost`): both written as before.
+local pitting bound (:func:`pitting_lost`): both written as before. Deeper again
+(2026-11-29, docs/synthesis.md "Deeper again"): the FH industrial spiral bevel 16x41's tip
+relief 15 → 22.5 µm left its pinion edge at 2800 MPa at 1927 N m (kept), 33.75 µm clears it
+with every target kept; before, the step tried the start next and wrote 2915 MPa.
 """
 
 from __future__ import annotations
@@ -65,8 +69,9 @@ log = logging.getLogger("contact.optimize.development")
 
 __all__ = ["DEEPER_FACTOR", "DEEPER_RANGE", "EARLIER_STEP", "EDGE_GAIN_MIN", "EDGE_PEAK",
            "EDGE_WORDS", "ELLIPSE_FRACTIONS", "LEVERS", "checked_edge_peak", "deeper",
-           "earlier", "edge_excess", "edge_gain", "edge_peak_runs_on", "edges_above",
-           "edges_to_relieve", "lever_designs", "lower_excess", "lte_lost", "pitting_lost"]
+           "earlier", "edge_designs_once", "edge_excess", "edge_gain", "edge_peak_runs_on",
+           "edges_above", "edges_to_relieve", "lever_designs", "lower_excess", "lte_lost",
+           "pitting_lost"]
 
 #: the prescriptions that take the load off each edge kind (:data:`contact.ltca.edges.
 #: EDGE_KINDS`), tried in turn: the pinion's edge (its tip line on the gear flank) by the
@@ -437,8 +442,8 @@ def edge_peak_runs_on(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     return any(lever_designs(k, best.values, targets) for k in edges_to_relieve(best))
 
 
-def _edge_designs(start: DevelopmentEvaluation, targets: DevelopmentTargets
-                  ) -> Generator[Try, Sent, None]:
+def _edge_designs(start: DevelopmentEvaluation, targets: DevelopmentTargets, *,
+                  again: bool = True) -> Generator[Try, Sent, None]:
     # Why: an edge carries load where the flank's ease-off at the edge is less than the
     # approach the design torque gives there; the relief (or the crowning) at that edge
     # deeper or longer than the deflection keeps the edge out of the loaded pattern
@@ -453,9 +458,12 @@ def _edge_designs(start: DevelopmentEvaluation, targets: DevelopmentTargets
         kind, peak = next(iter(above.items()))
         done.add(kind)
         static = float(np.asarray(best.metrics["edge_static_strength"], float)[-1])
-        for name, x in lever_designs(kind, best.values, targets):
+        queue = lever_designs(kind, best.values, targets)
+        while queue:
+            name, x = queue.pop(0)
             if kind not in edges_to_relieve(best):  # cleared by the design kept
                 break
+            peak = edges_to_relieve(best)[kind]  # the kept design's, not the first one's
             now = float(best.values[name])
             if abs(x - now) < 1e-6:
                 continue
@@ -466,6 +474,45 @@ def _edge_designs(start: DevelopmentEvaluation, targets: DevelopmentTargets
                 f"with {change} (the {EDGE_WORDS[kind]}'s peak {peak:.0f} MPa at the design "
                 f"torque above the static strength {static:.0f} MPa)",
                 f"the {change} for the {EDGE_WORDS[kind]}")
+            # a deeper relief kept that lowered the edge but left it above: deeper again
+            # (the FH 16x41's tip relief 15 -> 22.5 um, pinion edge 4680 -> 2877 MPa,
+            # then 33.75 um: cleared, every target kept), before the relief's start
+            kept = abs(float(best.values[name]) - x) < 1e-6  # (a failed analysis is not)
+            again = (deeper(best.values, name, targets)
+                     if again and kept and name in _AMOUNTS
+                     and kind in edges_to_relieve(best)
+                     else None)
+            if again is not None:
+                queue.insert(0, (name, again))
+
+
+def edge_designs_once(start: DevelopmentEvaluation, targets: DevelopmentTargets
+                      ) -> Generator[Try, Sent, None]:
+    """:data:`EDGE_PEAK`'s designs with one deeper design per relief (no deeper again): the
+    coast flank's edge-peak step's, as before the drive step went deeper again (its coast
+    designs were not measured with it; docs/synthesis.md "Deeper again").
+
+    Parameters
+    ----------
+    start : DevelopmentEvaluation
+        The design the step starts from (checked).
+    targets : DevelopmentTargets
+        The levers' bounds (``variables``).
+
+    Returns
+    -------
+    generator of Try
+        Each design in turn; each ``yield`` is given back (the design kept, why not).
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Source: :data:`LEVERS` (Litvin & Fuentes 2004, §9.4).
+    """
+    return _edge_designs(start, targets, again=False)
 
 
 #: the edge-peak variant: the relief (or the crowning) of each edge above the static
@@ -629,8 +676,9 @@ def checked_edge_peak(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                       placed: Callable[[Mapping[str, float]], Case]) -> DevelopmentEvaluation:
     """The drive design ``best`` with its edges' peak at the design torque within the
     flank's static strength where a relief does it: :data:`EDGE_PEAK` through the check's
-    relief loop (module docstring). At most two designs per edge kind above the static
-    strength (four kinds).
+    relief loop (module docstring). Per edge kind above the static strength (four kinds):
+    at most one design per lever, but for a relief deepened again after each deeper one
+    kept (× :data:`DEEPER_FACTOR` up to its bound: at most four from 15 µm to 60 µm).
 
     Parameters
     ----------
