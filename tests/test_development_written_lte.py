@@ -122,6 +122,13 @@ def test_a_lowered_light_torque_above_the_limit_keeps_the_design(monkeypatch):
     # analysed (not the law's own points), so within the law's brackets of 60 µrad only
     low, high, _text = setup["lte_window"]
     assert 31.8 < low < 40.0 and 187.1 < high < 213.4
+    # and the bearing's reading at its own light torque 55.6 N m, which decides whether the
+    # re-development goes straight to the window's middle (light_end_missed): the law's
+    # 49.1 µrad there, within 60, so the upper end first (lte87's 14x36: kept there)
+    light, lte = setup["lte_window_light"]
+    assert light == pytest.approx(55.6, abs=1e-9) and lte == pytest.approx(49.1, abs=1e-6)
+    from contact.optimize.development_written_lte import light_end_missed
+    assert not light_end_missed(setup)
 
 
 def _window_setup():
