@@ -527,6 +527,10 @@ def light_end_missed(setup: dict[str, Any]) -> bool:
         keeps the limit, is not finite or was not recorded (a setup made before it was:
         the upper end first, as before).
 
+    Raises
+    ------
+    Nothing.
+
     Notes
     -----
     Why (issue 71, branch cpu101): a bearing whose LTE at light load is above the limit
