@@ -26,7 +26,9 @@ window it keeps the limit in is recorded and :func:`redeveloped_in_window` devel
 drive again at its upper end, kept where that development keeps the limit (the 14x36:
 211.7 N m, 46.8 / 50.1 µrad); where the bearing developed there breaks the limit, at the
 window's geometric middle below it, at most twice (the 17x23: 926.9 and 638.9 N m missed,
-530.5 N m kept; branch lowratio95). A design torque the basic file gives is kept. That
+530.5 N m kept; branch lowratio95); where the written bearing broke the limit at its own
+light torque already, straight at that middle, the upper end not developed
+(:func:`light_end_missed`, branch cpu101). A design torque the basic file gives is kept. That
 re-development is stopped after its drive steps where its check's own LTE record over
 ``ltca run``'s range exceeds the limit already (:class:`WindowMissed`,
 :func:`window_missed`): it could not be kept, so its coast flank, FE root checks and
