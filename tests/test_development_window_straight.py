@@ -1,6 +1,7 @@
 """The LTE window's re-development straight to the middle
 (:func:`contact.optimize.development_written_lte.redeveloped_in_window`, ``straight``;
-``WINDOW_STRAIGHT_TO_MIDDLE``; issue 71, branch middle100).
+``WINDOW_STRAIGHT_TO_MIDDLE``; issue 71, branch middle100) and the rule that takes it by
+default where the written bearing's light end missed (``light_end_missed``, branch cpu101).
 
 The window is the FM spiral bevel 17x23 of benchmarks/data/unseen_designs as logged on main
 (its written bearing within 60 µrad from about 440.5 to 926.9 N m; developed at the upper end
@@ -27,9 +28,15 @@ _MISSED = {"torques": (139.0, 926.9), "lte": (72.1, 77.6), "peak": 77.6, "at": 9
            "values": dict(_VALUES), "judged": False}
 
 
-def _window(low: float = 440.5, high: float = 926.9) -> dict:
-    return {"torques": [230.5, 1537.0], "source": "the ISO 10300 capacity",
-            "lte_window": (low, high, "94.8 / 96.0 urad at 230.5 / 1537 N m")}
+def _window(low: float = 440.5, high: float = 926.9, light: float | None = None) -> dict:
+    """The 17x23's setup after written_lte_capacity; ``light`` the written bearing's LTE
+    p-p [µrad] at its light torque 230.5 N m (the 17x23's 94.8) where given, else no
+    reading (a setup of before branch cpu101)."""
+    setup = {"torques": [230.5, 1537.0], "source": "the ISO 10300 capacity",
+             "lte_window": (low, high, "94.8 / 96.0 urad at 230.5 / 1537 N m")}
+    if light is not None:
+        setup["lte_window_light"] = (230.5, light)
+    return setup
 
 
 def _kept(torque: float) -> WindowResult:
@@ -108,21 +115,29 @@ def test_a_wide_window_s_upper_end_is_not_tried_when_its_middle_is_kept():
     assert got.lte_torque == pytest.approx(74.1, abs=1e-9)
 
 
-def test_a_narrow_window_goes_to_its_upper_end_and_the_default_is_off(monkeypatch):
+def test_a_narrow_window_goes_to_its_upper_end_and_the_switch_overrides_the_rule(
+        monkeypatch):
     """A window 800-926.9 N m: its middle 861.1 N m within 1.1 × of 926.9, so straight
     develops the upper end as without it. The default (straight None) reads
-    WINDOW_STRAIGHT_TO_MIDDLE, False: the upper end first; True: the middle first. After a
-    capacity cut (middle False) straight changes nothing."""
+    WINDOW_STRAIGHT_TO_MIDDLE, None: the rule light_end_missed (a setup without the light
+    end's reading: the upper end first); False: the upper end first even where the light
+    end missed; True: the middle first. After a capacity cut (middle False) straight changes
+    nothing."""
     asked: list[dict] = []
     redeveloped_in_window(_run(asked, 0.0), _window(800.0, 926.9), "as given",
                           lambda s: None, middle=True, straight=True)
     assert asked[0]["torque"] == pytest.approx(926.9, abs=1e-9)
     assert "torque_name" not in asked[0]
 
-    assert written.WINDOW_STRAIGHT_TO_MIDDLE is False
+    assert written.WINDOW_STRAIGHT_TO_MIDDLE is None
     asked.clear()
     redeveloped_in_window(_run(asked, 1e9), _window(), "as given", lambda s: None,
                           middle=True)
+    assert [a["torque"] for a in asked] == [pytest.approx(926.9, abs=1e-9)]
+    monkeypatch.setattr(written, "WINDOW_STRAIGHT_TO_MIDDLE", False)
+    asked.clear()
+    redeveloped_in_window(_run(asked, 1e9), _window(light=94.8), "as given",
+                          lambda s: None, middle=True)
     assert [a["torque"] for a in asked] == [pytest.approx(926.9, abs=1e-9)]
     monkeypatch.setattr(written, "WINDOW_STRAIGHT_TO_MIDDLE", True)
     asked.clear()
@@ -132,3 +147,26 @@ def test_a_narrow_window_goes_to_its_upper_end_and_the_default_is_off(monkeypatc
     asked.clear()
     redeveloped_in_window(_run(asked, 1e9), _window(), "as given", lambda s: None)
     assert [a["torque"] for a in asked] == [pytest.approx(926.9, abs=1e-9)]
+
+
+def test_the_rule_goes_straight_where_the_written_bearing_s_light_end_missed():
+    """By default (straight None, WINDOW_STRAIGHT_TO_MIDDLE None) the written bearing's LTE
+    at its own light torque decides: the 17x23's 94.8 µrad at 230.5 N m (above the verdict's
+    60) goes straight to the middle 638.9 N m, then 530.5 — the torque the upper end first
+    reaches, one development fewer; the 24x29's kind of window, its light end within the
+    limit (17.1 µrad), goes to the upper end first as before; a reading at the limit itself
+    (60.0) keeps the limit (the verdict's check is ``≤``), a NaN reading decides nothing
+    (the upper end first)."""
+    asked: list[dict] = []
+    got = redeveloped_in_window(_run(asked, 600.0), _window(light=94.8), "as given",
+                                lambda s: None, middle=True)
+    assert [a["torque"] for a in asked] == [pytest.approx(t, abs=1e-9)
+                                            for t in (638.9, 530.5)]
+    assert got.lte_torque == pytest.approx(530.5, abs=1e-9)
+    for light in (17.1, 60.0, float("nan")):
+        asked.clear()
+        redeveloped_in_window(_run(asked, 1e9), _window(light=light), "as given",
+                              lambda s: None, middle=True)
+        assert [a["torque"] for a in asked] == [pytest.approx(926.9, abs=1e-9)], light
+    assert written.light_end_missed(_window(light=60.000001))
+    assert not written.light_end_missed(_window())

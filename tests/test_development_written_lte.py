@@ -132,6 +132,13 @@ def test_a_lowered_light_torque_above_the_limit_keeps_the_design(monkeypatch):
     # analysed (not the law's own points), so within the law's brackets of 60 µrad only
     low, high, _text = setup["lte_window"]
     assert 31.8 < low < 40.0 and 187.1 < high < 213.4
+    # and the bearing's reading at its own light torque 55.6 N m, which decides whether the
+    # re-development goes straight to the window's middle (light_end_missed): the law's
+    # 49.1 µrad there, within 60, so the upper end first (lte87's 14x36: kept there)
+    light, lte = setup["lte_window_light"]
+    assert light == pytest.approx(55.6, abs=1e-9) and lte == pytest.approx(49.1, abs=1e-6)
+    from contact.optimize.development_written_lte import light_end_missed
+    assert not light_end_missed(setup)
 
 
 def _window_setup():
@@ -333,3 +340,24 @@ def test_an_lte_just_above_the_limit_is_not_written_as_the_limit():
     assert _curve(((194.2,), (60.8,))) == "60.8 urad at 194.2 N m"
     assert _curve(((150.0,), (59.97,))) == "60.0 urad at 150 N m"  # within: at the limit
     assert _curve(((150.0,), (60.0,))) == "60.0 urad at 150 N m"
+
+
+def test_a_window_records_the_written_bearing_s_light_end(monkeypatch):
+    """The 17x23's written bearing (its range as logged: 94.8 / 22.6 / 85.0 / 96.0 µrad at
+    230.5 / 666 / 1102 / 1537 N m, linear between; a steeper rise below its light torque,
+    the unloaded TE's): no lowered torque keeps 60 µrad, a window between the two
+    crossings is recorded, and with it the reading at the development's own light torque
+    230.5 N m, 94.8 µrad — above the limit, so the re-development goes straight to the
+    window's middle (development_written_lte.light_end_missed; branch cpu101). The law's
+    points are the log's, so the reading compares to round-off (1e-6 µrad)."""
+    from contact.optimize.development_written_lte import light_end_missed
+
+    law = ((20.0, 300.0), (230.5, 94.8), (666.0, 22.6), (1102.0, 85.0), (1537.0, 96.0))
+    targets, setup, best, _ = _start(monkeypatch, law, torques=(230.5, 1537.0))
+    got = written_lte_capacity(best, targets, setup, None, lambda s: None)
+    assert got is best and "lowered" not in setup
+    low, high, _text = setup["lte_window"]
+    assert 230.5 < low < 666.0 < high < 1102.0
+    light, lte = setup["lte_window_light"]
+    assert light == pytest.approx(230.5, abs=1e-9) and lte == pytest.approx(94.8, abs=1e-6)
+    assert light_end_missed(setup)

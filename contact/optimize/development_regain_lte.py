@@ -114,7 +114,8 @@ def lte_kept_raise(cut: DevelopmentEvaluation, raised: DevelopmentEvaluation,
     """
     new = float(raised_torques[1])
     limit = development_lte_limit()
-    trial = {k: v for k, v in setup.items() if k not in ("lte_torque", "lte_window")}
+    trial = {k: v for k, v in setup.items() if k not in ("lte_torque", "lte_window",
+                                                        "lte_window_light")}
     trial["torques"] = [float(t) for t in raised_torques]
     high = range_lte(raised, trial, teeth)
     if high is None or not max(high[1]) > limit:

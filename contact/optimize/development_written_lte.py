@@ -26,7 +26,9 @@ window it keeps the limit in is recorded and :func:`redeveloped_in_window` devel
 drive again at its upper end, kept where that development keeps the limit (the 14x36:
 211.7 N m, 46.8 / 50.1 µrad); where the bearing developed there breaks the limit, at the
 window's geometric middle below it, at most twice (the 17x23: 926.9 and 638.9 N m missed,
-530.5 N m kept; branch lowratio95). A design torque the basic file gives is kept. That
+530.5 N m kept; branch lowratio95); where the written bearing broke the limit at its own
+light torque already, straight at that middle, the upper end not developed
+(:func:`light_end_missed`, branch cpu101). A design torque the basic file gives is kept. That
 re-development is stopped after its drive steps where its check's own LTE record over
 ``ltca run``'s range exceeds the limit already (:class:`WindowMissed`,
 :func:`window_missed`): it could not be kept, so its coast flank, FE root checks and
@@ -39,7 +41,7 @@ re-developed bearing's own root-stress and local pitting capacity hold at that t
 Public names
 ------------
 written_lte_capacity, lowered_torque, lte_window, redeveloped_in_window, window_name,
-window_missed, WindowMissed, judged_where, WINDOW_STRAIGHT_TO_MIDDLE
+window_missed, WindowMissed, judged_where, WINDOW_STRAIGHT_TO_MIDDLE, light_end_missed
 """
 
 from __future__ import annotations
@@ -71,8 +73,8 @@ from geometry.core.errors import raise_if_interrupted
 from geometry.core.text import plain_number
 
 __all__ = ["WINDOW_STRAIGHT_TO_MIDDLE", "WindowMissed", "given_torque_of", "judged_where",
-           "lowered_torque", "lte_window", "redeveloped_in_window", "window_missed",
-           "window_name", "written_lte_capacity"]
+           "light_end_missed", "lowered_torque", "lte_window", "redeveloped_in_window",
+           "window_missed", "window_name", "written_lte_capacity"]
 
 log = logging.getLogger("contact.optimize.development")
 
@@ -232,6 +234,8 @@ def written_lte_capacity(best: DevelopmentEvaluation, targets: DevelopmentTarget
                        f"{limit:g} urad at no lower design torque ({before}{window})")
     if math.isfinite(low) and math.isfinite(high) and high < design:
         setup["lte_window"] = (low, high, before)
+        lightest = int(np.argmin(found[0]))
+        setup["lte_window_light"] = (float(found[0][lightest]), float(found[1][lightest]))
     return best
 
 
@@ -374,7 +378,9 @@ def redeveloped_in_window(run: Callable[..., Any], setup: dict[str, Any], basic:
         at the middles below it as above, at most :data:`WINDOW_LOWER_STEPS`
         developments in all); where that middle is within :data:`WINDOW_LOWER_STEP` of
         the upper end, at the upper end as with False. Default None:
-        :data:`WINDOW_STRAIGHT_TO_MIDDLE`.
+        :data:`WINDOW_STRAIGHT_TO_MIDDLE`, and where that is None (its default) the rule
+        :func:`light_end_missed`: straight where the written bearing's LTE p-p at its own
+        light torque broke the limit already (``setup["lte_window_light"]``).
 
     Returns
     -------
@@ -426,6 +432,8 @@ def redeveloped_in_window(run: Callable[..., Any], setup: dict[str, Any], basic:
     torque = floor_torque(high)
     if straight is None:
         straight = WINDOW_STRAIGHT_TO_MIDDLE
+    if straight is None:
+        straight = light_end_missed(setup)
     first = floor_torque(math.sqrt(low * torque)) if middle and straight else math.nan
     if math.isfinite(first) and first * WINDOW_LOWER_STEP <= torque:
         return _straight_to_middle(run, setup, basic, say, first)
@@ -498,9 +506,58 @@ def _straight_to_middle(run: Callable[..., Any], setup: dict[str, Any], basic: A
 
 #: whether :func:`redeveloped_in_window` (``middle``) develops the drive first at the
 #: window's geometric middle rather than at its upper end (``straight``; issue 71, branch
-#: middle100). Off: measured on five designs, docs/performance.md ("The window
-#: re-development straight to the middle").
-WINDOW_STRAIGHT_TO_MIDDLE = False
+#: middle100): None (the default) decides by :func:`light_end_missed` (branch cpu101);
+#: True or False for every window (the measurements' switch). docs/performance.md ("The
+#: window re-development straight to the middle" and "… where the light end missed").
+WINDOW_STRAIGHT_TO_MIDDLE: bool | None = None
+
+
+def light_end_missed(setup: dict[str, Any]) -> bool:
+    """Whether the written drive bearing whose LTE window :func:`written_lte_capacity`
+    recorded broke the verdict's LTE limit at its own light torque already: the window
+    bounded at both ends (its LTE high at light load, from the unloaded TE, and at the
+    design torque), where :func:`redeveloped_in_window` goes straight to the window's
+    geometric middle (the upper end not developed).
+
+    Parameters
+    ----------
+    setup : dict
+        The development's setup; its ``"lte_window_light"`` (the light torque [N·m], the
+        written bearing's LTE p-p there [µrad]) where a window was recorded.
+
+    Returns
+    -------
+    bool
+        True where that LTE p-p is finite and above
+        :func:`~contact.optimize.development_range_lte.verdict_lte_limit`; False where it
+        keeps the limit, is not finite or was not recorded (a setup made before it was:
+        the upper end first, as before).
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Why (issue 71, branch cpu101): a bearing whose LTE at light load is above the limit
+    shares the light torque too late (a face contact ratio below 1: its unloaded TE
+    alone is above the limit), and one developed at the window's upper end keeps that
+    light-load LTE — its light torque, 0.15 of the upper end, is below the window's lower
+    end — so it missed on every design measured where the light end missed and was kept
+    on every one where it kept the limit: the FM 17×23 (94.8 µrad at 230.5 N m; the upper
+    end 77.6 µrad), the FH 12×27 (69.7 at 7.5; 255.7) against the FH 10×33 at Σ 80°
+    (22.7 at 60.1; kept), the FM 24×29 at Σ 105° (17.1; kept), the FM 15×28 at Σ 110°
+    (18.7; kept) and lte87's FM 14×36 at Σ 70° (48.9; kept), measured in
+    docs/performance.md ("The window re-development straight to the middle where the
+    light end missed"). A measured rule, not a bound: a design whose light end missed
+    and whose upper end would keep the limit is written at a lower torque (the middle's,
+    raised back by ``development._window_raised``).
+    """
+    found = setup.get("lte_window_light")
+    if found is None:
+        return False
+    lte = float(found[1])
+    return math.isfinite(lte) and lte > verdict_lte_limit()
 
 
 #: most developments of :func:`redeveloped_in_window` (``middle``) at the geometric middle
