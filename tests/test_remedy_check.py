@@ -148,8 +148,17 @@ def test_the_remedies_that_pass_come_first_lowest_unloaded_te_first():
     assert " or " not in text.split("; not")[0]
     text = checked_remedy_text([_check(K_D, 609.0)], 1.0, "no depth factor up to 2.5", 137.0,
                                60.0)
-    assert text.startswith("no depth factor up to 2.5, nor a change that keeps the synthesis "
-                           "near conjugate, reaches 1; not a depth factor k_d of 2.16")
+    # the refused change is one of the range's, so the range is not said to hold none that
+    # reaches it (round 40's 20x31: "no face width up to R_e2/2 …, nor a change that keeps
+    # the synthesis near conjugate, reaches 1.25; not a gear face width b2 of 46.5 mm …,
+    # which reaches 1.25 too")
+    assert text.startswith("no depth factor up to 2.5 that keeps the synthesis near "
+                           "conjugate reaches 1; not a depth factor k_d of 2.16")
+    assert ", nor a change" not in text
+    # none checked at all: the range's own sentence, as before
+    assert checked_remedy_text([], 1.0, "no depth factor up to 2.5", 137.0, 60.0).startswith(
+        "no depth factor up to 2.5, nor a change that keeps the synthesis near conjugate, "
+        "reaches 1 (each change")
 
 
 def test_the_lte_diagnosis_names_the_unloaded_te_where_it_sets_the_lte():

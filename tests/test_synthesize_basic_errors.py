@@ -609,3 +609,41 @@ def test_a_hypoid_whose_pitch_cone_does_not_close_past_the_bound_names_sigma_fir
     err = capsys.readouterr().err
     assert rc == 2 and f"Sigma: must be below {limit} for 6x47" in err
     assert not (tmp_path / "case.toml").exists()
+
+
+def test_a_hypoid_whose_pitch_cone_does_not_close_within_the_bound_names_sigma(tmp_path):
+    """Within arccos(−z1/z2) but above 90°, a hypoid whose own pitch cone closes at 90° and
+    not at its Σ is refused naming Sigma and the largest shaft angle that closes, not the
+    method's rc0 sentence alone: the FM 11x37 at a = 56 mm, Method 1, rc0 88.9 (issue 71,
+    round 40) has δ2 88.18° at Σ 105° and no Method 1 pitch cone at Σ 107° (within the
+    spiral bevel's 107.30°) — and "rc0: must be large enough" was wrong there: no rc0 up
+    to 228.6 mm closes it, a larger rc0 lowers the largest Σ. The bound printed is checked
+    as what it says (identity, to its 2 printed decimals): the pitch cone closes 0.005°
+    below it and not 0.005° above."""
+    from dataclasses import replace
+
+    from geometry.iso23509.pitch_cone import PITCH_CONE_METHODS, pitch_cone
+    from geometry.synthesis.basic_design import load_basic
+
+    basic = UNSEEN / "hypoid_11x37_s95_a56_m1.toml"
+    assert math.degrees(pitch_cone(load_basic(basic).design).delta2) == pytest.approx(72.30,
+                                                                                    abs=0.01)
+    path = _sigma_variant(tmp_path, basic, 107.0)
+    with pytest.raises(InputError) as info:
+        pitch_cone(load_basic(path).design)
+    text = str(info.value)
+    found = re.match(r"^Sigma: must be at most (\d+\.\d\d) for this hypoid 11x37 at a = 56 mm "
+                     r"by method 1 \(its own pitch cone closes from 90° up to there, the gear "
+                     r"pitch angle then (\d+\.\d\d)°\) \[deg\], got 107: the method's pitch "
+                     r"cone does not close there \(rc0: ", text)
+    assert found, text
+    largest = float(found.group(1))
+    assert 90.0 < largest < math.degrees(math.acos(-11 / 37))
+    design = load_basic(basic).design
+    below = pitch_cone(replace(design, Sigma=math.radians(largest - 0.005)))
+    assert math.degrees(below.delta2) == pytest.approx(float(found.group(2)), abs=0.1)
+    with pytest.raises(InputError, match=r"^rc0: "):
+        PITCH_CONE_METHODS[1](replace(design, Sigma=math.radians(largest + 0.005)))
+    # where the pitch cone does not close at 90° either, the method's own reason stays
+    with pytest.raises(InputError, match=r"^rc0: "):
+        pitch_cone(replace(design, rc0=5.0, Sigma=math.radians(100.0)))

@@ -516,6 +516,12 @@ def checked_remedy_text(checks: Sequence[ChangeCheck], target: float, none: str,
     elif idle:
         out = (f"no change that reaches {target:g} checks better than the written design, "
                f"whose LTE p-p is within {limit:g} urad")
+    elif len(refused) > len(idle):
+        # changes within the ranges reach it, each refused below for its synthesis: "no
+        # face width up to R_e2/2 …, nor a change that keeps the synthesis near conjugate,
+        # reaches 1.25; not a gear face width b2 of 46.5 mm …, which reaches 1.25 too"
+        # denied the change it then named (issue 71, round 40: the FM 20x31 at Sigma 70 deg)
+        out = f"{none} that keeps the synthesis near conjugate reaches {target:g}"
     else:
         out = f"{none}, nor a change that keeps the synthesis near conjugate, reaches {target:g}"
     for c, why in refused:

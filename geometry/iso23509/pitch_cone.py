@@ -72,7 +72,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, fields, replace
 
 from scipy.optimize import brentq
 
@@ -820,6 +820,31 @@ PITCH_CONE_METHODS: Mapping[int, Callable[[BevelGearDesign], PitchCone]] = {
 }
 
 
+def _largest_closing_sigma(method, design: BevelGearDesign,
+                           steps: int = 40) -> tuple[float, float] | None:
+    """The largest shaft angle [rad] in [90°, ``design.Sigma``] at which ``method`` closes
+    the pitch cone of ``design`` (its other data kept), with the gear pitch angle δ2 [rad]
+    there, by bisection to (Σ − 90°)/2**``steps``; None where it does not close at 90°."""
+    def closes(s: float) -> PitchCone | None:
+        try:
+            return method(replace(design, Sigma=s))
+        except InputError:
+            return None
+
+    lo, hi = math.pi / 2, design.Sigma
+    cone = closes(lo)
+    if cone is None:
+        return None
+    for _ in range(steps):
+        mid = 0.5 * (lo + hi)
+        found = closes(mid)
+        if found is None:
+            hi = mid
+        else:
+            lo, cone = mid, found
+    return lo, cone.delta2
+
+
 def pitch_cone(design: BevelGearDesign) -> PitchCone:
     """Pitch cone parameters at the calculation point (ISO 23509:2016 clause 5).
 
@@ -885,8 +910,27 @@ def pitch_cone(design: BevelGearDesign) -> PitchCone:
             f"{sorted(PITCH_CONE_METHODS)}"
         ) from None
     z1, z2, sigma = design.z1, design.z2, design.Sigma
-    if design.a == 0.0 or math.cos(sigma) > -z1 / z2:
+    if design.a == 0.0 or (math.cos(sigma) > -z1 / z2 and sigma <= math.pi / 2):
         return method(design)
+    if math.cos(sigma) > -z1 / z2:
+        # a hypoid above 90° but within the spiral bevel's bound: where its own pitch cone
+        # does not close there but does at 90°, the shaft angle is the reason, not the
+        # method's closing sentence (issue 71, round 40: the FM 11x37 at a = 56 mm by
+        # Method 1, δ2 88.2° at Σ 105°, refused at Σ 107° with "rc0: must be large
+        # enough …, got 88.9", which no rc0 up to 228.6 mm closed)
+        try:
+            return method(design)
+        except InputError as exc:
+            largest = _largest_closing_sigma(method, design)
+            if largest is None:
+                raise
+            raise InputError(
+                f"Sigma: must be at most {math.degrees(largest[0]):.2f} for this hypoid "
+                f"{z1}x{z2} at a = {design.a:g} mm by method {design.method} (its own pitch "
+                f"cone closes from 90° up to there, the gear pitch angle then "
+                f"{math.degrees(largest[1]):.2f}°) [deg], got {math.degrees(sigma):g}: the "
+                f"method's pitch cone does not close there ({exc})"
+            ) from None
     # A hypoid past the spiral bevel's bound (refused for a = 0 by BevelGearDesign): its
     # own pitch cone has a smaller gear pitch angle (issue 71, round 39: the FH 12x41 at
     # a = 31.5 mm and Σ 110°, past 107.02°, has δ2 80.2°); where it does not close, the
