@@ -40,7 +40,6 @@ from contact.optimize.development_coast_capacity_lte import coast_range_peak
 from contact.optimize.development_coast_flank import pitting_pressure, written_coast
 from contact.optimize.development_edge_peak import (
     EDGE_PEAK,
-    edge_designs_once,
     edge_peak_runs_on,
     edges_above,
     pitting_lost,
@@ -213,9 +212,10 @@ def checked_coast_edge_peak(best: DevelopmentEvaluation, targets: DevelopmentTar
                                f"kept {was:.1f})"]
         return gone
 
-    # one deeper design per relief, as before the drive step went deeper again (the coast
-    # designs were not measured with it; docs/synthesis.md "Deeper again")
-    relief = dataclasses.replace(EDGE_PEAK, stage=STAGE, lost=lost, tries=edge_designs_once)
+    # the drive step's designs: a deeper relief kept with its edge still above is deepened
+    # again (x 1.5 up to the relief's bound) before its start moves (coastedge101;
+    # docs/synthesis.md "Deeper again on the coast flank")
+    relief = dataclasses.replace(EDGE_PEAK, stage=STAGE, lost=lost)
     return checked_relief_variants(best, targets, setup, teeth, say, placed,
                                    reliefs=(relief,), eps=(math.nan, math.nan),
                                    flank="coast", key_prefix=key_prefix, tolerant=False)
