@@ -12,7 +12,9 @@ eight developed designs (docs/synthesis.md, "The edge peak at the design torque"
 :func:`checked_coast_edge_peak` runs the drive step's row
 (:data:`~contact.optimize.development_edge_peak.EDGE_PEAK`: the levers of
 :data:`~contact.optimize.development_edge_peak.LEVERS`, kept where the edges' excess over
-the static strength falls, ending where no edge is above it) through the check's one
+the static strength falls, ending where no edge is above it; a deeper relief kept with its
+edge still above deepened again, × 1.5 up to the relief's bound, before its start moves, as
+the drive step's since edge101 and the coast's since coastedge101) through the check's one
 relief loop (:func:`~contact.optimize.development_relief_lte.checked_relief_variants`) on
 the coast flank: its designs placed and checked at ``ltca run``'s sampling on the coast
 flank at its own torques, the kept pinion tooth keyed under the drive's bearing and the
