@@ -113,3 +113,53 @@ def test_develop_checks_the_root_stress_on_the_commands_fe_level(monkeypatch):
     development.develop(basic)
     development.develop(own)
     assert [b.root_stress["fe_level"] for b in seen] == ["coarse10", "default"]
+
+
+#: the design-torque source of the FM hypoid 8x37 at a 44 mm (Round 41, issue 71,
+#: benchmarks/data/unseen_designs/hypoid_8x37_a44_m1_right.toml), as `ltca synthesize` wrote it
+_RAISED_BACK = (
+    "the root-stress capacity of the developed bearing: its FE root stress gives S_F,FE 1.20 "
+    "(gear) below S_Fmin 1.3 at the design torque 439.2 N m (the ISO 10300 capacity); T (0.99 "
+    "S/S_min)^(1/b) in 2 steps, b = 0.68/0.59 measured (S_F,FE ~ T^-b) -> 378.9 N m, where "
+    "S_F,FE (gear) is 1.31, S_H,loc (pinion) is 1.17; on the bearing developed at 378.9 N m, "
+    "raised back to 439.2 N m (of 439.2), where every capacity criterion holds")
+
+
+def _raised_back(rated, ceiling):
+    """The 8x37's result: its root-stress cut 439.2 -> 378.9 N m raised back to 439.2, the
+    rating's design torque ``rated`` and the torque the cut was made from ``ceiling``."""
+    case, user, rating = _industrial()
+    case = dataclasses.replace(case, extra=MappingProxyType(
+        dict(case.extra) | {"rating": {**rating, "design_torque": rated}}))
+    out = dataclasses.replace(_result(user, case, (65.8, 439.2), lowered=True),
+                              torque_source=_RAISED_BACK, root_text=_RAISED_BACK,
+                              root_safety=1.3035, root_ceiling=ceiling)
+    return out, case
+
+
+def test_a_root_cut_raised_back_in_full_is_not_said_lowered():
+    """Round 41's 8x37 (issue 71): its root-stress cut 439.2 -> 378.9 N·m was raised back to
+    all of 439.2 N·m, the ISO capacity it was rated at; `ltca synthesize` printed "(design
+    torque lowered to the root-stress capacity of the developed bearing)" and wrote
+    "design_torque lowered to 439.2 N m" beside "design_torque 439.2 N m: the ISO 10300
+    capacity". Now the headline says the cut raised back and the rating's source "kept at";
+    a design torque below the torque cut from (a raise that stops short) or below the
+    rating's still reads "lowered". The comparison's tolerance (TORQUE_KEPT, 1e-3) is the
+    rounding of the written torques, 0.1 N·m of 439.2 (2.3e-4), far below a cut's step."""
+    kept, case = _raised_back(439.2, 439.2)
+    assert kept.root_cut_regained
+    head = kept.headline()
+    assert "design torque lowered to" not in head
+    assert ("FE root stress S_F,FE 1.30 at 439.2 N m (its cut to the root-stress capacity of "
+            "the developed bearing raised back to all of 439.2 N m, on the bearing developed "
+            "at the cut torque)") in head
+    source = kept.recorded(case).extra["rating"]["source"]
+    assert "design_torque kept at 439.2 N m by the development: the root-stress" in source
+    assert "lowered to 439.2" not in source
+    # short of the torque cut from, and below the rating's: lowered, as before
+    short, case = _raised_back(500.0, 460.0)
+    assert not short.root_cut_regained
+    assert ("(design torque lowered to the root-stress capacity of the developed bearing)"
+            in short.headline())
+    assert "design_torque lowered to 439.2 N m by the development" in \
+        short.recorded(case).extra["rating"]["source"]

@@ -844,7 +844,9 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
                                given_root_text=given_root_text,
                                lte_torque=float(setup.get("lte_torque", math.nan)),
                                coast_lte_range=_coast_judged(setup, coast, best, teeth),
-                               hollow_further=further, memo=memo)
+                               hollow_further=further,
+                               root_ceiling=float(setup.get("root_ceiling", math.nan)),
+                               memo=memo)
     log_reused(teeth, reused)
     say(result.headline())
     return result
@@ -1365,6 +1367,9 @@ def _regained(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTarge
         + (f"; the mounting tolerance holds to it{tolerance}" if tolerance else
            ", the mounting tolerance kept") + window + ")")
     setup.update(torques=torques, source=source)
+    # the design torque back at all of the torque the cut was made from: the result's
+    # headline says the cut raised back, not "lowered" (DevelopmentResult.root_ceiling)
+    setup["root_ceiling"] = float(ceiling)
     if window:  # the LTE window set it (development_process.cut_reference)
         setup["lte_torque"] = float(new)
     return raised, source, safety

@@ -46,6 +46,11 @@ __all__ = ["COAST_STATUS", "STATIC_MARGIN", "TOLERANCE_KEYS", "UNWRITTEN_METRICS
 #: keeps nothing
 UNWRITTEN_METRICS = tuple(f"edge_pressure_{k}" for k in EDGE_KINDS)
 
+#: relative shortfall [1] within which a design torque written counts as the torque it was
+#: cut from (raised back to all of it, not lowered): the rating's torques are written to
+#: 4 significant digits (0.1 N·m of 439.2 is 2.3e-4 of it), a cut is a step of several %
+TORQUE_KEPT = 1e-3
+
 
 # --------------------------------------------------------------------------- evaluation
 @dataclass(frozen=True, eq=False)
@@ -281,6 +286,11 @@ class DevelopmentResult:
         (:func:`contact.optimize.development_hollow_further.checked_hollow_further`): its
         readings and the written case's load-sharing floor, which ``ltca synthesize``'s
         drive LTE line reuses; None where the development did not reach it.
+    root_ceiling : float — [N·m]
+        The torque a root-stress cut was made from, where the bearing developed at the cut
+        torque was raised back towards it (:func:`contact.optimize.development._regained`);
+        NaN where not. A design torque written at all of it was not lowered by that cut
+        (:attr:`root_cut_regained`; :meth:`headline` says so).
     memo : dict or None
         The synthesis memo of the development that wrote the case
         (:func:`geometry.synthesis.case_synthesis.synthesize`'s ``memo``): a later
@@ -324,7 +334,15 @@ class DevelopmentResult:
     given_root_text: str = ""
     lte_torque: float = math.nan
     hollow_further: Any = None
+    root_ceiling: float = math.nan
     memo: dict | None = dataclasses.field(default=None, repr=False)
+
+    @property
+    def root_cut_regained(self) -> bool:
+        """A root-stress cut raised back to all of the torque it was made from, the design
+        torque written that torque (:attr:`root_ceiling`): the cut lowered nothing."""
+        return (math.isfinite(self.root_ceiling)
+                and float(self.torque[1]) >= self.root_ceiling * (1.0 - TORQUE_KEPT))
 
     @property
     def tolerant(self) -> bool:
@@ -434,7 +452,10 @@ class DevelopmentResult:
         if not math.isfinite(self.root_safety):
             return ""
         why = (f" (design torque lowered to {self.root_text.split(':')[0]})"
-               if self.root_text else " (below S_Fmin: the given torque is above its "
+               if self.root_text and not self.root_cut_regained else
+               f" (its cut to {self.root_text.split(':')[0]} raised back to all of "
+               f"{plain_number(self.root_ceiling)} N m, on the bearing developed at the cut "
+               "torque)" if self.root_text else " (below S_Fmin: the given torque is above its "
                "root-stress capacity, see the note)" if self.given_root_text else "")
         return (f"; FE root stress S_F,FE {self.root_safety:.2f} at "
                 f"{plain_number(self.torque[1])} N m{why}")
@@ -577,9 +598,13 @@ class DevelopmentResult:
         extra = json.loads(json.dumps({**case.extra, **tables}))
         if self.torque_lowered:  # the rating's design torque is the bearing's capacity
             rating = dict(extra.get("rating") or {})
+            rated = float(rating.get("design_torque", math.nan))
+            # raised back to all of the rating's torque after a cut: kept, not lowered
+            how = ("kept at" if math.isfinite(rated) and float(self.torque[1])
+                   >= rated * (1.0 - TORQUE_KEPT) else "lowered to")
             rating["design_torque"] = float(self.torque[1])
             rating["source"] = (str(rating.get("source", "")).rstrip()
-                                + f" design_torque lowered to {self.torque[1]:g} N m by the "
+                                + f" design_torque {how} {self.torque[1]:g} N m by the "
                                 f"development: {self.torque_source}.").lstrip()
             extra["rating"] = rating
         more: dict[str, Any] = {}
