@@ -47,7 +47,7 @@ from contact.utca.easeoff import EaseOff, fill_missing
 from contact.utca.piecewise import PiecewiseSpline, from_splines, piece_basis
 from contact.utca.relief_corners import relief_corners
 from contact.utca.spline_group import SplineGroup
-from geometry.core.caches import Same, memoised
+from geometry.core.caches import Carried, Same, memoised
 from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.kernels import KERNELS
 from geometry.core.kernels import kernels_module as select_kernels
@@ -166,13 +166,8 @@ class EaseOffFields:
         self.cuts = cuts
 
         def spl(fields, ok, cut=False):
-            # the fields sharing a mask are filled together (same arithmetic per field)
-            filled = fill_missing(np.stack(fields, -1), ok)
-            if cuts is None:
-                return [RectBivariateSpline(self.u, self.v, filled[..., k])
-                        for k in range(len(fields))]
-            cx, cy = cuts if cut else (None, None)
-            return corner_splines(self.u, self.v, np.moveaxis(filled, -1, 0), cx, cy)
+            return _field_splines(self.u, self.v, fields, ok,
+                                  cuts if cut else None, cuts is None)
 
         # ε and Q from the valid nodes and, beyond them, from the computed nodes on the same
         # smooth sheet (both points on their blades' main sections), continued linearly
@@ -190,9 +185,11 @@ class EaseOffFields:
         k_nodes = eo.gap_curvature[sheet & np.isfinite(eo.gap_curvature)]
         self.gap_range = ((float(k_nodes.min()), float(k_nodes.max())) if k_nodes.size
                           else (-np.inf, np.inf))
-        self.arm, *gear = spl(
-            [eo.normal_arm, *np.moveaxis(eo.gear_position, -1, 0),
-             *np.moveaxis(eo.gear_normal, -1, 0)], gear_ok)
+        # (the gear flank's alone: the same nodes at every misalignment, so once per
+        # study, _gear_splines)
+        self.arm, *gear = _gear_splines(
+            self.u, self.v, [eo.normal_arm, *np.moveaxis(eo.gear_position, -1, 0),
+                             *np.moveaxis(eo.gear_normal, -1, 0)], gear_ok, cuts is None)
         self.pos, self.nrm = gear[:3], gear[3:]
         self.margin, self.pu, self.pv = spl([eo.margin, eo.pinion_u, eo.pinion_v], computed)
         dq = np.diff(np.where(valid, eo.raw_roll_angle, np.nan), axis=1)
@@ -621,8 +618,51 @@ def fields_of(eo: EaseOff, kernels: str | None = None) -> EaseOffFields:
 
 def clear_fields_memo() -> None:
     """Forget the :class:`EaseOffFields` memoised per process by :func:`fields_of` (frees
-    memory; the next call builds afresh)."""
+    memory; the next call builds afresh), and the gear flank's splines they share
+    (:func:`_gear_splines`)."""
     _memo_fields.cache_clear()
+    _memo_gear_splines.cache_clear()
+
+
+def _field_splines(u: np.ndarray, v: np.ndarray, fields: list, ok: np.ndarray, cuts,
+                   plain: bool) -> list:
+    """The splines of :class:`EaseOffFields` of ``fields`` (K arrays (nu, nv)) on the grid
+    (u, v), each filled beyond the nodes ``ok`` (:func:`fill_missing`; the fields sharing a
+    mask filled together, the same arithmetic per field): ``RectBivariateSpline`` where
+    the ease-off has no relief corner on its sheet (``plain``), else
+    :func:`contact.utca.corner_spline.corner_splines` with the grid lines cut at ``cuts``
+    (cut_x, cut_y) or uncut (None: on the same knots as the cut ones)."""
+    filled = fill_missing(np.stack(fields, -1), ok)
+    if plain:
+        return [RectBivariateSpline(u, v, filled[..., k]) for k in range(len(fields))]
+    cx, cy = cuts if cuts is not None else (None, None)
+    return corner_splines(u, v, np.moveaxis(filled, -1, 0), cx, cy)
+
+
+def _gear_splines(u: np.ndarray, v: np.ndarray, fields: list, ok: np.ndarray,
+                  plain: bool) -> list:
+    """:func:`_field_splines` of the gear flank's fields (uncut), kept per process by
+    their values (:func:`_memo_gear_splines`).
+
+    The gear's normal arm, points and normals on the ease-off's grid do not depend on the
+    misalignment (the gear nodes are memoised per flank,
+    :func:`contact.utca.conjugate_map.gear_nodes`), so a study's every point built the
+    same seven splines again (≈ 1.5 ms a point, issue 75). The key is every input's
+    bytes, shape and dtype (the grid, the fields, the mask, ``plain``): a hit is the same
+    computation on the same numbers, so the same splines bit for bit; any change of a
+    value (deviations of the gear, another design) is a miss.
+    """
+    arrays = [np.ascontiguousarray(a) for a in (u, v, ok, *fields)]
+    key = (bool(plain), *((a.dtype.str, a.shape, a.tobytes()) for a in arrays))
+    return list(_memo_gear_splines(key, Carried((u, v, fields, ok, plain))))
+
+
+@memoised(maxsize=4)
+def _memo_gear_splines(key: tuple, inputs: Carried) -> tuple:
+    """:func:`_gear_splines`' memo: ``key`` the inputs' bytes, ``inputs`` the arrays
+    themselves (not part of the key)."""
+    u, v, fields, ok, plain = inputs.value
+    return tuple(_field_splines(u, v, fields, ok, None, plain))
 
 
 @memoised(maxsize=8)

@@ -55,6 +55,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from geometry.core.caches import Same, memoised
 from geometry.core.errors import InputError
 from geometry.core.validation import real
 
@@ -369,7 +370,22 @@ def profile_sections(blade: Blade) -> ProfileSections:
     Seed §2.2.2 names the sections (edge, toprem, profile, flankrem) but gives no formulas;
     the construction (tangent edge radius, corners at the toprem and flankrem heights,
     circular profile tangent to the nominal line at h_ref) is ours and follows Fig. 2.3c.
+    The sections are kept per blade object and shared by their callers
+    (:func:`_memo_profile_sections`): their arrays are not to be written.
     """
+    return _memo_profile_sections(Same(blade))
+
+
+@memoised(maxsize=32)
+def _memo_profile_sections(blade: Same) -> ProfileSections:
+    """:func:`profile_sections` of the blade ``blade.obj``, once per blade object (a frozen
+    dataclass): a study point asked for them 3 times (≈ 0.4 ms; the study's cases share
+    their blades, so once per study, issue 75). The same arithmetic, bit for bit."""
+    return _profile_sections(blade.obj)
+
+
+def _profile_sections(blade: Blade) -> ProfileSections:
+    """:func:`profile_sections`, computed."""
     sg = blade.sigma
     a = blade.blade_angle
     # main profile as a constant-curvature curve referenced at its tangency point with the

@@ -30,6 +30,7 @@ from typing import TYPE_CHECKING, NamedTuple
 import numpy as np
 import xarray as xr
 
+from geometry.core.caches import Same, memoised
 from geometry.core.conventions import binary_flag, dataset
 from geometry.core.errors import InputError
 from geometry.core.version import __version__
@@ -105,13 +106,28 @@ def blank_outline(blank: Blank) -> BlankOutline:
     -------
     BlankOutline
         Corners [u][v] = (toe, heel) × (root, tip) as (z, ρ) [mm], apex positions z [mm],
-        the mean pitch point and the outer whole depth.
+        the mean pitch point and the outer whole depth. Kept per blank object and shared
+        by its callers (:func:`_memo_blank_outline`): its arrays are not to be written.
 
     Notes
     -----
     Apex positions are given "beyond the crossing point" (ISO 23509 t_z: positive when the
     apex lies beyond the crossing point, away from the member body), so z_apex = −t_z.
     """
+    return _memo_blank_outline(Same(blank))
+
+
+@memoised(maxsize=32)
+def _memo_blank_outline(blank: Same) -> BlankOutline:
+    """:func:`blank_outline` of the blank ``blank.obj``, once per blank object (a frozen
+    dataclass): a study point asked for it 8 times (≈ 0.7 ms of eight small line solves;
+    the study's cases share their members, so once per study, issue 75). The same
+    arithmetic as before, so the same outline bit for bit."""
+    return _blank_outline(blank.obj)
+
+
+def _blank_outline(blank: Blank) -> BlankOutline:
+    """:func:`blank_outline`, computed."""
     zp, zf, zr = -blank.pitch_apex, -blank.face_apex, -blank.root_apex
     d = blank.pitch_angle
     gen = np.array([math.cos(d), math.sin(d)])
