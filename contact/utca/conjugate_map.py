@@ -264,16 +264,30 @@ class _ForwardMap:
         """Mates at the fractions (u, v), the envelope solver started at ``guess``; without
         curvatures (the placement's trial places, :func:`_with_curvatures`).
 
-        The solver's seed is the place nearest the forward grid's own seed, its middle
-        (:func:`_seed_place`), and its undercut test takes the forward grid's sign
-        (:attr:`q_sign`): the middle of a subset of places (the nodes not yet placed) can
-        lie at the blank's edge, where its root is on another blade section or beyond
-        the singular line, and the seed's section and sign then decide for the whole
-        batch (issue 71, the FM 20×31 at Σ 70°: trial places a Newton step of 9e-6 away
-        solved on the tip section, 3.3 mm off; docs/synthesis.md)."""
+        The solver's undercut test takes the forward grid's sign (:attr:`q_sign`), and
+        where the batch's middle place, the solver's seed, has no good mate or one on
+        another blade section than its guess's, the batch is solved again seeded at the
+        place nearest the forward grid's middle node (:func:`_seed_place`): the middle of a
+        subset of places (the nodes not yet placed) can lie at the blank's edge, where its
+        root is on another section or beyond the singular line, and the seed's section
+        and sign then decided for the whole batch (issue 71, the FM 20×31 at Σ 70°: 514
+        of 560 regular places called undercut, and trial places a Newton step of 9e-6
+        away solved on the tip section, 3.3 mm off; docs/synthesis.md). A batch whose
+        middle seed is good on its guess's section is solved once, as before."""
+        m, _ = _mates(self.case, self.flank, self.kin, self.corners, u, v, branch=self.branch,
+                      guess=guess, curvatures=False, undercut_sign=self.q_sign)
+        shape = np.shape(m.good)
+        if not shape or self.q_sign is None or guess is None:
+            return m
+        mid = tuple(d // 2 for d in shape)
+        if m.good[mid] and m.section[mid] == np.asarray(guess[1])[mid]:
+            return m
+        seed = _seed_place(self, u, v)
+        if seed is None or seed == mid:
+            return m
         m, _ = _mates(self.case, self.flank, self.kin, self.corners, u, v, branch=self.branch,
                       guess=guess, curvatures=False, undercut_sign=self.q_sign,
-                      seed_index=_seed_place(self, u, v))
+                      seed_index=seed)
         return m
 
     def jacobian(self, u, v) -> np.ndarray:
