@@ -265,22 +265,24 @@ class _ForwardMap:
         curvatures (the placement's trial places, :func:`_with_curvatures`).
 
         The solver's undercut test takes the forward grid's sign (:attr:`q_sign`), and
-        where the batch's middle place, the solver's seed, has no good mate or one on
-        another blade section than its guess's, the batch is solved again seeded at the
+        where the batch's middle place, the solver's seed, has no good mate or one whose
+        envelope parameters lie farther from its guess than one limited Newton step of the
+        solver (:data:`_SEED_JUMP`: another root), the batch is solved again seeded at the
         place nearest the forward grid's middle node (:func:`_seed_place`): the middle of a
         subset of places (the nodes not yet placed) can lie at the blank's edge, where its
         root is on another section or beyond the singular line, and the seed's section
         and sign then decided for the whole batch (issue 71, the FM 20×31 at Σ 70°: 514
         of 560 regular places called undercut, and trial places a Newton step of 9e-6
         away solved on the tip section, 3.3 mm off; docs/synthesis.md). A batch whose
-        middle seed is good on its guess's section is solved once, as before."""
+        middle seed is good near its guess is solved once, as before."""
         m, _ = _mates(self.case, self.flank, self.kin, self.corners, u, v, branch=self.branch,
                       guess=guess, curvatures=False, undercut_sign=self.q_sign)
         shape = np.shape(m.good)
         if not shape or self.q_sign is None or guess is None:
             return m
         mid = tuple(d // 2 for d in shape)
-        if m.good[mid] and m.section[mid] == np.asarray(guess[1])[mid]:
+        if m.good[mid] and np.all(np.abs(m.params[mid] - np.asarray(guess[0])[mid])
+                                  <= _SEED_JUMP):
             return m
         seed = _seed_place(self, u, v)
         if seed is None or seed == mid:
@@ -548,6 +550,15 @@ def _regular_q_sign(case: Case, pf: str, points) -> float | None:
                           params[i][2:3], np.asarray(section[i]).reshape(1),
                           length_scale=case.pinion.blank.outer_cone_distance)
     return float(sign[0]) if sign[0] != 0 else None
+
+
+#: [mm, rad, rad] the largest move of (s, θ, q) from its guess that a trial batch's middle
+#: seed may make and still seed the batch (:meth:`_ForwardMap.mates`): one limited Newton
+#: step of the envelope solver (geometry.machine.meshing's step limit; a root farther is
+#: "possibly another branch" there too). A seed that crosses a blade-section junction to
+#: its neighbour moves far less (the default run's: none re-seeded); the 20×31 at Σ 70°'s
+#: jumped to the tip section at q −0.46 rad, its neighbours at q ≈ −0.08.
+_SEED_JUMP = np.array([2.0, 0.15, 0.15])
 
 
 _NEAREST_CANDIDATES = 4  # k-d tree neighbours re-ranked by _nearest_node's own distance
