@@ -342,3 +342,70 @@ def test_a_relief_refused_for_local_pitting_is_not_analysed_between_the_torques(
         {"root_relief": 60.0, "tip_relief": 22.5},
         {"root_relief": 60.0, "tip_relief_start": 0.75},
         {"root_relief": 60.0, "tip_relief_start": 0.75}]
+
+
+def _deeper_again(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
+                  flank="drive", lte_deep=30.0):
+    """The 9x37's coast law (:func:`_nine_by_37`) with only its pinion edge above the
+    static strength, lowered but not cleared by one deeper tip relief, as the coast edges
+    measured on coastedge101 (docs/synthesis.md "Deeper again on the coast flank"): 4718
+    MPa with the tip relief 15 µm, 2900 at 22.5 (kept, still above 2400 by more than the
+    peak's resolution), none counted at 33.75; the relief started earlier (0.75) 2300 MPa.
+    The coast design torque's LTE ``lte_deep`` µrad with the tip relief 33.75 µm (30, as
+    written, below it)."""
+    m, limits = _nine_by_37(case, torques, misalignment, options, teeth, pinion_key, flank)
+    tip = float(case["tip_relief"])
+    edge = float(np.interp(tip, [15.0, 22.5, 33.75], [4718.0, 2900.0, 0.0]))
+    if float(case["tip_relief_start"]) < 0.8:
+        edge = 2300.0
+    lte = float(np.interp(tip, [22.5, 33.75], [30.0, lte_deep]))
+    m = dict(m) | {"edge_peak_gear_tip": np.asarray([0.0, 0.0]),
+                   "edge_peak_pinion_edge": np.asarray([0.0, edge]),
+                   "edge_peak": np.asarray([0.0, edge]),
+                   "pressure_max_edge": np.asarray([0.0, edge]),
+                   "lte_peak_to_peak": np.asarray([20.0, lte])}
+    return m, limits
+
+
+def test_a_deeper_coast_relief_kept_above_the_strength_goes_deeper_again(monkeypatch):
+    """The drive step's deeper again on the coast flank (coastedge101): the tip relief
+    15 → 22.5 µm lowers the pinion edge 4718 → 2900 MPa (kept, still above 2400), then
+    22.5 → 33.75 µm (× 1.5) clears it: kept, and the step ends — the earlier start is not
+    tried. Before (one deeper design per relief) the start 0.85 → 0.75 was tried next on
+    the 22.5 µm design and written with the edge at 2300 MPa on a relief started earlier.
+    The line names the kept design's peak (2900), not the first one's."""
+    seen, fake = seen_designs(_deeper_again)
+    targets, setup, chosen = stand_in(monkeypatch, fake, TORQUES)
+    start = dataclasses.replace(chosen(dict(COAST)), case=dict(COAST))
+    assert dep.edges_above(start) == {"pinion_edge": 4718.0}
+    seen.clear()
+    lines = []
+    got = dce.checked_coast_edge_peak(start, targets, setup, None, lines.append, dict,
+                                      bound=math.inf, key_prefix=PREFIX)
+    tried = [(d["tip_relief"], d["tip_relief_start"]) for d in seen]
+    # each variant at its torques and between them (its LTE over ltca run's range)
+    assert list(dict.fromkeys(tried)) == [(22.5, 0.85), (33.75, 0.85)], tried
+    assert got.values == COAST | {"tip_relief": 33.75}
+    assert got.stage == dce.STAGE and dep.edges_above(got) == {}
+    said = [s for s in lines if "tip_relief 33.75 um" in s]
+    assert said and "peak 2900 MPa" in said[0], lines
+
+
+def test_a_deeper_again_coast_relief_that_loses_a_target_is_refused(monkeypatch):
+    """Deeper again is a design like any other: the tip relief 33.75 µm clears the pinion
+    edge but lifts the coast design torque's LTE to 45 µrad, past the 40 µrad target the
+    design met (the 22.5 µm design's 30): refused (said), and the relief's start is moved
+    on the design kept (22.5 µm from 0.75: 2300 MPa, kept)."""
+    seen, fake = seen_designs(functools.partial(_deeper_again, lte_deep=45.0))
+    targets, setup, chosen = stand_in(monkeypatch, fake, TORQUES)
+    start = dataclasses.replace(chosen(dict(COAST)), case=dict(COAST))
+    seen.clear()
+    lines = []
+    got = dce.checked_coast_edge_peak(start, targets, setup, None, lines.append, dict,
+                                      bound=math.inf, key_prefix=PREFIX)
+    tried = [(d["tip_relief"], d["tip_relief_start"]) for d in seen]
+    assert list(dict.fromkeys(tried)) == [(22.5, 0.85), (33.75, 0.85), (22.5, 0.75)], tried
+    assert any("not kept: the tip_relief 33.75 um for the pinion edge misses lte" in s
+               for s in lines), lines
+    assert got.values == COAST | {"tip_relief": 22.5, "tip_relief_start": 0.75}
+    assert dep.edges_above(got) == {}

@@ -138,18 +138,25 @@ def _start(chosen):
     return dataclasses.replace(start, case=dict(start.values))
 
 
-def test_the_range_step_acts_on_a_peak_between_the_aim_and_60(monkeypatch, margin):
-    """59.5 µrad at 217.9 N m between the torques: within the verdict's 60 but above the
-    development's aim, so the range step acts on it (before this branch it returned the
-    design as it was); the design it keeps reads 53 µrad there (the 0.85 ellipse: in the
-    written case the tolerance rule refused it, docs/synthesis.md; the stand-in's law is
-    tolerant, the step's choice is what is tested)."""
+def _range_step(monkeypatch):
+    """The range step on the stand-in law from its start design: (start, setup, the design
+    it returns, its lines)."""
     _seen, fake = seen_designs(_law())
     targets, setup, chosen = stand_in(monkeypatch, fake, TORQUES)
     start = _start(chosen)
     lines: list[str] = []
     got = drl.checked_range_lte(start, targets, setup, None, lines.append,
                                 lambda v: dict(v))
+    return start, setup, got, lines
+
+
+def test_the_range_step_acts_on_a_peak_between_the_aim_and_60(monkeypatch, margin):
+    """59.5 µrad at 217.9 N m between the torques: within the verdict's 60 but above the
+    development's aim, so the range step acts on it (before this branch it returned the
+    design as it was); the design it keeps reads 53 µrad there (the 0.85 ellipse: in the
+    written case the tolerance rule refused it, docs/synthesis.md; the stand-in's law is
+    tolerant, the step's choice is what is tested)."""
+    start, setup, got, lines = _range_step(monkeypatch)
     aim = drl.development_lte_limit()
     assert aim < 59.5 < LTE_LIMIT
     assert f"is above {aim:g} urad" in lines[0]
@@ -161,12 +168,7 @@ def test_with_no_margin_the_range_step_leaves_59_5(monkeypatch):
     """The same law with the margin 0 (the default): the aim is the verdict's 60 and 59.5
     is kept (main's rule; what the margin changes)."""
     monkeypatch.setattr(drl, "LTE_SAMPLING_MARGIN", 0.0)
-    _seen, fake = seen_designs(_law())
-    targets, setup, chosen = stand_in(monkeypatch, fake, TORQUES)
-    start = _start(chosen)
-    lines: list[str] = []
-    got = drl.checked_range_lte(start, targets, setup, None, lines.append,
-                                lambda v: dict(v))
+    start, _setup, got, lines = _range_step(monkeypatch)
     assert got is start and not lines
 
 

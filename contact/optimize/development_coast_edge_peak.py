@@ -12,7 +12,9 @@ eight developed designs (docs/synthesis.md, "The edge peak at the design torque"
 :func:`checked_coast_edge_peak` runs the drive step's row
 (:data:`~contact.optimize.development_edge_peak.EDGE_PEAK`: the levers of
 :data:`~contact.optimize.development_edge_peak.LEVERS`, kept where the edges' excess over
-the static strength falls, ending where no edge is above it) through the check's one
+the static strength falls, ending where no edge is above it; a deeper relief kept with its
+edge still above deepened again, × 1.5 up to the relief's bound, before its start moves, as
+the drive step's since edge101 and the coast's since coastedge101) through the check's one
 relief loop (:func:`~contact.optimize.development_relief_lte.checked_relief_variants`) on
 the coast flank: its designs placed and checked at ``ltca run``'s sampling on the coast
 flank at its own torques, the kept pinion tooth keyed under the drive's bearing and the
@@ -40,7 +42,6 @@ from contact.optimize.development_coast_capacity_lte import coast_range_peak
 from contact.optimize.development_coast_flank import pitting_pressure, written_coast
 from contact.optimize.development_edge_peak import (
     EDGE_PEAK,
-    edge_designs_once,
     edge_peak_runs_on,
     edges_above,
     pitting_lost,
@@ -213,9 +214,10 @@ def checked_coast_edge_peak(best: DevelopmentEvaluation, targets: DevelopmentTar
                                f"kept {was:.1f})"]
         return gone
 
-    # one deeper design per relief, as before the drive step went deeper again (the coast
-    # designs were not measured with it; docs/synthesis.md "Deeper again")
-    relief = dataclasses.replace(EDGE_PEAK, stage=STAGE, lost=lost, tries=edge_designs_once)
+    # the drive step's designs: a deeper relief kept with its edge still above is deepened
+    # again (x 1.5 up to the relief's bound) before its start moves (coastedge101;
+    # docs/synthesis.md "Deeper again on the coast flank")
+    relief = dataclasses.replace(EDGE_PEAK, stage=STAGE, lost=lost)
     return checked_relief_variants(best, targets, setup, teeth, say, placed,
                                    reliefs=(relief,), eps=(math.nan, math.nan),
                                    flank="coast", key_prefix=key_prefix, tolerant=False)

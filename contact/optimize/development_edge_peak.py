@@ -488,9 +488,11 @@ def _edge_designs(start: DevelopmentEvaluation, targets: DevelopmentTargets, *,
 
 def edge_designs_once(start: DevelopmentEvaluation, targets: DevelopmentTargets
                       ) -> Generator[Try, Sent, None]:
-    """:data:`EDGE_PEAK`'s designs with one deeper design per relief (no deeper again): the
-    coast flank's edge-peak step's, as before the drive step went deeper again (its coast
-    designs were not measured with it; docs/synthesis.md "Deeper again").
+    """:data:`EDGE_PEAK`'s designs with one deeper design per relief (no deeper again), as
+    both flanks' edge-peak steps tried them before edge101 (drive) and coastedge101 (coast;
+    docs/synthesis.md "Deeper again on the coast flank"): no step uses it now; kept to
+    measure a step against its one-deeper designs (``dataclasses.replace(EDGE_PEAK,
+    tries=edge_designs_once)``).
 
     Parameters
     ----------

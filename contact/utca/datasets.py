@@ -414,6 +414,22 @@ def utca_dataset(eo: EaseOff, cycle: UnloadedCycle, *, case: Case,
     sep_own = cc.normal_arm * (gap - te[..., None])
     pattern, length, path_u, path_v = _contact_lines(cc, sep_own, separation, active)
     data = {
+        **_ute_variables(envelope, te, active),
+        **_curve_variables(cc, zr, sep_env, pattern),
+        **_path_variables(cc, length, path_u, path_v, zr),
+        **_cycle_variables(cycle, separation),
+    }
+    n_point = cc.u.shape[-1]
+    # (xarray's Dataset of these tuples, made directly: issue 75)
+    return dataset(data, _utca_coords(cycle, n_point), _utca_attrs(eo, case, mis, cycle.method))
+
+
+
+def _ute_variables(envelope: np.ndarray, te: np.ndarray, active: np.ndarray) -> dict:
+    """The UTE variables :func:`utca_dataset` and :func:`ute_dataset` share: the lower
+    envelope (roll) and each pair's UTE (roll, pair) [rad → µrad], and the pairs carrying
+    the motion (``active``, roll × pair booleans)."""
+    return {
         "unloaded_transmission_error": _var(
             "roll", envelope * 1e6, "urad",
             "unloaded transmission error: lower envelope of the pairs (gear lag)"),
@@ -424,14 +440,7 @@ def utca_dataset(eo: EaseOff, cycle: UnloadedCycle, *, case: Case,
         "active": _var(("roll", "pair"), active.astype(np.int8), "1",
                        "1 where the pair carries the motion (its UTE is the lower envelope)",
                        **binary_flag("inactive", "active")),
-        **_curve_variables(cc, zr, sep_env, pattern),
-        **_path_variables(cc, length, path_u, path_v, zr),
-        **_cycle_variables(cycle, separation),
     }
-    n_point = cc.u.shape[-1]
-    # (xarray's Dataset of these tuples, made directly: issue 75)
-    return dataset(data, _utca_coords(cycle, n_point), _utca_attrs(eo, case, mis, cycle.method))
-
 
 def ute_dataset(eo: EaseOff, cycle: UnloadedCycle, *, case: Case,
                 separation: float = DEFAULT_SEPARATION,
@@ -475,16 +484,7 @@ def ute_dataset(eo: EaseOff, cycle: UnloadedCycle, *, case: Case,
     envelope, te = cycle.envelope, cycle.curves.ute
     active = np.isfinite(te) & (te <= envelope[:, None] + 1e-15)
     data = {
-        "unloaded_transmission_error": _var(
-            "roll", envelope * 1e6, "urad",
-            "unloaded transmission error: lower envelope of the pairs (gear lag)"),
-        "pair_transmission_error": _var(
-            ("roll", "pair"), te * 1e6, "urad",
-            "unloaded transmission error of each tooth pair (min of the ease-off on its "
-            "contact curve; NaN out of mesh)"),
-        "active": _var(("roll", "pair"), active.astype(np.int8), "1",
-                       "1 where the pair carries the motion (its UTE is the lower envelope)",
-                       **binary_flag("inactive", "active")),
+        **_ute_variables(envelope, te, active),
         **_cycle_variables(cycle, separation),
     }
     coords = {k: v for k, v in _utca_coords(cycle, 1).items()
