@@ -20,6 +20,17 @@ conjugate: the criterion"):
   before the fix 0.19 (0.67 after). The ease-off span is no criterion (bundled cases 14–648 µm),
   nor the gap curvature (a conjugate ratio-1 pair has 0.36–1.2 1/rad: a property of the
   ratio, not of a mismatch).
+* :data:`EASE_OFF_MEDIAN_MAX` (re-calibrated on the ease-off's batch-seed fix, branch
+  s70_102; docs/synthesis.md, "The criterion and the generation-limit diagnosis
+  re-calibrated …"): with the fix the valid share no longer separates a mismatch (the
+  16×16 above: 601 of 861 valid, 0.70, every new node's root checked by an independent
+  brute-force solve); the median ease-off over the valid nodes does: 3.5–88 µm on the 18
+  bundled cases (drive and coast), 6–39 µm on the issue-71 cases analysed (the 16×16 of
+  before 25 µm: near conjugate over most of its flank, its 954 µm in a corner; its LTE is
+  told by :data:`TRIAL_LTE_FACTOR`), 1561 and 2424 µm on the 15×15 hypoid's 20×20 and
+  25×25 (their pinion meets the gear millimetres from touching). :attr:`Conjugacy.near`
+  asks both: at least :data:`VALID_NODE_FRACTION_MIN` valid (too few to judge below) and
+  the median at most 300 µm.
 * :data:`TRIAL_LTE_FACTOR`: the checked LTE p-p of the written drive design over its coarse
   trial's (the larger of light and design torque). 57 checks of 28 developments logged on
   this machine: median 1.00, 95 % within 1.26, 99 % within 1.39; beyond: 2.07 (a 20×30's
@@ -303,8 +314,9 @@ def teeth_for_generation(basic, current: int | None = None) -> TeethCheck | None
     with its tip planes, as ``ltca synthesize --no-development`` of the edited file; the
     same check as :func:`teeth_checker`'s), 4-8 s of CPU each on the 2-core machine.
     Measured on the 15x15 hypoid of issue 71 (docs/synthesis.md, 'A pinion not generated
-    over its working depth'): 20 and 25 teeth lose the unloaded contact, 30 kept (100 %
-    generated, 56 % valid ease-off nodes; 3 s of CPU for the three in ``ltca synthesize``).
+    over its working depth' and its re-calibration on the batch-seed fix): 20 and 25 teeth
+    far from conjugate (median ease-off 1561 / 2424 µm), 30 kept (100 % generated, 56 %
+    valid ease-off nodes; 3 s of CPU for the three in ``ltca synthesize``).
     """
     t0 = cpu_seconds()
     design = basic.design
@@ -440,7 +452,9 @@ def counts_check(basic, z1: int, z2: int) -> CountsCheck:
     CountsCheck
         ``failure`` None where kept, else "no synthesis: …" or every check that fails,
         joined by "; and ", in this order: "pinion drive flank generated over … %", "far
-        from conjugate, … % valid ease-off nodes", the unloaded cycle's failure (after
+        from conjugate, …" (:meth:`Conjugacy.far_text`: the median ease-off where it is
+        above :data:`EASE_OFF_MEDIAN_MAX`, else the valid share), the unloaded cycle's
+        failure (after
         another, "its unloaded contact not computed: …"); the generated and valid shares
         where the synthesis was made.
 
@@ -452,8 +466,10 @@ def counts_check(basic, z1: int, z2: int) -> CountsCheck:
     Why every check, the pinion's generation and the ease-off first: they are the
     cheaper (0.02-0.2 s and the ease-off the unloaded cycle computes first, against
     0.5-0.7 s for the cycle) and the more informative, the cause where the contact is lost
-    (the 15x15's 20x20: 78 % generated, 23 % valid nodes; its 25x25: 95 % and 2 %; both
-    lose the unloaded contact, whose message alone said "check the misalignment"); the
+    (before the ease-off's batch-seed fix the 15x15's 20x20: 78 % generated, 23 % valid
+    nodes; its 25x25: 95 % and 2 %; both lost the unloaded contact, whose message alone
+    said "check the misalignment"; with the fix both keep it and are far from conjugate
+    by their median ease-off, 1561 / 2424 µm); the
     cycle runs after them so that a count it refuses is named with all it fails.
     Why the file re-read and the tip planes: a ``dataclasses.replace`` of the counts keeps
     the old module's small-module defaults, and without tip planes the 15x15's 57x57
