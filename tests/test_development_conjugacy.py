@@ -13,12 +13,14 @@ import pytest
 from contact.catalogue import DEFAULT_CASE, bundled_case_path
 from contact.optimize.development_conjugacy import (
     EASE_OFF_MEDIAN_MAX,
+    OFF_SHEET_SHARE_MAX,
     TRIAL_LTE_FACTOR,
     Conjugacy,
     conjugacy,
     conjugacy_of,
     misjudged_trial_text,
     non_conjugate_text,
+    off_sheet_mates,
     trial_lte_ratio,
 )
 from geometry.case import load_case
@@ -71,6 +73,33 @@ def test_the_median_is_the_ease_offs_own():
     assert not Conjugacy(300, 861, 50.0).mismatched  # not measured: the share decides
     text = non_conjugate_text(far, (1.32, 0.29))
     assert text is not None and "median of 301 um over its 700 of 861 valid nodes" in text
+    # the mates on another sheet of the pinion's envelope: more than 0.1 of the valid
+    # nodes makes the flanks far, named in both texts
+    two = Conjugacy(700, 861, 100.0, 20.0, 71)
+    assert two.off_sheet_share > OFF_SHEET_SHARE_MAX and not two.near
+    assert two.far_text() == ("far from conjugate, 81 % valid ease-off nodes, 71 of them met "
+                              "on another sheet of the pinion's envelope than its flank grid")
+    assert "71 of its valid nodes meet the pinion on another sheet" in non_conjugate_text(
+        two, None)
+    assert Conjugacy(700, 861, 100.0, 20.0, 70).near
+
+
+def test_no_mate_on_another_sheet_on_the_bundled_cases():
+    """off_sheet_mates: 0 on the default case and the ISO 23509 sample 2 FM hypoid (both
+    flanks; every bundled case measured, docs/synthesis.md); the mates' cradle angles lie
+    inside the pinion flank grid's own range, read here from the two solves."""
+    from contact.utca.easeoff import ease_off
+    from geometry.machine.flank import flank_surface
+
+    for name in (DEFAULT_CASE, "iso23509_sample2_fm"):
+        case = load_case(bundled_case_path(name))
+        for flank in ("drive", "coast"):
+            eo = ease_off(case, flank=flank)
+            assert off_sheet_mates(case, eo) == 0
+            fs = flank_surface(case, "pinion", eo.pinion_flank)
+            q = eo.pinion_parameters[..., 2][eo.valid]
+            grid = fs.q[fs.valid]
+            assert grid.min() - 0.01 < q.min() and q.max() < grid.max() + 0.01
 
 
 def test_the_note_names_the_cause_and_not_the_contact_ratio():

@@ -141,7 +141,8 @@ def test_synthesize_no_development_writes_the_15x15_with_the_generation_limit_fi
     assert first < err.index("face contact ratio eps_vb 0.29 is below 1.25")
     assert "z1 30 and z2 30 (now 15 and 15) generate 100 % of it" in err
     assert ("not 20x20: far from conjugate, median ease-off 1561 um over its 41 % valid "
-            "nodes (at most 300 um near conjugate), 25x25: far from conjugate, median "
+            "nodes (at most 300 um near conjugate), 344 of them met on another sheet of the "
+            "pinion's envelope than its flank grid, 25x25: far from conjugate, median "
             "ease-off 2424 um over its 69 % valid nodes") in err
     # the module remedy of the low eps_vb checked before it is offered (issue 71, round
     # 96): 57x57, the least count that reaches 1.25, has no envelope solution as `ltca
@@ -288,9 +289,11 @@ def test_the_15x15s_25x25_is_named_far_from_conjugate_by_its_median_ease_off():
     nodes and lost its unloaded contact; with the batch-seed fix 598 of 861 nodes are
     valid (69 %, above VALID_NODE_FRACTION_MIN) and the cycle is computed, but the
     pinion meets the gear millimetres from touching: median ease-off 2424 um, span 3360
-    um (bundled cases: medians 7-88 um, spans 14-648 um). Named far from conjugate by
-    the median, which is independent of the wording's source: numpy's median of the
-    ease-off at its valid nodes of the case synthesised the same way."""
+    um (bundled cases: medians 3.5-88 um, spans 14-648 um), and every one of its mates
+    lies on another sheet of the pinion's envelope than the pinion's own flank grid
+    (none on every bundled case). Named far from conjugate by both, independent of the
+    wording's source: numpy's median of the ease-off at its valid nodes of the case
+    synthesised the same way, and the two solves' cradle angles."""
     from contact.optimize.development_conjugacy import (
         EASE_OFF_MEDIAN_MAX,
         conjugacy,
@@ -312,6 +315,16 @@ def test_the_15x15s_25x25_is_named_far_from_conjugate_by_its_median_ease_off():
     assert median == pytest.approx(2424.0, abs=5.0) and median > 8 * EASE_OFF_MEDIAN_MAX
     assert eo.fraction >= VALID_NODE_FRACTION_MIN and eo.mismatched and not eo.near
     assert unloaded_contact_failure(case, "drive") is None
+    # every mate on another sheet of the pinion's envelope than its flank grid: the mates'
+    # cradle angles (0.15-0.33 rad) all above the grid's (-0.39 to -0.23), read from the
+    # two solves' own parameters; a brute-force root search found the sheets crossing
+    from geometry.machine.flank import flank_surface
+
+    fs = flank_surface(case, "pinion", raw.pinion_flank)
+    grid_q = fs.q[fs.valid]
+    mates_q = raw.pinion_parameters[..., 2][raw.valid]
+    assert mates_q.min() > grid_q.max() + 0.25 * np.ptp(grid_q)
+    assert eo.off_sheet == eo.valid == 598
     assert got.failure == eo.far_text()
     assert got.failure.startswith("far from conjugate, median ease-off 2424 um")
     assert got.valid == eo.fraction

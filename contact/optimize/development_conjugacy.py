@@ -29,8 +29,14 @@ conjugate: the criterion"):
   before 25 µm: near conjugate over most of its flank, its 954 µm in a corner; its LTE is
   told by :data:`TRIAL_LTE_FACTOR`), 1561 and 2424 µm on the 15×15 hypoid's 20×20 and
   25×25 (their pinion meets the gear millimetres from touching). :attr:`Conjugacy.near`
-  asks both: at least :data:`VALID_NODE_FRACTION_MIN` valid (too few to judge below) and
-  the median at most 300 µm.
+  asks: at least :data:`VALID_NODE_FRACTION_MIN` valid (too few to judge below), the
+  median at most 300 µm, and
+* :data:`OFF_SHEET_SHARE_MAX`: at most 0.1 of the valid nodes met on another sheet of the
+  pinion's envelope than its flank grid (:func:`off_sheet_mates`): 0 on every bundled case
+  and issue-71 case analysed (drive and coast), 344 of 353 and 598 of 598 on the 20×20 and
+  25×25, whose envelope has two crossing sheets over the flank (brute-force search of the
+  roots, docs/synthesis.md): their ease-off measures the pinion on one of them, so the
+  median's millimetres are a symptom of the unsound generation as much as a mismatch.
 * :data:`TRIAL_LTE_FACTOR`: the checked LTE p-p of the written drive design over its coarse
   trial's (the larger of light and design torque). 57 checks of 28 developments logged on
   this machine: median 1.00, 95 % within 1.26, 99 % within 1.39; beyond: 2.07 (a 20×30's
@@ -71,11 +77,12 @@ import numpy as np
 from contact.compliance.fe.worker_cpu import cpu_seconds
 from geometry.case import Case
 
-__all__ = ["EASE_OFF_MEDIAN_MAX", "GENERATED_SHARE_MIN", "TRIAL_LTE_FACTOR",
-           "VALID_NODE_FRACTION_MIN", "Conjugacy",
+__all__ = ["EASE_OFF_MEDIAN_MAX", "GENERATED_SHARE_MIN", "OFF_SHEET_SHARE_MAX",
+           "TRIAL_LTE_FACTOR", "VALID_NODE_FRACTION_MIN", "Conjugacy",
            "Generation", "TeethCheck", "checked_teeth_text", "conjugacy", "conjugacy_of",
            "generation", "generation_limit_text", "misjudged_trial_text", "non_conjugate_text",
-           "teeth_checker", "teeth_for_generation", "teeth_text", "trial_lte_ratio"]
+           "off_sheet_mates", "teeth_checker", "teeth_for_generation", "teeth_text",
+           "trial_lte_ratio"]
 
 #: least share [1] of valid ease-off nodes of flanks that are near conjugate (module
 #: docstring: 0.65-0.84 on every working case measured, 0.19 on the non-conjugate one)
@@ -87,6 +94,16 @@ VALID_NODE_FRACTION_MIN = 0.5
 #: meets the gear only millimetres away from touching: the geometric mean of 88 and 1561,
 #: 370 µm, rounded down)
 EASE_OFF_MEDIAN_MAX = 300.0
+
+#: largest share [1] of the valid ease-off nodes whose pinion mate lies on another sheet of
+#: the pinion's envelope than its own flank grid (:func:`off_sheet_mates`; module
+#: docstring: 0 on every bundled case and issue-71 case analysed, drive and coast; 0.97
+#: and 1.00 on the 15x15 hypoid's 20x20 and 25x25)
+OFF_SHEET_SHARE_MAX = 0.1
+
+#: a mate's cradle angle beyond the flank grid's cradle range by more than this share [1]
+#: of that range lies on another sheet (the grid's own mates reach at most 0.0 of it beyond)
+OFF_SHEET_MARGIN = 0.25
 
 #: least share [1] of the pinion's drive-flank blank grid the cutter generates on a pinion
 #: taken as generated over its working depth (module docstring: 0.99-1.00 on every bundled
@@ -112,6 +129,9 @@ class Conjugacy(NamedTuple):
     span: float  # [µm] the ease-off's largest value over the valid nodes (NaN: none)
     #: [µm] the ease-off's median over the valid nodes (NaN: none, or not measured)
     median: float = math.nan
+    #: [1] valid nodes whose pinion mate lies on another sheet of the pinion's envelope
+    #: than its flank grid (:func:`off_sheet_mates`; 0: none, or not measured)
+    off_sheet: int = 0
 
     @property
     def fraction(self) -> float:
@@ -125,21 +145,32 @@ class Conjugacy(NamedTuple):
         return math.isfinite(self.median) and self.median > EASE_OFF_MEDIAN_MAX
 
     @property
+    def off_sheet_share(self) -> float:
+        """Share [1] of the valid nodes whose pinion mate lies on another envelope sheet."""
+        return self.off_sheet / self.valid if self.valid else 0.0
+
+    @property
     def near(self) -> bool:
-        """At least :data:`VALID_NODE_FRACTION_MIN` of the nodes valid and the median
-        ease-off at most :data:`EASE_OFF_MEDIAN_MAX` (where measured)."""
-        return self.fraction >= VALID_NODE_FRACTION_MIN and not self.mismatched
+        """At least :data:`VALID_NODE_FRACTION_MIN` of the nodes valid, the median ease-off
+        at most :data:`EASE_OFF_MEDIAN_MAX` (where measured) and at most
+        :data:`OFF_SHEET_SHARE_MAX` of the valid nodes' mates on another envelope sheet."""
+        return (self.fraction >= VALID_NODE_FRACTION_MIN and not self.mismatched
+                and self.off_sheet_share <= OFF_SHEET_SHARE_MAX)
 
     def far_text(self) -> str:
         """Why not :attr:`near`, in a few words ("" where near): the median ease-off
         where it is above its bound, else the share of valid nodes."""
         if self.near:
             return ""
+        sheet = ""
+        if self.off_sheet_share > OFF_SHEET_SHARE_MAX:
+            sheet = (f", {self.off_sheet} of them met on another sheet of the pinion's "
+                     "envelope than its flank grid")
         if self.mismatched:
             return (f"far from conjugate, median ease-off {self.median:.0f} um over its "
                     f"{100 * self.fraction:.0f} % valid nodes (at most "
-                    f"{EASE_OFF_MEDIAN_MAX:.0f} um near conjugate)")
-        return f"far from conjugate, {100 * self.fraction:.0f} % valid ease-off nodes"
+                    f"{EASE_OFF_MEDIAN_MAX:.0f} um near conjugate){sheet}")
+        return f"far from conjugate, {100 * self.fraction:.0f} % valid ease-off nodes{sheet}"
 
 
 def conjugacy(case: Case, flank: str = "drive") -> Conjugacy:
@@ -172,7 +203,58 @@ def conjugacy(case: Case, flank: str = "drive") -> Conjugacy:
         eo = ease_off(case, flank=flank)
     except InputError:
         return Conjugacy(0, nodes, math.nan)
-    return conjugacy_of(eo)
+    return conjugacy_of(eo)._replace(off_sheet=off_sheet_mates(case, eo))
+
+
+def off_sheet_mates(case: Case, eo: Any) -> int:
+    """Valid ease-off nodes whose pinion mate lies on another sheet of the pinion's
+    envelope than the pinion's own flank grid.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    eo : contact.utca.easeoff.EaseOff
+        Its ``valid`` (nv, nu), ``pinion_flank`` and ``pinion_parameters`` (..., 3): the
+        mates' envelope parameters (s, θ, q) [mm, rad, rad].
+
+    Returns
+    -------
+    int
+        The valid nodes whose mate's cradle angle q lies outside the cradle range of the
+        pinion flank's 41 × 21 grid (:func:`geometry.machine.flank.flank_surface`, reason
+        0) by more than :data:`OFF_SHEET_MARGIN` of that range; 0 where the pinion is not
+        generated, its grid has no valid point or the mates' parameters are not stored.
+
+    Raises
+    ------
+    InputError
+        Settings with no envelope inside the blank (:func:`flank_surface`).
+
+    Notes
+    -----
+    Both are solutions of the equation of meshing with the flank's regular sign of ∂f/∂q
+    (Litvin & Fuentes 2004, §6.3), each continued from its own seed: the flank grid's from
+    its middle point, the ease-off's from its forward grid over the extended pinion blank.
+    Where they lie on different cradle ranges the envelope has two sheets over the flank
+    (measured on the 15x15 hypoid's 25x25 of issue 71: all 598 mates at q 0.15–0.33 rad,
+    the grid at −0.39…−0.23; at 3 of 8 nodes searched by brute force the grid's sheet lies
+    0.5–2.3 mm deeper into the tooth, at 3 the mate's: the sheets cross), and the ease-off
+    measures the pinion on one of them. Every bundled and issue-71 case analysed: 0.
+    """
+    from geometry.machine.flank import flank_surface
+
+    params = getattr(eo, "pinion_parameters", None)
+    tool = case.pinion.flank(eo.pinion_flank)
+    if params is None or tool.machine.process != "Generate":
+        return 0
+    fs = flank_surface(case, "pinion", eo.pinion_flank)
+    grid_q = np.asarray(fs.q)[np.asarray(fs.valid)]
+    if grid_q.size == 0:
+        return 0
+    lo, hi = float(np.min(grid_q)), float(np.max(grid_q))
+    pad = OFF_SHEET_MARGIN * (hi - lo)
+    q = np.asarray(params)[..., 2][np.asarray(eo.valid)]
+    return int(np.count_nonzero((q < lo - pad) | (q > hi + pad)))
 
 
 def conjugacy_of(eo: Any) -> Conjugacy:
@@ -661,8 +743,9 @@ def non_conjugate_text(found: Conjugacy, contact_ratios: tuple[float, float] | N
     -------
     str or None
         The cause and the step to take where the flanks are not :attr:`Conjugacy.near`
-        (fewer than :data:`VALID_NODE_FRACTION_MIN` of the nodes valid, or a median
-        ease-off above :data:`EASE_OFF_MEDIAN_MAX`); None otherwise.
+        (fewer than :data:`VALID_NODE_FRACTION_MIN` of the nodes valid, a median ease-off
+        above :data:`EASE_OFF_MEDIAN_MAX`, or more than :data:`OFF_SHEET_SHARE_MAX` of the
+        mates on another envelope sheet); None otherwise.
     """
     if found.near:
         return None
@@ -678,6 +761,9 @@ def non_conjugate_text(found: Conjugacy, contact_ratios: tuple[float, float] | N
                    f"({100 * found.fraction:.0f} %, at least "
                    f"{100 * VALID_NODE_FRACTION_MIN:.0f} % on near-conjugate flanks, 60-84 % "
                    f"on every bundled and issue-71 design measured){span}")
+    if found.off_sheet_share > OFF_SHEET_SHARE_MAX:
+        measure += (f", and {found.off_sheet} of its valid nodes meet the pinion on another "
+                    "sheet of its envelope than its flank grid (none on every bundled case)")
     return (f"the synthesised flanks are far from conjugate: the written drive flank's "
             f"{measure}: the LTE comes from the synthesis's mismatch, not from the "
             f"contact ratios{ratios}, and a wider face or a larger spiral angle is not the "
