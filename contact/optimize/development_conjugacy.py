@@ -89,7 +89,7 @@ __all__ = ["EASE_OFF_MEDIAN_MAX", "GENERATED_SHARE_MIN", "OFF_SHEET_SHARE_MAX",
 VALID_NODE_FRACTION_MIN = 0.5
 
 #: [µm] largest median ease-off over the valid nodes of flanks that are near conjugate
-#: (module docstring: 7-88 µm on every bundled case and flank, 19-39 µm on the issue-71
+#: (module docstring: 3.5-88 µm on every bundled case and flank, 6-39 µm on the issue-71
 #: cases analysed; 1561 and 2424 µm on the 15x15 hypoid's 20x20 and 25x25, whose pinion
 #: meets the gear only millimetres away from touching: the geometric mean of 88 and 1561,
 #: 370 µm, rounded down)
@@ -102,7 +102,8 @@ EASE_OFF_MEDIAN_MAX = 300.0
 OFF_SHEET_SHARE_MAX = 0.1
 
 #: a mate's cradle angle beyond the flank grid's cradle range by more than this share [1]
-#: of that range lies on another sheet (the grid's own mates reach at most 0.0 of it beyond)
+#: of that range lies on another sheet (every bundled case's mates lie inside the range;
+#: the 15x15's 20x20 and 25x25 mates up to 1.2 and 3.5 ranges beyond it)
 OFF_SHEET_MARGIN = 0.25
 
 #: least share [1] of the pinion's drive-flank blank grid the cutter generates on a pinion
@@ -159,7 +160,8 @@ class Conjugacy(NamedTuple):
 
     def far_text(self) -> str:
         """Why not :attr:`near`, in a few words ("" where near): the median ease-off
-        where it is above its bound, else the share of valid nodes."""
+        where it is above its bound, else the share of valid nodes; then the mates on
+        another envelope sheet where more than :data:`OFF_SHEET_SHARE_MAX`."""
         if self.near:
             return ""
         sheet = ""
