@@ -49,6 +49,7 @@ def test_the_criterion_separates_a_mismatch_from_the_bundled_cases():
     assert (was.valid, was.nodes) == (601, 861)
     assert was.span == pytest.approx(954.0, abs=1.0)
     assert was.median == pytest.approx(24.8, abs=0.5) and was.near
+    assert was.off_sheet == 0  # every mate on the pinion flank grid's sheet
     for name, median in ((DEFAULT_CASE, 10.0), ("iso23509_sample2_fm", 88.1)):
         good = conjugacy(load_case(bundled_case_path(name)))
         assert good.near and good.fraction > 0.65
