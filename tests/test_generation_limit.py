@@ -105,7 +105,7 @@ def test_the_no_development_case_has_its_unloaded_contact_as_ltca_run_computes_i
     is computed: the contact loss was the defect's. The check and ``ltca run``'s unloaded
     TCA agree (neither refuses; its drive UTE 661 urad, as ltca run measured it on the
     branch with the LTE 525-907 urad at 50-500 N m: a real FAIL, not a refusal). The
-    refusal path itself is tested on the 12x12 miter (tests of written_contact)."""
+    refusal path itself is tested on the 12x12 miter (tests/test_synthesize_basic_errors.py)."""
     from contact.optimize.written_contact import unloaded_contact_failure
     from contact.utca.datasets import unloaded_tca
 
