@@ -44,7 +44,12 @@ from geometry.core.kernels import kernels_module
 from geometry.machine.curvature import surface_curvatures
 from geometry.machine.cutter import working_sections
 from geometry.machine.flank import FlankSurface, blank_outline, flank_surface
-from geometry.machine.meshing import envelope_family, solve_envelope, warm_seeds_active
+from geometry.machine.meshing import (
+    envelope_family,
+    meshing_q_sign,
+    solve_envelope,
+    warm_seeds_active,
+)
 
 if TYPE_CHECKING:
     from geometry.case import Case
@@ -126,13 +131,17 @@ class Mates(NamedTuple):
     params: np.ndarray  # (..., 3) its envelope parameters (s, θ, q) [mm, rad, rad]
 
 
-def _pinion_points(case: Case, flank: str, z, rho, guess=None, curvatures: bool = True):
+def _pinion_points(case: Case, flank: str, z, rho, guess=None, curvatures: bool = True,
+                   undercut_sign: float | None = None, seed_index: tuple | None = None):
     """Real pinion surface at projection-plane places: position, normal, reason, curvatures.
 
     ``guess`` (params (..., 3), section) from nearby earlier points starts the envelope solver
     (:func:`geometry.machine.meshing.solve_envelope`) there instead of at its seed search.
     ``curvatures=False``: κ₁, κ₂ and e₁ are None (the placement's trial places: only the
-    placed mates' are read, :func:`_with_curvatures`).
+    placed mates' are read, :func:`_with_curvatures`). ``undercut_sign``: the flank's
+    regular sign of ∂f/∂q (:attr:`_ForwardMap.q_sign`) for the solver's undercut test;
+    None: the solve's seed target's. ``seed_index``: the solver's seed target (None: the
+    middle one).
     """
     mem = case.pinion
     tool = mem.flank(flank)
@@ -141,7 +150,8 @@ def _pinion_points(case: Case, flank: str, z, rho, guess=None, curvatures: bool 
         params, sec0 = guess
         guess = (params[..., 0], params[..., 1], params[..., 2], sec0)
     sol = solve_envelope(tool.blade, tool.machine, z, rho, length_scale=bl.outer_cone_distance,
-                         depth=bl.outer_addendum + bl.outer_dedendum, guess=guess)
+                         depth=bl.outer_addendum + bl.outer_dedendum, guess=guess,
+                         undercut_sign=undercut_sign, seed_index=seed_index)
     mirror = _MIRROR if mem.hand == "left" else np.ones(3)
     k1 = k2 = e1 = None
     if curvatures:
@@ -192,17 +202,19 @@ def _take(mates: Mates, sel) -> Mates:
 
 
 def _mates(case: Case, flank: str, kin: MeshKinematics, corners, u, v, *, branch=None,
-           reference=None, guess=None, points=None, curvatures: bool = True
+           reference=None, guess=None, points=None, curvatures: bool = True,
+           undercut_sign: float | None = None, seed_index: tuple | None = None
            ) -> tuple[Mates, int]:
     """Evaluate the real pinion at fractions (u, v) and map it through the action surface.
 
     ``guess``: (params, section) of nearby pinion points, see :func:`_pinion_points`;
     ``points``: those pinion points already computed (:func:`_pinion_points` at (u, v));
-    ``curvatures``: as :func:`_pinion_points`'.
+    ``curvatures``, ``undercut_sign``, ``seed_index``: as :func:`_pinion_points`'.
     """
     z, rho = _bilinear(corners, u, v)
     if points is None:
-        points = _pinion_points(case, flank, z, rho, guess, curvatures)
+        points = _pinion_points(case, flank, z, rho, guess, curvatures, undercut_sign,
+                                seed_index)
     pos, nrm, reason, k1, k2, e1, sec, par = points
     roll, branch = action_roll_angle(kin, pos, nrm, branch=branch, reference=reference)
     good = (reason == 0) & np.isfinite(roll)
@@ -244,12 +256,40 @@ class _ForwardMap:
     nodes: Mates  # the mates on the extended grid
     #: [mm] the image's axial position and radius over (u, v), splines evaluated together
     image: SplineGroup
+    #: the sign of ∂f/∂q on the pinion flank's regular envelope, from the forward grid's
+    #: solve (its seed the grid's middle); None: not generated, or no valid point
+    q_sign: float | None = None
 
     def mates(self, u, v, guess) -> Mates:
         """Mates at the fractions (u, v), the envelope solver started at ``guess``; without
-        curvatures (the placement's trial places, :func:`_with_curvatures`)."""
+        curvatures (the placement's trial places, :func:`_with_curvatures`).
+
+        The solver's undercut test takes the forward grid's sign (:attr:`q_sign`), and
+        where the batch's middle place, the solver's seed, has no good mate or one whose
+        envelope parameters lie farther from its guess than one limited Newton step of the
+        solver (:data:`_SEED_JUMP`: another root), the batch is solved again seeded at the
+        place nearest the forward grid's middle node (:func:`_seed_place`): the middle of a
+        subset of places (the nodes not yet placed) can lie at the blank's edge, where its
+        root is on another section or beyond the singular line, and the seed's section
+        and sign then decided for the whole batch (issue 71, the FM 20×31 at Σ 70°: 514
+        of 560 regular places called undercut, and trial places a Newton step of 9e-6
+        away solved on the tip section, 3.3 mm off; docs/synthesis.md). A batch whose
+        middle seed is good near its guess is solved once, as before."""
         m, _ = _mates(self.case, self.flank, self.kin, self.corners, u, v, branch=self.branch,
-                      guess=guess, curvatures=False)
+                      guess=guess, curvatures=False, undercut_sign=self.q_sign)
+        shape = np.shape(m.good)
+        if not shape or self.q_sign is None or guess is None:
+            return m
+        mid = tuple(d // 2 for d in shape)
+        if m.good[mid] and np.all(np.abs(m.params[mid] - np.asarray(guess[0])[mid])
+                                  <= _SEED_JUMP):
+            return m
+        seed = _seed_place(self, u, v)
+        if seed is None or seed == mid:
+            return m
+        m, _ = _mates(self.case, self.flank, self.kin, self.corners, u, v, branch=self.branch,
+                      guess=guess, curvatures=False, undercut_sign=self.q_sign,
+                      seed_index=seed)
         return m
 
     def jacobian(self, u, v) -> np.ndarray:
@@ -468,7 +508,57 @@ def _forward_map(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray) -> _
     image = fill_missing(fwd.image, smooth)
     splines = [RectBivariateSpline(up, vp, image[..., k]) for k in range(2)]
     return _ForwardMap(case, pf, kin, cp, branch, up, vp, fwd,
-                       SplineGroup(splines, kernels_module("contact.utca.isoline_numba")))
+                       SplineGroup(splines, kernels_module("contact.utca.isoline_numba")),
+                       _regular_q_sign(case, pf, points))
+
+
+def _seed_place(fm: _ForwardMap, u, v) -> tuple:
+    """The index (of the shape of ``u``) of the place (u, v) nearest, in pinion fractions,
+    the forward grid's middle node (its solve's seed; the first on ties); the middle index
+    where no place is finite."""
+    u, v = np.asarray(u, dtype=float), np.asarray(v, dtype=float)
+    if u.size == 0:
+        return None
+    d = (u - fm.u[len(fm.u) // 2]) ** 2 + (v - fm.v[len(fm.v) // 2]) ** 2
+    if not np.isfinite(d).any():
+        return None
+    return tuple(int(i) for i in np.unravel_index(int(np.nanargmin(d)), u.shape))
+
+
+def _regular_q_sign(case: Case, pf: str, points) -> float | None:
+    """The sign of ∂f/∂q on the pinion flank's regular envelope, read at the forward grid's
+    valid point nearest its middle (the grid's solve compared every point with its seed,
+    the middle target, so every valid point has that sign); None where the pinion is not
+    generated or no point is valid (the later solves then take their own seed's).
+
+    Why: the placement's later solves (:meth:`_ForwardMap.mates`) are of subsets of places
+    whose middle target, the solver's seed, can converge beyond the singular line or on
+    another root; its sign then called every regular point of the subset undercut and
+    the ease-off lost those nodes (issue 71, the FM 20×31 at Σ 70°: 197 of 861 nodes
+    valid, 664 with the flank's sign; docs/synthesis.md).
+    """
+    tool = case.pinion.flank(pf)
+    if tool.machine.process != "Generate":
+        return None
+    reason, section, params = points[2], points[6], points[7]
+    ok = np.argwhere(reason == 0)
+    if ok.size == 0:
+        return None
+    mid = (np.asarray(reason.shape) - 1) / 2.0
+    i = tuple(ok[np.argmin(((ok - mid) ** 2).sum(axis=1))])
+    sign = meshing_q_sign(tool.blade, tool.machine, params[i][0:1], params[i][1:2],
+                          params[i][2:3], np.asarray(section[i]).reshape(1),
+                          length_scale=case.pinion.blank.outer_cone_distance)
+    return float(sign[0]) if sign[0] != 0 else None
+
+
+#: [mm, rad, rad] the largest move of (s, θ, q) from its guess that a trial batch's middle
+#: seed may make and still seed the batch (:meth:`_ForwardMap.mates`): one limited Newton
+#: step of the envelope solver (geometry.machine.meshing's step limit; a root farther is
+#: "possibly another branch" there too). A seed that crosses a blade-section junction to
+#: its neighbour moves far less (the default run's: none re-seeded); the 20×31 at Σ 70°'s
+#: jumped to the tip section at q −0.46 rad, its neighbours at q ≈ −0.08.
+_SEED_JUMP = np.array([2.0, 0.15, 0.15])
 
 
 _NEAREST_CANDIDATES = 4  # k-d tree neighbours re-ranked by _nearest_node's own distance

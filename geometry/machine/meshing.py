@@ -79,8 +79,8 @@ from geometry.machine.family import (
 if TYPE_CHECKING:
     from scipy.spatial import cKDTree
 
-__all__ = ["REASONS", "EnvelopeSolution", "WarmSeeds", "envelope_family", "solve_envelope",
-           "warm_seeds_active"]
+__all__ = ["REASONS", "EnvelopeSolution", "WarmSeeds", "envelope_family", "meshing_q_sign",
+           "solve_envelope", "warm_seeds_active"]
 
 log = logging.getLogger(__name__)
 
@@ -1085,9 +1085,61 @@ def envelope_family(blade: Blade, settings: MachineSettings, s, theta, q, sectio
                              for a in family_views(buf, (s.size,))))
 
 
+
+def meshing_q_sign(blade: Blade, settings: MachineSettings, s, theta, q, section, *,
+                   length_scale: float, kernels: str | None = None) -> np.ndarray:
+    """The sign of ∂f/∂q, the meshing function's derivative in the cradle angle, at solved
+    envelope parameters: what :func:`solve_envelope`'s undercut test (reason 4) compares.
+
+    Parameters
+    ----------
+    blade, settings
+        As :func:`solve_envelope`'s (a generated flank: ``settings.process`` "Generate").
+    s, theta, q : array_like — [mm], [rad], [rad]
+        Solved parameters (:attr:`EnvelopeSolution.s`, ``theta``, ``q``), one shape.
+    section : array_like of int
+        Their blade sections, the shape of ``s``.
+    length_scale : float — [mm]
+        As :func:`solve_envelope`'s.
+    kernels : {"numpy", "numba"}, optional
+        As :func:`solve_envelope`'s.
+
+    Returns
+    -------
+    ndarray of float, the shape of ``s``
+        +1, −1 (0 where ∂f/∂q is 0): every regular point of a flank has the sign of its
+        solve's seed, so the sign at one point a solve left valid is that flank's
+        ``undercut_sign`` for later solves of subsets of places.
+
+    Raises
+    ------
+    InputError
+        Where the shapes differ, or the flank is not generated.
+
+    Notes
+    -----
+    Litvin & Fuentes 2004, §6.3: the envelope's singular line, where ∂f/∂q changes sign,
+    separates the regular and the cut-away parts; evaluated by the buffer function the
+    solve uses (:func:`geometry.machine.family.meshing_buffer` or its compiled kernel).
+    """
+    s = np.asarray(s, dtype=float)
+    arrays = (np.asarray(theta, dtype=float), np.asarray(q, dtype=float),
+              np.asarray(section, dtype=np.intp))
+    if any(a.shape != s.shape for a in arrays):
+        raise InputError("theta, q, section: must have the shape of s "
+                         f"{s.shape}, got {[a.shape for a in arrays]}")
+    if settings.process != "Generate":
+        raise InputError(f"settings.process: must be 'Generate' for a sign of df/dq, "
+                         f"got {settings.process!r}")
+    ctx = _context(blade, settings, length_scale, kernels)
+    _, _, grad = _family_meshing(ctx, s.ravel(), *(a.ravel() for a in arrays))
+    return np.sign(np.asarray(grad)[2]).reshape(s.shape)
+
+
 def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
                    length_scale: float, depth: float, seed_index=None,
-                   guess=None, kernels: str | None = None) -> EnvelopeSolution:
+                   guess=None, kernels: str | None = None,
+                   undercut_sign: float | None = None) -> EnvelopeSolution:
     """Generated surface points at prescribed axial positions and radii (seed Eq. 2.7–2.8).
 
     Parameters
@@ -1122,6 +1174,16 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
         Newton's implementation (:func:`geometry.core.kernels.kernels_module`; default:
         the environment variable ``LTCA_KERNELS``, else numba where installed). The
         compiled kernel gives the same roots to round-off (~1e-13 mm, rad).
+    undercut_sign : {+1, -1}, optional
+        The sign of ∂f/∂q on the regular part of this flank's envelope (Generate only), as
+        :func:`meshing_q_sign` gives it at a point a solve judged regular: the undercut
+        test (reason 4) compares each point's sign with it. Default: the seed target's
+        own, which is right where the seed lies on the regular envelope (the middle of a
+        flank's grid) but not for an arbitrary subset of places, whose middle target may
+        converge beyond the singular line or on another root: every regular point of the
+        batch is then called undercut (issue 71, the FM 20×31 at Σ 70°: 514 of 560 trial
+        places of the ease-off's placement, the seed on the tip section at q −0.46 rad,
+        ∂f/∂q −0.012 against +0.41 on the flank; docs/synthesis.md).
 
     Returns
     -------
@@ -1224,9 +1286,11 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
         # undercut: ∂f/∂q of the opposite sign to the seed point's (Litvin & Fuentes 2004,
         # §6.3: the envelope's singular line separates the regular and the cut-away parts)
         # (the seed point's family by the same buffer functions as generated_family)
-        _, _, grad_seed = _family_meshing(ctx, x_seed[0:1], x_seed[1:2], x_seed[2:3],
-                                          np.array([sec_seed]))
-        reason[(reason == 0) & (np.sign(grad[2]) != np.sign(grad_seed[2, 0]))] = 4
+        if undercut_sign is None:
+            _, _, grad_seed = _family_meshing(ctx, x_seed[0:1], x_seed[1:2], x_seed[2:3],
+                                              np.array([sec_seed]))
+            undercut_sign = float(np.sign(grad_seed[2, 0]))
+        reason[(reason == 0) & (np.sign(grad[2]) != undercut_sign)] = 4
     else:
         buf = _family(ctx, x[:, 0], x[:, 1], q, section)
         res = np.zeros(n)
