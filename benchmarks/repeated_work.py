@@ -41,6 +41,12 @@ computed before (0.5 s), of 308 cold analyses none, of 129 syntheses' steps 3–
 earlier development (2.7 s) (docs/performance.md, "The 17×23's window re-developments:
 what they repeat").
 
+``--by-development`` also counts the ease-offs of the development's trials (branch cpu102:
+``ease-off (a trial)``), which a trial's warm-seed block computes without the per-process
+memo and the count above did not see: on the 17x23 (main ``26b22062``, 2026-11-29) 127
+of its 381 ease-offs, 4 of them repeated across developments (the window re-development's
+first four trials, the rated development's designs again: ≈ 0.2 s).
+
 Usage: ``python benchmarks/repeated_work.py BASIC.toml [-o CASE.toml] [--calls FILE]
 [--by-development]``.
 One design takes 2–4 min of CPU; point ``HYPOID_LTCA_CACHE`` at an empty directory for a
@@ -190,6 +196,30 @@ def _wrap_memo(memo, record):
     return wrapped
 
 
+def _wrap_trial_ease_off(compute, record, warm=_warm):
+    """``easeoff._ease_off`` with each call made inside a development trial's warm-seed
+    block recorded as ``record("ease-off (a trial)", key, CPU s)`` (branch cpu102): those
+    the per-process memo never sees (:func:`contact.utca.easeoff._memo_ease_off` computes
+    them unmemoised; the development's :class:`~contact.optimize.development_evaluate.
+    KeptTeeth` keeps them for that development alone), keyed as the memo keys the others
+    (the teeth, the misalignment's ``repr``, the flank, the grid and the phases). Calls
+    outside a block go through the memo and are counted there (not here: once each)."""
+    def wrapped(case, flank, misalignment, grid, pinion_phase, gear_phase):
+        if not warm():
+            return compute(case, flank, misalignment, grid, pinion_phase, gear_phase)
+        t0 = time.process_time()
+        try:
+            return compute(case, flank, misalignment, grid, pinion_phase, gear_phase)
+        finally:
+            mis = case.misalignment if misalignment is None else misalignment
+            grid_key = tuple(sorted((grid or {}).items()))
+            record("ease-off (a trial)",
+                   str(hash((case.teeth_key(), repr(mis), flank, repr(grid_key),
+                             float(pinion_phase), float(gear_phase)))),
+                   time.process_time() - t0)
+    return wrapped
+
+
 def _wrap_development(devs: Developments, record, record_ease_off) -> None:
     """Wrap the developments, their check steps, the ease-off memo and the synthesis'
     steps 3–6 where they are looked up; ``record(kind, key, CPU s)``,
@@ -204,6 +234,7 @@ def _wrap_development(devs: Developments, record, record_ease_off) -> None:
     check.check_steps = development.check_steps = steps
 
     easeoff._memoised_ease_off = _wrap_memo(easeoff._memoised_ease_off, record_ease_off)
+    easeoff._ease_off = _wrap_trial_ease_off(easeoff._ease_off, record)
     unrelieved = case_synthesis._unrelieved_flank
 
     def _unrelieved_flank(pair, pf, fo, ref_gear_rotation, **kw):

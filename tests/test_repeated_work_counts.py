@@ -54,3 +54,45 @@ def test_repeats_are_told_apart_by_the_development_of_the_first_call(counts):
     assert across == {("synthesis", "1", "2"): (1, 0.25), ("ease-off", "2", "3"): (1, 4.0)}
     assert sum(n for n, _ in across.values()) == sum(
         v[2] for v in out.values())
+
+
+def test_trial_ease_offs_are_recorded_once_each_and_keyed_by_their_inputs(counts):
+    """``--by-development``'s trial ease-offs (branch cpu102): a call inside a trial's
+    warm-seed block is recorded (kind ``"ease-off (a trial)"``), one outside is not (the
+    per-process memo's wrapper counts it); equal inputs give equal keys, another flank or
+    misalignment another key; the result is the computation's, unchanged."""
+    class Teeth:  # a case's teeth key: hashable, equal for equal teeth
+        def __init__(self, name):
+            self.name = name
+
+        def teeth_key(self):
+            return ("teeth", self.name)
+
+        misalignment = "aligned"
+
+    warm = [True]
+    recorded = []
+    computed = []
+
+    def compute(case, flank, misalignment, grid, pinion_phase, gear_phase):
+        computed.append(flank)
+        return (case.name, flank)
+
+    wrapped = counts._wrap_trial_ease_off(
+        compute, lambda kind, key, seconds: recorded.append((kind, key, seconds)),
+        warm=lambda: warm[0])
+    a, b = Teeth("a"), Teeth("a")
+    assert wrapped(a, "concave", None, None, 0.0, 0.0) == ("a", "concave")
+    assert wrapped(b, "concave", None, None, 0.0, 0.0) == ("a", "concave")
+    assert wrapped(a, "convex", None, None, 0.0, 0.0) == ("a", "convex")
+    assert wrapped(a, "concave", "dE 0.05", None, 0.0, 0.0) == ("a", "concave")
+    warm[0] = False
+    assert wrapped(a, "concave", None, None, 0.0, 0.0) == ("a", "concave")
+    assert len(computed) == 5  # every call computed: the wrapper only counts
+    assert [r[0] for r in recorded] == ["ease-off (a trial)"] * 4
+    keys = [r[1] for r in recorded]
+    assert keys[0] == keys[1] and len(set(keys)) == 3
+    assert all(r[2] >= 0.0 for r in recorded)
+    # the repeat is told apart as the other kinds are (within its development here)
+    out = counts.repeats_by_development([(k, key, 0.1, "1") for k, key, _ in recorded])
+    assert out["ease-off (a trial)"][0] == 1
