@@ -167,6 +167,7 @@ from contact.optimize.development_coast_light_edge import (
     written_coast_light_edge_line,
 )
 from contact.optimize.development_coast_lte_torque import coast_lte_torque
+from contact.optimize.development_confirm import confirmer
 from contact.optimize.development_edge_peak import checked_edge_peak
 from contact.optimize.development_evaluate import (  # noqa: F401
     CHECK_LTCA,
@@ -521,8 +522,12 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
     def make(b: BasicDesign) -> Case:  # a design of the coarse search: no tip planes
         return synthesize(b, memo=memo, tip_planes=False)[0]
 
+    # the check's `placed` (its memo keyed by it): a coarse "all met" stop confirmed at
+    # the default sampling before it ends the search (development_confirm)
+    placed = functools.partial(placed_case, basic, flank, memo)
     evaluate = evaluator(basic, targets, setup, teeth, say, evals, "drive",
-                         targets.max_evaluations, torque_name=torque_name)
+                         targets.max_evaluations, torque_name=torque_name,
+                         confirm=confirmer(targets, setup, teeth, say, placed))
     ok = search_flank(evaluate, evals, lambda values: with_flank_options(basic, flank, values),
                       make, targets, start, basic, targets.max_evaluations)
     if not ok:
@@ -555,7 +560,6 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
     # coarse search in turn until one meets every target (the coarse LTCA's peak pressure
     # is a few % low: 2387 against 2539 MPa on the spiral bevel 13x39)
     c_check = cpu_seconds()
-    placed = functools.partial(placed_case, basic, flank, memo)
     others: list = []  # the checked designs not chosen: their steps may repair them
     best = checked_best(evals, targets, setup, teeth, say, placed, slopes=evaluate.slopes,
                         others=others)

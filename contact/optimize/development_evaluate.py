@@ -481,7 +481,9 @@ def evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str, 
               teeth: KeptTeeth, say: Callable[[str], None],
               evals: list[DevelopmentEvaluation], side: str, n_max: int,
               key_prefix: tuple = (),
-              torque_name: str = "") -> Callable[..., DevelopmentEvaluation]:
+              torque_name: str = "",
+              confirm: Callable[[DevelopmentEvaluation], DevelopmentEvaluation | None]
+              | None = None) -> Callable[..., DevelopmentEvaluation]:
     """The objective of one side's search (:func:`develop`): ``evaluate(values, stage,
     make, budget, pinion_key)`` synthesises a design (``make()``), analyses its ``side``
     flank (``"drive"`` or ``"coast"``) by :data:`COARSE_LTCA` at the light and the design
@@ -495,7 +497,12 @@ def evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str, 
     synthesised and analysed inside one :class:`geometry.machine.meshing.WarmSeeds`: the
     envelope seeds of each design's tools continued from the earlier designs' (issue 75;
     a design's metrics as a cold analysis gives them, to the envelope solver's
-    tolerance; the check, :mod:`contact.optimize.development_check`, analyses cold)."""
+    tolerance; the check, :mod:`contact.optimize.development_check`, analyses cold).
+    ``confirm``: where given, a design scored "all targets met" (every target, not a
+    stage's fewer) stops the search only where ``confirm(design)`` is None; else the design
+    it returns (refuted at the default sampling, its objective the check's:
+    :func:`contact.optimize.development_confirm.confirmer`) is recorded in its place and
+    the search goes on."""
     seen: dict[tuple, DevelopmentEvaluation] = {}
     label = "" if side == "drive" else f"{side} "
     # the trials' envelope seeds continued from the earlier trials' (issue 75): a new tool
@@ -507,7 +514,12 @@ def evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str, 
         key = (stage, *(round(v, MEMO_DECIMALS) for v in values.values()))
         if key in seen:  # a design analysed before (the simplex returns to its start)
             if seen[key].met:
-                raise StageStop
+                # (a bearing met on every target, reached again by the relief stage: its
+                # stop confirmed there, development_confirm)
+                refuted = _refuted(seen[key], stage)
+                if refuted is None:
+                    raise StageStop
+                seen[key] = refuted
             return seen[key]
         if len(evals) >= budget:
             raise StageStop
@@ -551,15 +563,32 @@ def evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str, 
                                      pressure_limit=grid[4])
             e = dataclasses.replace(e, full=full)
         evals.append(e)
+        say(evaluation_line(e, n_max, label + stage))
+        if met:
+            # a coarse "all met" confirmed at the default sampling before it stops the
+            # search; refuted, the design scores the check's objective and the search
+            # goes on (development_confirm)
+            refuted = _refuted(e, stage)
+            if refuted is not None:
+                e = evals[-1] = refuted
         seen[key] = e
         if stage in ("bearing", "height") and grid is not None:  # the relief starts here
             seen[("relief", *key[1:])] = dataclasses.replace(e, objective=e.full[0],
                                                              shortfalls=e.full[1],
                                                              met=e.full[2])
-        say(evaluation_line(e, n_max, label + stage))
-        if met:
+        if e.met:
             raise StageStop
         return e
+
+    def _refuted(e: DevelopmentEvaluation, stage: str) -> DevelopmentEvaluation | None:
+        """``confirm``'s verdict on a design met at ``stage`` where that stage scores the
+        edges and the plastic share (not the bearing stage's fewer targets) and the
+        design meets every target; None (the stop stands) otherwise."""
+        terms = STAGE_TERMS.get(stage, ())
+        if (confirm is None or e.full is None or not e.full[2]
+                or "plastic" not in terms or "edge" not in terms):
+            return None
+        return confirm(e)
 
     evaluate.evals = evals  # type: ignore[attr-defined]  (read by _centre_height)
     evaluate.setup = setup  # type: ignore[attr-defined]

@@ -1,0 +1,198 @@
+"""A coarse "all targets met" stop confirmed at the default sampling before it ends the
+development's search (contact.optimize.development_confirm; issue 71, branch plastic102).
+
+Round 41's FM spiral bevel 10x51 (benchmarks/data/unseen_designs/spiral_bevel_10x51_m0.toml)
+stopped its drive search at design 6 of 36: the coarse search read plastic 0.0 % at
+518.1 N·m, the check of the case as written 1.0 % (design 5: 0.0 against 1.4 %), and the
+case was written with plastic at its design torque. The search's case has no tip planes
+(the pinion's root line, next to which the gear's tip edge runs, not placed) and 8 roll
+positions; measured in the module's docstring. Stand-ins for the analysis (their metrics
+those measured numbers), so that the rule is checked without an LTCA and without the
+wall clock.
+"""
+
+from __future__ import annotations
+
+import pytest
+from development_stand_ins import FLANK_GRID, metrics
+
+from contact.optimize import development_evaluate
+from contact.optimize.development import DevelopmentTargets, StageStop, development_score
+from contact.optimize.development_confirm import REFUTED_STOPS, confirmer
+from contact.optimize.development_evaluate import CHECK_LTCA, evaluator
+from contact.optimize.development_result import DevelopmentEvaluation
+
+#: the static strength the stand-in's grid returns [MPa] (the 10x51's flank, 2400 MPa)
+STRENGTH = 2400.0
+#: the development's torques [N·m] and the depth centre aimed at [1] (the 10x51's)
+SETUP = {"torques": [77.7, 518.1], "centre_v": 0.6, "lowered": False, "source": "ISO"}
+
+
+def _grid():
+    return (*FLANK_GRID, STRENGTH)
+
+
+def _design(plastic: float, **over) -> DevelopmentEvaluation:
+    """A design the coarse search scored: every target met (its plastic share the
+    coarse read, 0.0 on the 10x51's designs 5 and 6)."""
+    m = metrics(plastic_share=[0.0, plastic], **over)
+    full = development_score(m, DevelopmentTargets(), FLANK_GRID, centre_v=0.6,
+                             pressure_limit=STRENGTH)
+    return DevelopmentEvaluation(5, {"root_relief": 40.0}, m, full[0], full[1], full[2], "",
+                                 0.0, case="coarse case", full=full, stage="height")
+
+
+def _checked_law(monkeypatch, **check):
+    """The analysis stand-in: at the default sampling (CHECK_LTCA) the metrics ``check``
+    gives (the case as written), else the coarse search's (every target met); records
+    the options of each call."""
+    calls = []
+
+    def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
+             flank="drive"):
+        calls.append(options)
+        m = metrics(**check) if options is CHECK_LTCA else metrics()
+        return m, _grid()
+
+    monkeypatch.setattr(development_evaluate, "analyse_design", fake)
+    return calls
+
+
+def test_a_coarse_stop_the_check_refutes_on_plastic_is_refuted(monkeypatch):
+    """The 10x51's design 6: the coarse search's "all met" (plastic 0.0 %) refuted where
+    the case as written reads 1.0 % at the default sampling: the design returned with
+    ``met`` False and the check's objective (plastic 1.0 % over the 0.1 % unit: a squared
+    shortfall of (1.0 / 0.1)² = 100 at least), so the search walks away from it."""
+    calls = _checked_law(monkeypatch, plastic_share=[0.0, 0.010])
+    lines: list[str] = []
+    confirm = confirmer(DevelopmentTargets(), dict(SETUP), None, lines.append,
+                        lambda values: "case as written")
+    e = _design(0.0)
+    assert e.met and e.full[2]
+    refuted = confirm(e)
+    assert calls == [CHECK_LTCA]
+    assert refuted is not None and not refuted.met and not refuted.full[2]
+    assert refuted.shortfalls["plastic"] == pytest.approx(10.0)  # (1.0 - 0) % / 0.1 %
+    assert refuted.objective >= 100.0 and refuted.objective == refuted.full[0]
+    assert refuted.values == e.values and refuted.index == e.index
+    assert "refuted (plastic 1.0 % as written" in lines[-1]
+    assert "the search goes on" in lines[-1]
+
+
+def test_a_check_that_misses_only_the_pattern_confirms_the_stop(monkeypatch):
+    """A check that misses only the centre v (the coarse footprint a node off:
+    checked_best's re-centring repairs it) or meets everything confirms the stop (None);
+    one whose edge share at the design torque exceeds the limit (the default 2 %) refutes
+    it as the plastic does."""
+    for check, stands in (({"pattern_centre_v": [0.80, 0.80]}, True), ({}, True),
+                          ({"edge_load_share": [0.0, 0.025]}, False)):
+        _checked_law(monkeypatch, **check)
+        lines: list[str] = []
+        confirm = confirmer(DevelopmentTargets(), dict(SETUP), None, lines.append,
+                            lambda values: "case as written")
+        assert (confirm(_design(0.0)) is None) is stands, check
+        assert ("stop confirmed" in lines[-1]) is stands
+
+
+def test_refutations_are_bounded(monkeypatch):
+    """At most REFUTED_STOPS refutations per search (each a placed synthesis and a check:
+    CPU): past them a coarse "all met" stops the search as before (None, no analysis)."""
+    calls = _checked_law(monkeypatch, plastic_share=[0.0, 0.014])
+    confirm = confirmer(DevelopmentTargets(), dict(SETUP), None, lambda s: None,
+                        lambda values: "case as written")
+    for i in range(REFUTED_STOPS):
+        e = _design(0.0)
+        e = DevelopmentEvaluation(i, {"root_relief": 40.0 + i}, e.metrics, e.objective,
+                                  e.shortfalls, True, "", 0.0, case="c", full=e.full)
+        assert confirm(e) is not None
+    assert len(calls) == REFUTED_STOPS
+    e = _design(0.0)
+    past = DevelopmentEvaluation(9, {"root_relief": 60.0}, e.metrics, e.objective,
+                                 e.shortfalls, True, "", 0.0, case="c", full=e.full)
+    assert confirm(past) is None and len(calls) == REFUTED_STOPS
+    # a design asked again keeps its first answer (refuted), costing no check
+    first = DevelopmentEvaluation(0, {"root_relief": 40.0}, e.metrics, e.objective,
+                                  e.shortfalls, True, "", 0.0, case="c", full=e.full)
+    assert confirm(first) is not None and len(calls) == REFUTED_STOPS
+
+
+def test_a_design_the_check_cannot_place_keeps_the_stop(monkeypatch):
+    """The case as written cannot be made (its error is the check's to say): the stop
+    stands, as before the rule."""
+    _checked_law(monkeypatch, plastic_share=[0.0, 0.010])
+
+    def placed(values):
+        raise RuntimeError("tip plane")
+
+    confirm = confirmer(DevelopmentTargets(), dict(SETUP), None, lambda s: None, placed)
+    assert confirm(_design(0.0)) is None
+
+
+def _search_evaluator(monkeypatch, confirm):
+    """The drive search's objective (:func:`evaluator`) with the coarse analysis a
+    stand-in meeting every target; its set-up given (no design torque to rate)."""
+    monkeypatch.setattr(development_evaluate, "analyse_design",
+                        lambda *a, **k: (metrics(), _grid()))
+    evals: list[DevelopmentEvaluation] = []
+    evaluate = evaluator(object(), DevelopmentTargets(), dict(SETUP), None, lambda s: None,
+                         evals, "drive", 36, confirm=confirm)
+    return evaluate, evals
+
+
+def test_the_search_goes_on_past_a_refuted_stop(monkeypatch):
+    """:func:`evaluator` with ``confirm``: a design the coarse analysis scores "all
+    met" raises no StageStop where ``confirm`` refutes it; its record (and the memo the
+    simplex returns to) is the refuted design, so the relief stage's "a design met every
+    target" test (``e.met``) does not end the search either. A design ``confirm`` lets
+    stand stops it (StageStop), and without ``confirm`` the coarse "all met" stops it at
+    once (the behaviour before)."""
+    asked: list[int] = []
+
+    def confirm(e):
+        asked.append(e.index)
+        if e.values["root_relief"] < 50.0:  # refuted: the check read plastic 1.0 %
+            full = (116.0, {**e.full[1], "plastic": 10.0}, False)
+            return DevelopmentEvaluation(e.index, e.values, e.metrics, 116.0, full[1], False,
+                                         "", 0.0, case=e.case, full=full, stage=e.stage)
+        return None
+
+    evaluate, evals = _search_evaluator(monkeypatch, confirm)
+    e = evaluate({"root_relief": 40.0}, "relief", lambda: "case", 36, ())
+    assert e.objective == 116.0 and not e.met and not evals[-1].met
+    again = evaluate({"root_relief": 40.0}, "relief", lambda: "case", 36, ())
+    assert again is e and asked == [0]  # the memo: no second analysis, no StageStop
+    assert not any(x.met for x in evals)
+    with pytest.raises(StageStop):
+        evaluate({"root_relief": 60.0}, "relief", lambda: "case", 36, ())
+    assert asked == [0, 1] and evals[-1].met and len(evals) == 2
+
+    evaluate, evals = _search_evaluator(monkeypatch, None)
+    with pytest.raises(StageStop):
+        evaluate({"root_relief": 40.0}, "relief", lambda: "case", 36, ())
+
+
+def test_a_bearing_met_is_confirmed_where_the_relief_stage_reaches_it(monkeypatch):
+    """The bearing stage scores fewer targets (no plastic, no edge): its "met" ends only
+    that stage and is not checked at the default sampling, even where the design meets
+    every target on the coarse read (the 10x51's bearing design 5). The relief stage
+    starts from that bearing's values (the memo's relief copy, met): there the stop is
+    confirmed, and refuted the relief stage goes on from the refuted design."""
+    monkeypatch.setattr(development_evaluate, "analyse_design",
+                        lambda *a, **k: (metrics(), _grid()))
+    asked: list[int] = []
+
+    def confirm(e):
+        asked.append(e.index)
+        full = (200.0, {**e.full[1], "plastic": 14.0}, False)
+        return DevelopmentEvaluation(e.index, e.values, e.metrics, 200.0, full[1], False,
+                                     "", 0.0, case=e.case, full=full, stage=e.stage)
+
+    evals: list[DevelopmentEvaluation] = []
+    evaluate = evaluator(object(), DevelopmentTargets(), dict(SETUP), None, lambda s: None,
+                         evals, "drive", 36, confirm=confirm)
+    values = {"path_angle": -65.6, "root_relief": 15.0}
+    with pytest.raises(StageStop):
+        evaluate(values, "bearing", lambda: "case", 36, ())
+    assert asked == [] and evals[-1].full[2]
+    e = evaluate(values, "relief", lambda: "case", 36, ())
+    assert asked == [0] and not e.met and e.objective == 200.0 and len(evals) == 1
