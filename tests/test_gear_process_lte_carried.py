@@ -101,3 +101,36 @@ def test_an_lte_above_the_limit_within_the_torques_both_carry_still_ranks():
     unknown = dataclasses.replace(_generated(), coast_lte_range={"peak": 63.1, "at": math.nan})
     assert lte_over(unknown, (1471.0, 644.0)) == "coast LTE p-p 63.1 urad"
     assert better_outcome(formate, unknown, RATED) == (formate, "first")
+
+
+def test_sigma_70_lowers_the_face_contact_ratio_by_the_mean_module():
+    """Why Σ 70° misses the drive pattern that Σ 90° of the same d_e2, b2, β_m meets: ISO
+    10300-1's ε_vβ = b_veff sin β_vm / (π m_mn) with m_mn = (d_e2 − b2 sin δ2) cos β_m / z2
+    (ISO 23509 Method 0), so at equal b2 and β_m the ratio of the two shaft angles' ε_vβ is
+    the inverse ratio of their mean diameters d_m2: δ2 43.59° at Σ 70° (tan δ2 = sin Σ /
+    (z1/z2 + cos Σ)) against 57.17° gives d_m2 218.97 against 212.19 mm and ε_vβ 1.207
+    against 1.246, below the 1.25 of design practice. Closed form against the toolkit's
+    blank and ISO 10300 virtual gears; tolerance 1e-9 relative (both exact formulas,
+    rounding alone)."""
+    from pathlib import Path
+
+    from contact.optimize.development_remedy import contact_ratios_of
+    from geometry.synthesis.basic_design import load_basic
+
+    path = (Path(__file__).resolve().parents[1] / "benchmarks" / "data" / "unseen_designs"
+            / "spiral_bevel_20x31_s70_m0.toml")
+    basic = load_basic(path)
+    d = basic.design
+    got = {}
+    for sigma in (70.0, 90.0):
+        design = dataclasses.replace(d, Sigma=math.radians(sigma))
+        pitch = dataclasses.replace(basic, design=design).blank().pitch
+        s = math.radians(sigma)
+        delta2 = math.atan2(math.sin(s), d.z1 / d.z2 + math.cos(s))
+        assert math.isclose(pitch.delta2, delta2, rel_tol=1e-12)
+        dm2 = d.de2 - d.b2 * math.sin(delta2)
+        assert math.isclose(pitch.dm2, dm2, rel_tol=1e-9)
+        got[sigma] = (contact_ratios_of(design)[1], dm2)
+    (e70, dm70), (e90, dm90) = got[70.0], got[90.0]
+    assert math.isclose(e90 / e70, dm70 / dm90, rel_tol=1e-9)
+    assert e70 < 1.25 <= e90 + 0.005  # 1.207 against 1.246 (the remedy's b2 46.5 mm)
