@@ -312,16 +312,17 @@ def lte_over(result: Any, up_to: tuple[float, float] | None = None) -> str:
 
 def _range_values(judged: Mapping[str, Any] | None) -> list[tuple[float, float]]:
     """(LTE p-p [µrad], torque [N·m]) pairs of an ``lte_range`` record
-    (:func:`contact.optimize.development_range_lte.range_record`): each of its
-    ``"torques"`` and ``"lte"`` where both are given and alike in length, else its
-    ``"peak"`` at ``"at"``; none where ``judged`` is None (:func:`lte_over`)."""
+    (:func:`contact.optimize.development_range_lte.range_record`): its ``"peak"`` at
+    ``"at"`` and each of its ``"torques"`` and ``"lte"`` where both are given and alike in
+    length; none where ``judged`` is None (:func:`lte_over`)."""
     if judged is None:
         return []
+    out = [(float(judged.get("peak", math.nan)), float(judged.get("at", math.nan)))]
     torques = np.asarray(judged.get("torques", ()), float).ravel()
     lte = np.asarray(judged.get("lte", ()), float).ravel()
     if lte.size and lte.size == torques.size:
-        return [(float(v), float(t)) for v, t in zip(lte, torques, strict=True)]
-    return [(float(judged.get("peak", math.nan)), float(judged.get("at", math.nan)))]
+        out += [(float(v), float(t)) for v, t in zip(lte, torques, strict=True)]
+    return out
 
 
 class Outclassed(Exception):
