@@ -268,8 +268,8 @@ def lte_over(result: Any, up_to: tuple[float, float] | None = None) -> str:
     ----------
     result : DevelopmentResult
         Its drive ``best.metrics["lte_peak_to_peak"]`` at ``torque`` and ``lte_range``
-        (its ``"torques"`` and ``"lte"`` where given, else its ``"peak"`` at ``"at"``), its
-        coast ``coast["lte_peak_to_peak"]`` at ``coast_design_torques`` and
+        (its ``"peak"`` at ``"at"`` and its ``"lte"`` at its ``"torques"`` where given),
+        its coast ``coast["lte_peak_to_peak"]`` at ``coast_design_torques`` and
         ``coast_lte_range`` alike [µrad] are read (absent or NaN: not judged).
     up_to : (float, float), optional — [N·m]
         The (drive, coast) torque up to which the LTE is judged (:func:`better_outcome`:
@@ -534,7 +534,12 @@ def better_outcome(first: Any, second: Any, rated: float) -> tuple[Any, str]:
     verdict met or a torque cut; none first), the LTE p-p within ``ltca run``'s limit at
     every torque judged on both flanks (:func:`lte_over`; within first), the higher design
     torque (the one the case writes), then the development's own objective of the chosen
-    drive design (:func:`~contact.optimize.development.development_score`, lower first). A
+    drive design (:func:`~contact.optimize.development.development_score`, lower first).
+    The LTE key judges each design up to the other's design torque on each flank
+    (``lte_over(r, up_to=)``): a design is not ranked below for an LTE above the limit at
+    torques the other does not carry (Round 40's FM 20x31 at Σ 70°: its generated gear's
+    coast 63.1 µrad at 961.5 N·m, above the 644 N·m of its Formate gear's coast flank, kept
+    the Formate gear at 1471 against 2720 N·m; branch gen103, docs/own_gear_set.md). A
     verdict FAIL and a torque cut rank alike: where both designs fail, the one that
     carries more is kept, where their LTE ranks alike. The FM spiral bevel 17x23 kept, while
     the LTE did not rank, a Formate gear at 612.7 N·m whose drive / coast LTE p-p 73 / 106
