@@ -54,7 +54,7 @@ from __future__ import annotations
 import dataclasses
 import logging
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from typing import Any
 
 import numpy as np
@@ -260,7 +260,7 @@ def _reference(rated: float, window: float) -> float:
     return min(finite) if finite else math.nan
 
 
-def lte_over(result: Any) -> str:
+def lte_over(result: Any, up_to: tuple[float, float] | None = None) -> str:
     """The written design's LTE p-p above ``ltca run``'s limit, in words (empty where it
     keeps it at every torque judged, or none is known).
 
@@ -268,8 +268,13 @@ def lte_over(result: Any) -> str:
     ----------
     result : DevelopmentResult
         Its drive ``best.metrics["lte_peak_to_peak"]`` at ``torque`` and ``lte_range``
-        peak, its coast ``coast["lte_peak_to_peak"]`` at ``coast_design_torques`` and
-        ``coast_lte_range`` peak [µrad] are read (absent or NaN: not judged).
+        (its ``"peak"`` at ``"at"`` and its ``"lte"`` at its ``"torques"`` where given),
+        its coast ``coast["lte_peak_to_peak"]`` at ``coast_design_torques`` and
+        ``coast_lte_range`` alike [µrad] are read (absent or NaN: not judged).
+    up_to : (float, float), optional — [N·m]
+        The (drive, coast) torque up to which the LTE is judged (:func:`better_outcome`:
+        the other design's design torque on that flank); a value at a higher torque is
+        not judged, one at an unknown torque is. Default: every torque.
 
     Returns
     -------
@@ -288,21 +293,36 @@ def lte_over(result: Any) -> str:
     out = []
     metrics = getattr(result.best, "metrics", None) or {}
     coast_torques = tuple(getattr(result, "coast_design_torques", ()) or result.torque)
-    for flank, m, judged, torques in (
+    limits = (math.inf, math.inf) if up_to is None else tuple(float(t) for t in up_to)
+    for (flank, m, judged, torques), top in zip((
             ("drive", metrics, getattr(result, "lte_range", None), tuple(result.torque)),
             ("coast", getattr(result, "coast", None) or {},
-             getattr(result, "coast_lte_range", None), coast_torques)):
+             getattr(result, "coast_lte_range", None), coast_torques)), limits, strict=True):
         values = [(float(v), torques[k] if k < len(torques) else math.nan)
                   for k, v in enumerate(np.asarray(m.get("lte_peak_to_peak", ()), float))]
-        if judged is not None:
-            values.append((float(judged.get("peak", math.nan)),
-                           float(judged.get("at", math.nan))))
-        over = [(v, t) for v, t in values if math.isfinite(v) and v > LTE_LIMIT]
+        values += _range_values(judged)
+        over = [(v, t) for v, t in values if math.isfinite(v) and v > LTE_LIMIT
+                and not (math.isfinite(t) and t > top * (1.0 + 1e-9))]
         if over:
             v, t = max(over)
             at = f" at {plain_number(t)} N m" if math.isfinite(t) else ""
             out.append(f"{flank} LTE p-p {v:.1f} urad{at}")
     return "; ".join(out)
+
+
+def _range_values(judged: Mapping[str, Any] | None) -> list[tuple[float, float]]:
+    """(LTE p-p [µrad], torque [N·m]) pairs of an ``lte_range`` record
+    (:func:`contact.optimize.development_range_lte.range_record`): its ``"peak"`` at
+    ``"at"`` and each of its ``"torques"`` and ``"lte"`` where both are given and alike in
+    length; none where ``judged`` is None (:func:`lte_over`)."""
+    if judged is None:
+        return []
+    out = [(float(judged.get("peak", math.nan)), float(judged.get("at", math.nan)))]
+    torques = np.asarray(judged.get("torques", ()), float).ravel()
+    lte = np.asarray(judged.get("lte", ()), float).ravel()
+    if lte.size and lte.size == torques.size:
+        out += [(float(v), float(t)) for v, t in zip(lte, torques, strict=True)]
+    return out
 
 
 class Outclassed(Exception):
@@ -514,7 +534,12 @@ def better_outcome(first: Any, second: Any, rated: float) -> tuple[Any, str]:
     verdict met or a torque cut; none first), the LTE p-p within ``ltca run``'s limit at
     every torque judged on both flanks (:func:`lte_over`; within first), the higher design
     torque (the one the case writes), then the development's own objective of the chosen
-    drive design (:func:`~contact.optimize.development.development_score`, lower first). A
+    drive design (:func:`~contact.optimize.development.development_score`, lower first).
+    The LTE key judges each design up to the other's design torque on each flank
+    (``lte_over(r, up_to=)``): a design is not ranked below for an LTE above the limit at
+    torques the other does not carry (Round 40's FM 20x31 at Σ 70°: its generated gear's
+    coast 63.1 µrad at 961.5 N·m, above the 644 N·m of its Formate gear's coast flank, kept
+    the Formate gear at 1471 against 2720 N·m; branch gen103, docs/own_gear_set.md). A
     verdict FAIL and a torque cut rank alike: where both designs fail, the one that
     carries more is kept, where their LTE ranks alike. The FM spiral bevel 17x23 kept, while
     the LTE did not rank, a Formate gear at 612.7 N·m whose drive / coast LTE p-p 73 / 106
@@ -525,12 +550,19 @@ def better_outcome(first: Any, second: Any, rated: float) -> tuple[Any, str]:
     over the limit too), whose coast flank's LTE spread 0.66 at the light torque failed
     (issue 71).
     """
-    def rank(r: Any) -> tuple[bool, bool, float, float]:
-        return (bool(failed_outcome(r, rated)), bool(lte_over(r)), -float(r.torque[1]),
-                float(r.best.objective))
+    def rank(r: Any, other: Any) -> tuple[bool, bool, float, float]:
+        return (bool(failed_outcome(r, rated)), bool(lte_over(r, _carried(other))),
+                -float(r.torque[1]), float(r.best.objective))
 
-    a, b = rank(first), rank(second)
+    a, b = rank(first, second), rank(second, first)
     return (second, "second") if b < a else (first, "first")
+
+
+def _carried(result: Any) -> tuple[float, float]:
+    """[N·m] The (drive, coast) design torque of a developed design
+    (:func:`better_outcome`: the torques up to which the other design's LTE is judged)."""
+    coast = tuple(getattr(result, "coast_design_torques", ()) or result.torque)
+    return float(result.torque[1]), float(max(coast))
 
 
 def with_generated_gear(run: Callable[[Any], Any], basic: Any,
