@@ -45,6 +45,7 @@ from geometry.machine.curvature import surface_curvatures
 from geometry.machine.cutter import working_sections
 from geometry.machine.flank import FlankSurface, blank_outline, flank_surface
 from geometry.machine.meshing import (
+    ENVELOPE_STEP_LIMIT,
     envelope_family,
     meshing_q_sign,
     solve_envelope,
@@ -512,10 +513,10 @@ def _forward_map(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray) -> _
                        _regular_q_sign(case, pf, points))
 
 
-def _seed_place(fm: _ForwardMap, u, v) -> tuple:
+def _seed_place(fm: _ForwardMap, u, v) -> tuple | None:
     """The index (of the shape of ``u``) of the place (u, v) nearest, in pinion fractions,
-    the forward grid's middle node (its solve's seed; the first on ties); the middle index
-    where no place is finite."""
+    the forward grid's middle node (its solve's seed; the first on ties); None where there
+    is no place or none is finite (the batch then keeps its own seed)."""
     u, v = np.asarray(u, dtype=float), np.asarray(v, dtype=float)
     if u.size == 0:
         return None
@@ -554,11 +555,12 @@ def _regular_q_sign(case: Case, pf: str, points) -> float | None:
 
 #: [mm, rad, rad] the largest move of (s, θ, q) from its guess that a trial batch's middle
 #: seed may make and still seed the batch (:meth:`_ForwardMap.mates`): one limited Newton
-#: step of the envelope solver (geometry.machine.meshing's step limit; a root farther is
-#: "possibly another branch" there too). A seed that crosses a blade-section junction to
-#: its neighbour moves far less (the default run's: none re-seeded); the 20×31 at Σ 70°'s
-#: jumped to the tip section at q −0.46 rad, its neighbours at q ≈ −0.08.
-_SEED_JUMP = np.array([2.0, 0.15, 0.15])
+#: step of the envelope solver (:data:`geometry.machine.meshing.ENVELOPE_STEP_LIMIT`; a
+#: root farther is "possibly another branch" there too). A seed that crosses a
+#: blade-section junction to its neighbour moves far less (the default run's: none
+#: re-seeded); the 20×31 at Σ 70°'s jumped to the tip section at q −0.46 rad, its
+#: neighbours at q ≈ −0.08.
+_SEED_JUMP = ENVELOPE_STEP_LIMIT
 
 
 _NEAREST_CANDIDATES = 4  # k-d tree neighbours re-ranked by _nearest_node's own distance

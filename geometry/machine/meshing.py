@@ -47,9 +47,10 @@ its ranking of candidates is unchanged.
 
 Public functions
 ----------------
-REASONS           mask codes → meaning
-EnvelopeSolution  result arrays
-solve_envelope    solve a batch/grid of projection-plane targets
+REASONS              mask codes → meaning
+ENVELOPE_STEP_LIMIT  largest Newton step per unknown (s, θ, q) [mm, rad, rad]
+EnvelopeSolution     result arrays
+solve_envelope       solve a batch/grid of projection-plane targets
 """
 
 from __future__ import annotations
@@ -79,8 +80,8 @@ from geometry.machine.family import (
 if TYPE_CHECKING:
     from scipy.spatial import cKDTree
 
-__all__ = ["REASONS", "EnvelopeSolution", "WarmSeeds", "envelope_family", "meshing_q_sign",
-           "solve_envelope", "warm_seeds_active"]
+__all__ = ["ENVELOPE_STEP_LIMIT", "REASONS", "EnvelopeSolution", "WarmSeeds", "envelope_family",
+           "meshing_q_sign", "solve_envelope", "warm_seeds_active"]
 
 log = logging.getLogger(__name__)
 
@@ -98,7 +99,10 @@ _TOL_MESH = 1e-12  # [1] normalised meshing equation
 _MAX_ITER = 30
 _STALL_ITER = 7  # after this many iterations ...
 _STALL_SIZE = 1e-4  # [mm] ... points with a larger residual are abandoned
-_STEP_LIMIT = np.array([2.0, 0.15, 0.15])  # [mm, rad, rad] largest Newton step per unknown
+#: [mm, rad, rad] largest Newton step per unknown (s, θ, q) of the envelope solve; a root
+#: farther from its guess than this is taken as possibly another branch
+ENVELOPE_STEP_LIMIT = np.array([2.0, 0.15, 0.15])
+ENVELOPE_STEP_LIMIT.setflags(write=False)
 
 
 class EnvelopeSolution(NamedTuple):
@@ -187,7 +191,7 @@ def _kernel_arguments(ctx: _Context) -> tuple:
             ch.r2_y.astype(float), ch.r2_z.astype(float), bool(ch.motion), *coefs,
             np.array([st.cradle_angle, st.blank_offset, st.sliding_base, st.ratio_of_roll,
                       st.indexing_ratio, ctx.length_scale], dtype=float),
-            bool(ctx.generate), _STEP_LIMIT[:m].copy(),
+            bool(ctx.generate), ENVELOPE_STEP_LIMIT[:m].copy(),
             np.array([_TOL_POS, _TOL_MESH, _STALL_SIZE]), _MAX_ITER, _STALL_ITER)
 
 
@@ -309,7 +313,7 @@ def _newton(ctx: _Context, x0: np.ndarray, section: np.ndarray, z: np.ndarray, p
     m = x.shape[1]
     done = np.zeros(len(x), bool)
     dead = np.zeros(len(x), bool)
-    limit = _STEP_LIMIT[:m]
+    limit = ENVELOPE_STEP_LIMIT[:m]
     for it in range(_MAX_ITER):
         act = ~(done | dead)
         if not act.any():
@@ -734,7 +738,7 @@ class WarmSeeds:
             xs = x.copy()
             xs[:, 0] = _clamp_to(sec, np.array([k]), xs[:, 0])
             x, ok = _newton(ctx, xs, np.array([k]), np.array([z0]), np.array([p0]))
-        near = bool(np.all(np.abs(x[0] - x0) <= _STEP_LIMIT[:m]))
+        near = bool(np.all(np.abs(x[0] - x0) <= ENVELOPE_STEP_LIMIT[:m]))
         if not near or _pick_seed(ctx, x, ok, k, _seed_limit(ctx, depth)) is None:
             return None
         return _reference(ctx, x[0], k, z0, p0)
@@ -986,7 +990,7 @@ def _early_prediction(ctx: _Context, xg, secg, idx, first, seed: int, zf, pf,
     x[idx], ok[idx] = first
     tol = 1e-9
     s_ok = ((x[:, 0] >= sections.s_lo[secg] - tol) & (x[:, 0] <= sections.s_hi[secg] + tol))
-    near = ~np.any(np.abs(x - xg) > _STEP_LIMIT[:m], axis=-1)
+    near = ~np.any(np.abs(x - xg) > ENVELOPE_STEP_LIMIT[:m], axis=-1)
     settled = ok & s_ok & near
     if settled[seed] and secg[seed] == sections.main:
         if np.all(settled & (secg == sections.main)):
@@ -1026,9 +1030,27 @@ def _solve_guesses(ctx: _Context, guess, shape: tuple, seed: int, zf, pf, depth:
         early = early._replace(result=out[3])
     # a guess farther than one limited Newton step from its root was not from a nearby
     # solve: the root may be another branch, so solve such points afresh
-    far = np.any(np.abs(x[idx] - xg[idx]) > _STEP_LIMIT[:m], axis=-1)
+    far = np.any(np.abs(x[idx] - xg[idx]) > ENVELOPE_STEP_LIMIT[:m], axis=-1)
     reason[idx[far]] = 1
     return early
+
+
+def _solved_parameters(s, theta, q, section) -> tuple[np.ndarray, tuple[np.ndarray, ...]]:
+    """``s`` [mm] and (``theta`` [rad], ``q`` [rad], ``section``) as float and integer
+    arrays of one shape (:func:`envelope_family`, :func:`meshing_q_sign`).
+
+    Raises
+    ------
+    InputError
+        Where the shapes of ``theta``, ``q`` or ``section`` differ from that of ``s``.
+    """
+    s = np.asarray(s, dtype=float)
+    arrays = (np.asarray(theta, dtype=float), np.asarray(q, dtype=float),
+              np.asarray(section, dtype=np.intp))
+    if any(a.shape != s.shape for a in arrays):
+        raise InputError("theta, q, section: must have the shape of s "
+                         f"{s.shape}, got {[a.shape for a in arrays]}")
+    return s, arrays
 
 
 def envelope_family(blade: Blade, settings: MachineSettings, s, theta, q, section, *,
@@ -1072,18 +1094,12 @@ def envelope_family(blade: Blade, settings: MachineSettings, s, theta, q, sectio
     Source: seed §2.2 (Eq. 2.7a, the family of cutter surfaces in the blank frame), through
     :func:`geometry.machine.family.family_buffer` or its compiled kernel.
     """
-    s = np.asarray(s, dtype=float)
-    arrays = (np.asarray(theta, dtype=float), np.asarray(q, dtype=float),
-              np.asarray(section, dtype=np.intp))
-    if any(a.shape != s.shape for a in arrays):
-        raise InputError("theta, q, section: must have the shape of s "
-                         f"{s.shape}, got {[a.shape for a in arrays]}")
+    s, arrays = _solved_parameters(s, theta, q, section)
     shape = s.shape
     ctx = _context(blade, settings, length_scale, kernels)
     buf = _family(ctx, s.ravel(), *(a.ravel() for a in arrays))
     return GeneratedFamily(*(a.reshape((*shape, 3))
                              for a in family_views(buf, (s.size,))))
-
 
 
 def meshing_q_sign(blade: Blade, settings: MachineSettings, s, theta, q, section, *,
@@ -1122,12 +1138,7 @@ def meshing_q_sign(blade: Blade, settings: MachineSettings, s, theta, q, section
     separates the regular and the cut-away parts; evaluated by the buffer function the
     solve uses (:func:`geometry.machine.family.meshing_buffer` or its compiled kernel).
     """
-    s = np.asarray(s, dtype=float)
-    arrays = (np.asarray(theta, dtype=float), np.asarray(q, dtype=float),
-              np.asarray(section, dtype=np.intp))
-    if any(a.shape != s.shape for a in arrays):
-        raise InputError("theta, q, section: must have the shape of s "
-                         f"{s.shape}, got {[a.shape for a in arrays]}")
+    s, arrays = _solved_parameters(s, theta, q, section)
     if settings.process != "Generate":
         raise InputError(f"settings.process: must be 'Generate' for a sign of df/dq, "
                          f"got {settings.process!r}")
