@@ -11,4 +11,5 @@ version        the toolkit's version
 caches         the per-process memos, all cleared by clear_caches
 registries     what the registries of interchangeable models share (names, signatures,
                plug-ins)
+bisection      the largest argument at which a trial still succeeds
 """

@@ -76,6 +76,7 @@ from dataclasses import dataclass, fields, replace
 
 from scipy.optimize import brentq
 
+from geometry.core.bisection import largest_found
 from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.validation import positive, real
 from geometry.iso23509.design_data import (
@@ -835,13 +836,7 @@ def _largest_closing_sigma(method, design: BevelGearDesign,
     cone = closes(lo)
     if cone is None:
         return None
-    for _ in range(steps):
-        mid = 0.5 * (lo + hi)
-        found = closes(mid)
-        if found is None:
-            hi = mid
-        else:
-            lo, cone = mid, found
+    lo, cone = largest_found(closes, lo, hi, steps, cone)
     return lo, cone.delta2
 
 

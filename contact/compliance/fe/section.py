@@ -81,6 +81,7 @@ from functools import cached_property
 import numpy as np
 from scipy.interpolate import Akima1DInterpolator, CubicSpline
 
+from geometry.core.bisection import largest_found
 from geometry.core.errors import InputError, LTCAError
 from geometry.machine.cutter import profile_sections
 from geometry.machine.flank import blank_outline
@@ -679,14 +680,7 @@ def _largest_fit(fits, lo: float, hi: float):
         return best
     if lo > 0.0 and (best := fits(lo)) is None:
         return None
-    for _ in range(_BLEND_BISECTIONS):
-        mid = 0.5 * (lo + hi)
-        arc = fits(mid)
-        if arc is None:
-            hi = mid
-        else:
-            lo, best = mid, arc
-    return best
+    return largest_found(fits, lo, hi, _BLEND_BISECTIONS, best)[1]
 
 
 #: [mm] a fold of a side's samples less deep than this is left as it is: sampling noise
