@@ -187,6 +187,19 @@ def _between(curves):
     return law
 
 
+def _coast_step(monkeypatch, fake, seen=None, bound=math.inf):
+    """The coast edge-peak step run on the stand-in law ``fake`` at :data:`TORQUES`, from
+    :data:`COAST` as written: (the start, the design the step returns, its lines); the
+    designs the stand-in analysed before the step forgotten where ``seen`` is given."""
+    targets, setup, chosen = stand_in(monkeypatch, fake, TORQUES)
+    start = dataclasses.replace(chosen(dict(COAST)), case=dict(COAST))
+    if seen is not None:
+        seen.clear()
+    lines = []
+    got = dce.checked_coast_edge_peak(start, targets, setup, None, lines.append, dict,
+                                      bound=bound, key_prefix=PREFIX)
+    return start, got, lines
+
 def test_a_relief_past_60_urad_between_the_torques_is_refused(monkeypatch):
     """The refusal of 29e95de (the e-axle 11x39 at Σ 80°: its gear-toe variant 55 / 56 µrad
     at its coast torques and 60.6 between them failed the slow test's coast_lte60): the
@@ -200,12 +213,7 @@ def test_a_relief_past_60_urad_between_the_torques_is_refused(monkeypatch):
     refused (said with both numbers), and the tip relief, which leaves it at 65 (the same
     peak, not above the kept design's), is kept."""
     seen, fake = seen_designs(_between({40.0: (35.0, 32.0), 60.0: (61.0, 40.0)}))
-    targets, setup, chosen = stand_in(monkeypatch, fake, TORQUES)
-    start = dataclasses.replace(chosen(dict(COAST)), case=dict(COAST))
-    seen.clear()
-    lines = []
-    got = dce.checked_coast_edge_peak(start, targets, setup, None, lines.append, dict,
-                                      bound=math.inf, key_prefix=PREFIX)
+    _, got, lines = _coast_step(monkeypatch, fake, seen)
     assert any("not kept: the root_relief 60 um for the gear tip misses LTE p-p 61.0 urad "
                "between the torques" in s for s in lines), lines
     assert got.values == COAST | {"tip_relief": 22.5}
@@ -217,20 +225,12 @@ def test_a_relief_past_60_urad_between_the_torques_is_refused(monkeypatch):
         *[(60.0, 15.0)] * 4, (40.0, 15.0), (40.0, 22.5), (40.0, 22.5)]
     # the design kept above the limit between the torques already: not refused for it
     seen, fake = seen_designs(_between({40.0: (65.0, 32.0), 60.0: (61.0, 40.0)}))
-    targets, setup, chosen = stand_in(monkeypatch, fake, TORQUES)
-    start = dataclasses.replace(chosen(dict(COAST)), case=dict(COAST))
-    lines.clear()
-    got = dce.checked_coast_edge_peak(start, targets, setup, None, lines.append, dict,
-                                      bound=math.inf, key_prefix=PREFIX)
+    _, got, lines = _coast_step(monkeypatch, fake)
     assert not any("between the torques" in s for s in lines), lines
     assert got.values == COAST | {"root_relief": 60.0, "tip_relief": 22.5}
     # the design kept above the limit between the torques, the relief worse there: refused
     seen, fake = seen_designs(_between({40.0: (65.0, 32.0), 60.0: (70.0, 40.0)}))
-    targets, setup, chosen = stand_in(monkeypatch, fake, TORQUES)
-    start = dataclasses.replace(chosen(dict(COAST)), case=dict(COAST))
-    lines.clear()
-    got = dce.checked_coast_edge_peak(start, targets, setup, None, lines.append, dict,
-                                      bound=math.inf, key_prefix=PREFIX)
+    _, got, lines = _coast_step(monkeypatch, fake)
     assert any("not kept: the root_relief 60 um for the gear tip misses LTE p-p 70.0 urad "
                "between the torques (the design kept 65.0)" in s for s in lines), lines
     assert sum("between the torques" in s for s in lines) == 1, lines
@@ -325,12 +325,7 @@ def test_a_relief_refused_for_local_pitting_is_not_analysed_between_the_torques(
     it too. Independent check: the designs the stand-in analysed, one per call."""
     seen, fake = seen_designs(_between({40.0: (35.0, 32.0), 60.0: (45.0, 40.0)}))
     tip = functools.partial(fake, flank_tip=1700.0)
-    targets, setup, chosen = stand_in(monkeypatch, tip, TORQUES)
-    start = dataclasses.replace(chosen(dict(COAST)), case=dict(COAST))
-    seen.clear()
-    lines = []
-    got = dce.checked_coast_edge_peak(start, targets, setup, None, lines.append, dict,
-                                      bound=1600.0, key_prefix=PREFIX)
+    _, got, lines = _coast_step(monkeypatch, tip, seen, bound=1600.0)
     assert got.values == COAST | {"root_relief": 60.0}
     assert any("tip_relief 22.5 um for the pinion edge misses local pitting" == s.strip()
                .removeprefix("not kept: the ") for s in lines), lines
@@ -375,13 +370,8 @@ def test_a_deeper_coast_relief_kept_above_the_strength_goes_deeper_again(monkeyp
     the 22.5 µm design and written with the edge at 2300 MPa on a relief started earlier.
     The line names the kept design's peak (2900), not the first one's."""
     seen, fake = seen_designs(_deeper_again)
-    targets, setup, chosen = stand_in(monkeypatch, fake, TORQUES)
-    start = dataclasses.replace(chosen(dict(COAST)), case=dict(COAST))
+    start, got, lines = _coast_step(monkeypatch, fake, seen)
     assert dep.edges_above(start) == {"pinion_edge": 4718.0}
-    seen.clear()
-    lines = []
-    got = dce.checked_coast_edge_peak(start, targets, setup, None, lines.append, dict,
-                                      bound=math.inf, key_prefix=PREFIX)
     tried = [(d["tip_relief"], d["tip_relief_start"]) for d in seen]
     # each variant at its torques and between them (its LTE over ltca run's range)
     assert list(dict.fromkeys(tried)) == [(22.5, 0.85), (33.75, 0.85)], tried
@@ -397,12 +387,7 @@ def test_a_deeper_again_coast_relief_that_loses_a_target_is_refused(monkeypatch)
     design met (the 22.5 µm design's 30): refused (said), and the relief's start is moved
     on the design kept (22.5 µm from 0.75: 2300 MPa, kept)."""
     seen, fake = seen_designs(functools.partial(_deeper_again, lte_deep=45.0))
-    targets, setup, chosen = stand_in(monkeypatch, fake, TORQUES)
-    start = dataclasses.replace(chosen(dict(COAST)), case=dict(COAST))
-    seen.clear()
-    lines = []
-    got = dce.checked_coast_edge_peak(start, targets, setup, None, lines.append, dict,
-                                      bound=math.inf, key_prefix=PREFIX)
+    _, got, lines = _coast_step(monkeypatch, fake, seen)
     tried = [(d["tip_relief"], d["tip_relief_start"]) for d in seen]
     assert list(dict.fromkeys(tried)) == [(22.5, 0.85), (33.75, 0.85), (22.5, 0.75)], tried
     assert any("not kept: the tip_relief 33.75 um for the pinion edge misses lte" in s
