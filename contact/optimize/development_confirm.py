@@ -39,6 +39,8 @@ import logging
 from collections.abc import Callable, Mapping
 from typing import Any
 
+import numpy as np
+
 from contact.optimize.development_check import cut_variant
 from contact.optimize.development_evaluate import (
     MEMO_DECIMALS,
@@ -154,8 +156,6 @@ def _share(metrics: Mapping[str, Any], key: str) -> float:
     """The share [1] a refuted target reads: the plastic share's worst torque, the edge
     share's at the design torque (as :func:`~contact.optimize.development_targets.
     development_score` scores them)."""
-    import numpy as np
-
     if key == "plastic":
         return float(np.max(metrics["plastic_share"]))
     return float(np.asarray(metrics["edge_load_share"])[1])
