@@ -16,6 +16,7 @@ from __future__ import annotations
 import dataclasses
 
 import numpy as np
+import pytest
 
 from contact.catalogue import resolve_case
 from contact.utca import fields as fields_mod
@@ -140,3 +141,21 @@ def test_ease_off_fields_at_two_misalignments_equal_those_built_without_the_memo
         assert np.array_equal(a.ev(u, v), b.ev(u, v)), name
     for a, b in zip((*f2.pos, *f2.nrm), (*cold.pos, *cold.nrm), strict=True):
         assert _same_spline(a, b)
+
+
+def test_kept_outline_and_profile_sections_are_read_only():
+    """The kept results are shared by every caller: a write in place raises at the
+    writing line (ValueError, NumPy's read-only assignment) instead of changing what
+    later callers read; the uncached computation's arrays stay writable (a caller's own)."""
+    case = resolve_case(None)
+    clear_caches()
+    outline = flank.blank_outline(case.gear.blank)
+    sections = cutter.profile_sections(case.pinion.flank("concave").blade)
+    for kept in (outline, sections):
+        arrays = [x for x in kept if isinstance(x, np.ndarray)]
+        assert arrays
+        for a in arrays:
+            assert not a.flags.writeable
+            with pytest.raises(ValueError, match="read-only"):
+                a[...] = 0.0
+    assert flank._blank_outline(case.gear.blank).corners.flags.writeable

@@ -27,6 +27,7 @@ cache_sizes      the number of entries each registered cache holds now
 row_keys         each row of a float array as a memo key (its bytes)
 rows_not_kept    context: the stores of rows (BatchedRows) bypassed inside it
 rows_kept        whether the stores of rows are in use here (not inside rows_not_kept)
+read_only        a tuple's arrays made read-only (a memo's shared result is not written)
 """
 
 from __future__ import annotations
@@ -39,8 +40,8 @@ import threading
 from collections.abc import Callable, Iterator
 from typing import Any, TypeVar
 
-__all__ = ["Same", "cache_sizes", "clear_caches", "memoised", "row_keys", "rows_kept",
-           "rows_not_kept"]
+__all__ = ["Same", "cache_sizes", "clear_caches", "memoised", "read_only", "row_keys",
+           "rows_kept", "rows_not_kept"]
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -108,6 +109,36 @@ def cache_sizes() -> dict[str, int]:
         ``module.function`` → entries (``cache_info().currsize``).
     """
     return {name: int(w.cache_info().currsize) for name, w in sorted(_CACHES.items())}
+
+
+T = TypeVar("T", bound=tuple)
+
+
+def read_only(value: T) -> T:
+    """``value`` (a tuple, e.g. a NamedTuple) with its NumPy arrays marked read-only.
+
+    A memo hands the same result to every caller, so an array one caller wrote in place
+    would change what every later caller reads (and the results of a study would then
+    depend on its order). Marked read-only, such a write raises ``ValueError:
+    assignment destination is read-only`` at the writing line instead.
+
+    Parameters
+    ----------
+    value : tuple
+        The memoised result; its fields that are ``numpy.ndarray`` are marked (in place:
+        the same arrays, ``flags.writeable`` False); other fields are left as they are.
+
+    Returns
+    -------
+    tuple
+        ``value`` itself.
+    """
+    import numpy as np
+
+    for field in value:
+        if isinstance(field, np.ndarray):
+            field.flags.writeable = False
+    return value
 
 
 class Same:

@@ -55,7 +55,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from geometry.core.caches import Same, memoised
+from geometry.core.caches import Same, memoised, read_only
 from geometry.core.errors import InputError
 from geometry.core.validation import real
 
@@ -380,8 +380,9 @@ def profile_sections(blade: Blade) -> ProfileSections:
 def _memo_profile_sections(blade: Same) -> ProfileSections:
     """:func:`profile_sections` of the blade ``blade.obj``, once per blade object (a frozen
     dataclass): a study point asked for them 3 times (≈ 0.4 ms; the study's cases share
-    their blades, so once per study, issue 75). The same arithmetic, bit for bit."""
-    return _profile_sections(blade.obj)
+    their blades, so once per study, issue 75). The same arithmetic, bit for bit; its
+    arrays read-only (shared by every caller, :func:`geometry.core.caches.read_only`)."""
+    return read_only(_profile_sections(blade.obj))
 
 
 def _profile_sections(blade: Blade) -> ProfileSections:

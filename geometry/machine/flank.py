@@ -30,7 +30,7 @@ from typing import TYPE_CHECKING, NamedTuple
 import numpy as np
 import xarray as xr
 
-from geometry.core.caches import Same, memoised
+from geometry.core.caches import Same, memoised, read_only
 from geometry.core.conventions import binary_flag, dataset
 from geometry.core.errors import InputError
 from geometry.core.version import __version__
@@ -122,8 +122,9 @@ def _memo_blank_outline(blank: Same) -> BlankOutline:
     """:func:`blank_outline` of the blank ``blank.obj``, once per blank object (a frozen
     dataclass): a study point asked for it 8 times (≈ 0.7 ms of eight small line solves;
     the study's cases share their members, so once per study, issue 75). The same
-    arithmetic as before, so the same outline bit for bit."""
-    return _blank_outline(blank.obj)
+    arithmetic as before, so the same outline bit for bit; its arrays read-only (shared by
+    every caller, :func:`geometry.core.caches.read_only`)."""
+    return read_only(_blank_outline(blank.obj))
 
 
 def _blank_outline(blank: Blank) -> BlankOutline:
