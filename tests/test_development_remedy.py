@@ -742,7 +742,9 @@ def test_applied_remedy_lines_judge_the_lte_between_the_torques_too(monkeypatch)
     and 60.3 urad (remedied) between the torques, which the same command's coast line and
     `ltca run --flank coast` called above the limit. Both lines now give the largest LTE
     between the torques the developments recorded and judge the limit on it too; the
-    numbers are the runs' (the recorded ranges), the limit the verdict's 60 µrad."""
+    numbers are the runs' (the recorded ranges), the limit the verdict's 60 µrad. The
+    design as given's line names its development's CPU (the stand-in's 1 s): the remedied
+    headline's "44 s CPU" was half the command's 90.9 s."""
     from contact.commands.synthesize import first_lines
 
     basic = load_basic(FIFTEEN)
@@ -759,7 +761,8 @@ def test_applied_remedy_lines_judge_the_lte_between_the_torques_too(monkeypatch)
         "  the design as given (x.toml), developed: LTE p-p drive 15/38 urad at "
         "242.7/1618 N m, coast 36/51 urad at 242.7/1618 N m (light/design); between them "
         "drive 50.5 urad at 701.1 N m, coast 65.0 urad at 701.1 N m: above the verdict's "
-        "60 urad between the torques; not written")
+        "60 urad between the torques; not written (its development 1 s CPU; the remedied "
+        "design's headline counts its own alone)")
     assert lines[2] == (
         "  the remedied design, developed and written: LTE p-p drive 17/38 urad at "
         "246.7/1645 N m, coast 31/48 urad at 246.7/1645 N m (light/design); between them "
@@ -773,6 +776,8 @@ def test_applied_remedy_lines_judge_the_lte_between_the_torques_too(monkeypatch)
         lambda b: _result(b, (86.0, 93.0) if b is basic else (20.0, 45.0), (30.0, 48.0)),
         basic)
     lines = first_lines(plain.remedy.basic, plain, None, "x.toml")
-    assert lines[1].endswith("(light/design), above the verdict's 60 urad; not written")
+    assert lines[1].endswith("(light/design), above the verdict's 60 urad; not written (its "
+                             "development 1 s CPU; the remedied design's headline counts its "
+                             "own alone)")
     assert lines[2].endswith("(light/design), within the verdict's 60 urad (ltca run "
                              "judges it between its torques too)")

@@ -118,6 +118,9 @@ class AppliedRemedy(NamedTuple):
         development recorded it (:func:`between_parts`; empty where none was recorded).
     given_between_worst : float — [µrad]
         The largest of them (NaN where none was recorded).
+    given_seconds : float — [s]
+        CPU time of the design as given's development (NaN where not known): the
+        remedied development's headline counts its own alone.
     """
 
     check: Any
@@ -133,6 +136,7 @@ class AppliedRemedy(NamedTuple):
     torque_why: str = ""
     given_between: str = ""
     given_between_worst: float = math.nan
+    given_seconds: float = math.nan
 
 
 def ratio_changes(design) -> list:
@@ -838,7 +842,8 @@ def developed_with_remedy(run: Callable[[Any], Any], basic,
     applied = AppliedRemedy(chosen, record, kept, file_value(basic.design, chosen.change.field),
                             before, contact_ratios_of(kept.design),
                             ", ".join(lte_parts(first)), worst_lte(first), developed, why,
-                            torque_bought(first, second), ", ".join(between), between_worst)
+                            torque_bought(first, second), ", ".join(between), between_worst,
+                            float(getattr(first, "seconds", math.nan)))
     return dataclasses.replace(second, remedy=applied)
 
 

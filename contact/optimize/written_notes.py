@@ -469,6 +469,17 @@ def _limit_text(ends: float, between: str, peak: float, limit: float) -> str:
     return f"; between them {between}: {over} the verdict's {limit:g} urad {where}"
 
 
+def _given_cpu(seconds: float) -> str:
+    """The ``--apply-remedy`` line's clause on the design as given's development CPU [s]:
+    the remedied design's headline ("…; 44 s CPU") counts its own development alone, the
+    command both (issue 71, round 42: the 16x35 at Σ 95° printed 44 s, `/usr/bin/time` read
+    90.9 s); empty where not known."""
+    if not math.isfinite(seconds):
+        return ""
+    return (f" (its development {seconds:.0f} s CPU; the remedied design's headline counts "
+            "its own alone)")
+
+
 def first_lines(basic, development, record, shown: str) -> list[str]:
     """``ltca synthesize``'s first lines where a contact ratio is below its limit and the
     developed LTE p-p exceeds the verdict's limit, or a remedy was applied: the ratio, the
@@ -526,7 +537,7 @@ def first_lines(basic, development, record, shown: str) -> list[str]:
                 f"{applied.given_lte} (light/design)"
                 + _limit_text(applied.given_worst, getattr(applied, "given_between", ""),
                               getattr(applied, "given_between_worst", math.nan), LTE_LIMIT)
-                + "; not written",
+                + "; not written" + _given_cpu(getattr(applied, "given_seconds", math.nan)),
                 f"  the remedied design, developed and written: LTE p-p "
                 f"{', '.join(lte_parts(development))} (light/design)"
                 + (_limit_text(worst, ", ".join(parts), peak, LTE_LIMIT) if parts else
