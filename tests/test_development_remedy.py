@@ -707,3 +707,77 @@ def test_the_floor_leaves_the_other_torque_rules_as_they_were():
     assert torque_given_up(_targets(given, False), half, False) == ""
     assert torque_given_up(_targets(given, False), _targets(
         _five_result(basic, (26.0, 39.0), 677.1), True), True) == ""
+
+
+def _ranged(result, drive, coast):
+    """``result`` whose check recorded its drive and coast LTE over ltca run's torques
+    (``drive``, ``coast``: torques [N m], LTE p-p [urad], light and design torques first and
+    last), as the development's ``lte_range`` and ``coast_lte_range``."""
+    def record(found):
+        t, y = found
+        i = max(range(len(y)), key=lambda k: y[k])
+        return {"torques": t, "lte": y, "peak": y[i], "at": t[i]}
+
+    return dataclasses.replace(result, torque=(drive[0][0], drive[0][-1]),
+                               coast_torques=(coast[0][0], coast[0][-1]),
+                               lte_range=record(drive), coast_lte_range=record(coast))
+
+
+#: Round 42's FM spiral bevel 16x35 at Sigma 95 deg (benchmarks/data/unseen_designs/
+#: spiral_bevel_16x35_s95_m0.toml; /work runs d3, d3r): its LTE p-p [urad] over ltca run's
+#: torques [N m] as given (drive, coast) and with the remedy b2 44 -> 44.9 mm applied
+SIXTEEN_GIVEN = (((242.7, 701.1, 1160.0, 1618.0), (14.7, 50.5, 48.1, 38.4)),
+                 ((242.7, 357.3, 471.9, 701.1, 1160.0, 1618.0),
+                  (35.9, 44.5, 60.9, 65.0, 58.9, 50.8)))
+SIXTEEN_REMEDIED = (((246.7, 712.8, 1179.0, 1645.0), (17.1, 55.9, 52.1, 37.5)),
+                    ((246.7, 479.8, 596.3, 712.8, 1179.0, 1645.0),
+                     (30.9, 57.6, 58.8, 60.3, 52.4, 48.2)))
+
+
+def test_applied_remedy_lines_judge_the_lte_between_the_torques_too(monkeypatch):
+    """Round 42's 16x35 at Σ 95° with --apply-remedy printed "the design as given …,
+    developed: LTE p-p drive 15/38 urad …, coast 36/51 urad … (light/design), within the
+    verdict's 60 urad; not written" and the remedied design "… within the verdict's 60 urad
+    (ltca run judges it between its torques too)", while its coast flank read 65.0 (given)
+    and 60.3 urad (remedied) between the torques, which the same command's coast line and
+    `ltca run --flank coast` called above the limit. Both lines now give the largest LTE
+    between the torques the developments recorded and judge the limit on it too; the
+    numbers are the runs' (the recorded ranges), the limit the verdict's 60 µrad. The
+    design as given's line names its development's CPU (the stand-in's 1 s): the remedied
+    headline's "44 s CPU" was half the command's 90.9 s."""
+    from contact.commands.synthesize import first_lines
+
+    basic = load_basic(FIFTEEN)
+    _stand_in_checks(monkeypatch, MEASURED)
+
+    def run(b):
+        if b is basic:
+            return _ranged(_result(b, (14.7, 38.4), (35.9, 50.8)), *SIXTEEN_GIVEN)
+        return _ranged(_result(b, (17.1, 37.5), (30.9, 48.2)), *SIXTEEN_REMEDIED)
+
+    result = developed_with_remedy(run, basic)
+    lines = first_lines(result.remedy.basic, result, None, "x.toml")
+    assert lines[1] == (
+        "  the design as given (x.toml), developed: LTE p-p drive 15/38 urad at "
+        "242.7/1618 N m, coast 36/51 urad at 242.7/1618 N m (light/design); between them "
+        "drive 50.5 urad at 701.1 N m, coast 65.0 urad at 701.1 N m: above the verdict's "
+        "60 urad between the torques; not written (its development 1 s CPU; the remedied "
+        "design's headline counts its own alone)")
+    assert lines[2] == (
+        "  the remedied design, developed and written: LTE p-p drive 17/38 urad at "
+        "246.7/1645 N m, coast 31/48 urad at 246.7/1645 N m (light/design); between them "
+        "drive 55.9 urad at 712.8 N m, coast 60.3 urad at 712.8 N m: above the verdict's "
+        "60 urad between the torques")
+    table = json.loads(json.dumps(applied_table(result.remedy)))
+    assert table["given_worst_lte_urad"] == 50.8  # light/design, as before
+    assert table["given_between_worst_lte_urad"] == 65.0
+    # without a record between the torques the lines say so, as before
+    plain = developed_with_remedy(
+        lambda b: _result(b, (86.0, 93.0) if b is basic else (20.0, 45.0), (30.0, 48.0)),
+        basic)
+    lines = first_lines(plain.remedy.basic, plain, None, "x.toml")
+    assert lines[1].endswith("(light/design), above the verdict's 60 urad; not written (its "
+                             "development 1 s CPU; the remedied design's headline counts its "
+                             "own alone)")
+    assert lines[2].endswith("(light/design), within the verdict's 60 urad (ltca run "
+                             "judges it between its torques too)")

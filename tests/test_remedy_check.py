@@ -879,3 +879,41 @@ def test_the_record_keeps_whether_the_lte_was_met_for_ltca_run():
     assert recorded_judge(back)([c.change for c in checks], 1.0, "none") == note
     old = {k: v for k, v in table.items() if k != "lte_met"}
     assert read_record({RECORD_TABLE: old}).lte_met is False
+
+
+def test_ltca_run_says_the_torque_clause_as_synthesize_did_for_a_design_meeting_its_targets():
+    """Round 42 of issue 71: the FM spiral bevel 16x35 at Σ 95° (ε_vβ 1.22, every drive
+    target met, its developed LTE within 60 µrad at its torques) had `ltca synthesize`'s
+    note say of its b2 remedy "`ltca synthesize --apply-remedy` develops it and refuses it
+    then: the design as given meets every drive target, so no lower design torque buys one",
+    while `ltca run --flank coast`'s next step on the case it wrote said "… refuses it then,
+    unless it meets the drive targets the design misses at 0.909 of its design torque or
+    more": it misses none. The case records it (``[development] targets_met = 1``); the
+    next step now reads it, and says the synthesis' clause; a case whose development missed
+    a target (0), or records none, keeps the other. Stand-in checks (b2 19 against the
+    written 20 µrad, the 16x35's), the sentences the identity: synthesize's own text."""
+    import dataclasses
+    from types import MappingProxyType
+
+    from contact.commands.next_steps import overlap_lines
+    from contact.optimize.remedy_check import RemedyRecord
+
+    checks = (_check(B2, 19.0, 69.0), _check(BETA, 21.0))
+    record = RemedyRecord(checks, 20.0, 69.0, 60.0, math.nan, True)
+    case = _recorded_sample3(record, {"te_level": 45.0})
+    met_text = ("refuses it then: the design as given meets every drive target, so no lower "
+                "design torque buys one)")
+    missed_text = "unless it meets the drive targets the design misses at 0.909"
+
+    def written(targets_met):
+        development = dict(case.extra["development"])
+        if targets_met is not None:
+            development["targets_met"] = targets_met
+        return dataclasses.replace(case, extra=MappingProxyType(
+            {**case.extra, "development": development}))
+
+    (line,) = overlap_lines(written(1), "the LTE", [35.9, 50.8], "coast")
+    assert met_text in line and missed_text not in line
+    for other in (0, None):
+        (line,) = overlap_lines(written(other), "the LTE", [35.9, 50.8], "coast")
+        assert missed_text in line and met_text not in line

@@ -51,10 +51,10 @@ from contact.compliance.fe.worker_cpu import cpu_seconds
 from geometry.core.text import plain_number
 
 __all__ = ["REMEDY_TABLE", "REMEDY_TORQUE_FLOOR", "AppliedRemedy", "above_limit_text",
-           "applied_table", "below_floor", "change_text", "checked_record", "chosen_check",
-           "contact_ratios_of", "developed_with_remedy", "every_drive_target", "file_value",
-           "flanks_above", "lte_parts", "lte_within", "prescribed_basic", "ratio_changes",
-           "remedied_basic", "targets_bought", "torque_bought", "torque_given_up",
+           "applied_table", "below_floor", "between_parts", "change_text", "checked_record",
+           "chosen_check", "contact_ratios_of", "developed_with_remedy", "every_drive_target",
+           "file_value", "flanks_above", "lte_parts", "lte_within", "prescribed_basic",
+           "ratio_changes", "remedied_basic", "targets_bought", "torque_bought", "torque_given_up",
            "worst_lte"]
 
 log = logging.getLogger(__name__)
@@ -113,6 +113,14 @@ class AppliedRemedy(NamedTuple):
     torque_why : str
         Why its design torque, below the design as given's, was kept (:func:`torque_bought`;
         empty where it is not below).
+    given_between : str
+        The design as given's largest LTE p-p between its torques, per flank, as its
+        development recorded it (:func:`between_parts`; empty where none was recorded).
+    given_between_worst : float — [µrad]
+        The largest of them (NaN where none was recorded).
+    given_seconds : float — [s]
+        CPU time of the design as given's development (NaN where not known): the
+        remedied development's headline counts its own alone.
     """
 
     check: Any
@@ -126,6 +134,9 @@ class AppliedRemedy(NamedTuple):
     developed: tuple = ()
     kept_why: str = ""
     torque_why: str = ""
+    given_between: str = ""
+    given_between_worst: float = math.nan
+    given_seconds: float = math.nan
 
 
 def ratio_changes(design) -> list:
@@ -376,6 +387,55 @@ def lte_parts(development) -> list[str]:
         parts.append(f"coast {c[0]:.0f}/{c[1]:.0f} urad at "
                      f"{plain_number(cl)}/{plain_number(cd)} N m")
     return parts
+
+
+def between_parts(development) -> tuple[list[str], float]:
+    """A development's largest written LTE p-p between its light and design torque, per
+    flank, as ``ltca run``'s ``lte_range`` step judges it: "drive 50.5 urad at 701.1 N m",
+    "coast 65.0 urad at 701.1 N m" (its check's records ``lte_range`` and, where the coast
+    flank was checked, ``coast_lte_range``; :func:`contact.optimize.development_lte_lines.
+    inside`), "coast not judged" where the coast flank was checked without a record.
+
+    Parameters
+    ----------
+    development : contact.optimize.development.DevelopmentResult
+
+    Returns
+    -------
+    (parts, worst) : (list of str, float)
+        The words (empty where neither flank has a record) and the largest LTE p-p among
+        them [µrad] (NaN where none).
+
+    Raises
+    ------
+    Nothing.
+
+    Notes
+    -----
+    Issue 71, round 42: ``--apply-remedy``'s lines judged both designs at the light and
+    design torques alone ("within the verdict's 60 urad") where the coast flank of the
+    spiral bevel 16x35 at Σ 95° read 65.0 µrad as given and 60.3 µrad remedied between
+    them, which the same command's coast line and ``ltca run --flank coast`` called above.
+    """
+    from contact.optimize.development_lte_lines import inside
+
+    flanks = [("drive", getattr(development, "lte_range", None))]
+    if getattr(development, "coast", None) is not None:
+        flanks.append(("coast", getattr(development, "coast_lte_range", None)))
+    parts: list[str] = []
+    worst = math.nan
+    for flank, record in flanks:
+        got = inside(record)
+        peak = float(got.get("peak", math.nan)) if got else math.nan
+        at = float(got.get("at", math.nan)) if got else math.nan
+        if not (math.isfinite(peak) and math.isfinite(at)):
+            parts.append(f"{flank} not judged")
+            continue
+        parts.append(f"{flank} {peak:.1f} urad at {plain_number(at)} N m")
+        worst = peak if not math.isfinite(worst) else max(worst, peak)
+    if not math.isfinite(worst):
+        return [], worst
+    return parts, worst
 
 
 def worst_lte(development) -> float:
@@ -778,10 +838,12 @@ def developed_with_remedy(run: Callable[[Any], Any], basic,
             "the design as given is developed and written without apply_remedy (ltca "
             "synthesize without --apply-remedy)")
     kept = given[id(chosen)]
+    between, between_worst = between_parts(first)
     applied = AppliedRemedy(chosen, record, kept, file_value(basic.design, chosen.change.field),
                             before, contact_ratios_of(kept.design),
                             ", ".join(lte_parts(first)), worst_lte(first), developed, why,
-                            torque_bought(first, second))
+                            torque_bought(first, second), ", ".join(between), between_worst,
+                            float(getattr(first, "seconds", math.nan)))
     return dataclasses.replace(second, remedy=applied)
 
 
@@ -798,7 +860,8 @@ def applied_table(applied: AppliedRemedy) -> dict[str, Any]:
     dict
         ``note``, ``field``, ``before``, ``after`` [file unit], ``text`` (the note's
         phrase), the contact ratios before and after, the design as given's LTE p-p
-        (``given_lte``, ``given_worst_lte_urad``), where more than one remedy was
+        (``given_lte``, ``given_worst_lte_urad``; between its torques ``given_between``,
+        ``given_between_worst_lte_urad`` where recorded), where more than one remedy was
         developed each of them (``developed``: torques, LTE p-p, its peak over ``ltca
         run``'s torques, CPU, why not kept) and why the applied one was kept
         (``kept_why``), and ``checks``: every change checked
@@ -810,7 +873,8 @@ def applied_table(applied: AppliedRemedy) -> dict[str, Any]:
     ratios = {"eps_va_before": applied.ratios_before[0], "eps_vb_before":
               applied.ratios_before[1], "eps_va_after": applied.ratios_after[0],
               "eps_vb_after": applied.ratios_after[1],
-              "given_worst_lte_urad": applied.given_worst}
+              "given_worst_lte_urad": applied.given_worst,
+              "given_between_worst_lte_urad": applied.given_between_worst}
     return {"note": "informational (contact.optimize.development_remedy): the contact-ratio "
                     "remedy ltca synthesize --apply-remedy applied to the user's basic data, "
                     "checked by a synthesis at the written prescriptions of the design as "
@@ -820,6 +884,7 @@ def applied_table(applied: AppliedRemedy) -> dict[str, Any]:
             "text": change.text,
             **{k: round(float(v), 3) for k, v in ratios.items() if math.isfinite(v)},
             "given_lte": applied.given_lte,
+            **({"given_between": applied.given_between} if applied.given_between else {}),
             **({"developed": [_developed_row(d) for d in applied.developed],
                 "kept_why": applied.kept_why} if len(applied.developed) > 1 else {}),
             **({"torque_why": applied.torque_why} if applied.torque_why else {}),

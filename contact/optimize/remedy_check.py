@@ -971,7 +971,9 @@ def recorded_judge(record: RemedyRecord, targets_met: bool = False):
     record : RemedyRecord
     targets_met : bool, optional
         Whether the written design meets every drive development target (as
-        :func:`checked_remedy_text`; default False: ``ltca run`` reads no development).
+        :func:`checked_remedy_text`; default False; ``ltca run``'s next step reads the
+        written case's ``[development] targets_met``,
+        :func:`contact.commands.next_steps.overlap_lines`).
 
     Returns
     -------
