@@ -16,14 +16,17 @@ both columns alike; the ratio row of the point is then also the median of the pe
 ratios. CPU time ``time.process_time`` (issue 75's measure: the machine
 is shared, wall times mean little); the point's median and mean over the points.
 
-The stages are those of ``benchmarks/stage_clock.py`` and, nested in them, the parts
-issue 75 item 4 names: the ease-off's node placement (Newton on the exact conjugate map),
-the LTCA's curve and edge segments, the shell mapping (contact points onto the shell
-model's parameters) and the shell matrices; the result datasets a point builds (the
-``/utca`` and ``/ltca`` Datasets, the result tree). Below the stages, the cyclic garbage
-collector's CPU per point (``gc.callbacks``; it runs inside the stages, so it is part of
-their times, not added to them), young generations and full collections apart: a full
-collection visits every tracked object of the process. Target (issue 75): a point ≤ 0.12 s.
+The stages are those of ``benchmarks/stage_clock.py`` and, nested in them, the parts issue
+75 item 4 names: the ease-off's node placement (Newton on the exact conjugate map), the
+LTCA's curve and edge segments (and in them the contact curves — the UTCA's iso-line
+searches —, the R_eq curvature solves, the flank boundary and the gear flank's foot under
+a pinion edge), the shell mapping (contact points onto the shell model's parameters; in it
+the foot on the mid-surface and the orthogonal trajectory) and the shell matrices; the
+result datasets a point builds (the ``/utca`` and ``/ltca`` Datasets, the result tree).
+Below the stages, the cyclic garbage collector's CPU per point (``gc.callbacks``; it runs
+inside the stages, so it is part of their times, not added to them), young generations and
+full collections apart: a full collection visits every tracked object of the process.
+Target (issue 75): a point ≤ 0.12 s.
 """
 
 from __future__ import annotations
@@ -48,8 +51,15 @@ TORQUE = 250.0
 EXTRA = (
     ("contact.utca.easeoff", "map_gear_nodes", "ease-off: node placement (Newton)"),
     ("contact.ltca.segments", "_curve_part_of", "LTCA curve segments"),
+    ("contact.ltca.segments", "contact_curves", "LTCA curve segments: contact curves"),
+    ("contact.ltca.segments", "_curve_r_eq", "LTCA curve segments: R_eq (curvatures)"),
+    ("contact.ltca.segments", "flank_boundary", "LTCA curve segments: flank boundary"),
     ("contact.ltca.segments", "edge_segments", "LTCA edge segments"),
+    ("contact.ltca.edges", "_edge_r_eq_of", "LTCA edge segments: R_eq (curvatures)"),
+    ("contact.ltca.edges", "gear_flank_under", "LTCA edge segments: gear flank foot"),
     ("contact.compliance.mesh", "_kept_mapping", "LTCA shell mapping"),
+    ("contact.compliance.tooth", "_project_to_mid", "LTCA shell mapping: foot (Newton)"),
+    ("contact.compliance.tooth", "trajectory", "LTCA shell mapping: trajectory (RK4)"),
     ("contact.compliance.mesh", "shell_matrices", "LTCA shell matrices"),
     ("contact.utca.datasets", "utca_dataset", "UTCA dataset"),
     ("contact.ltca.roll_loop", "ltca_dataset", "LTCA dataset"),
