@@ -161,7 +161,8 @@ def _boundary_lines(f) -> list[tuple[int, np.ndarray, np.ndarray]]:
         for a, b in _runs(f.good_cell(uu, vv) & (m >= 0.0)):
             ua, va = _margin_crossing(uu, vv, m, a, a - 1)
             ub, vb = _margin_crossing(uu, vv, m, b, b + 1)
-            lines.append((kind, np.r_[ua, uu[a + 1:b], ub], np.r_[va, vv[a + 1:b], vb]))
+            lines.append((kind, np.concatenate(([ua], uu[a + 1:b], [ub])),
+                          np.concatenate(([va], vv[a + 1:b], [vb]))))
     ug = np.linspace(u0, u1, _CONTOUR_GRID[0])
     vg = np.linspace(v0, v1, _CONTOUR_GRID[1])
     zg = f.margin(ug, vg).T  # (nv, nu)
@@ -180,7 +181,8 @@ def _boundary_lines(f) -> list[tuple[int, np.ndarray, np.ndarray]]:
 
 def _runs(ok: np.ndarray) -> list[tuple[int, int]]:
     """(first, last) index of each run of True."""
-    edge = np.diff(np.r_[0, ok.astype(np.int8), 0])
+    # (np.concatenate: np.r_'s result, without its indexing machinery: ~0.1 ms a call)
+    edge = np.diff(np.concatenate(([0], ok.astype(np.int8), [0])))
     return list(zip(np.flatnonzero(edge == 1), np.flatnonzero(edge == -1) - 1, strict=True))
 
 
@@ -225,7 +227,8 @@ def _pieces(f, lines: list[tuple[int, np.ndarray, np.ndarray]],
     for (kind, uu, vv), size in zip(lines, sizes, strict=True):
         pos = pos_all[start:start + size]
         start += size
-        arc = np.r_[0.0, np.cumsum(np.linalg.norm(np.diff(pos, axis=0), axis=-1))]
+        arc = np.concatenate(([0.0], np.cumsum(np.linalg.norm(np.diff(pos, axis=0),
+                                                              axis=-1))))
         if arc[-1] <= 1e-9:
             continue
         n = max(1, math.ceil(arc[-1] / step))
@@ -242,9 +245,8 @@ def _pieces(f, lines: list[tuple[int, np.ndarray, np.ndarray]],
     # the inward slope ∇Q·m, m the inward direction: tip edge −v, heel −u, toe +u, pinion
     # edge up the margin
     slope = np.empty(us.size)
-    for kinds_of, dx, dy, sign in (((0,), 0, 1, -1.0), ((1,), 1, 0, -1.0),
-                                   ((2,), 1, 0, 1.0)):
-        sel = np.flatnonzero(np.isin(kind_s, kinds_of))
+    for kind, dx, dy, sign in ((0, 0, 1, -1.0), (1, 1, 0, -1.0), (2, 1, 0, 1.0)):
+        sel = np.flatnonzero(kind_s == kind)
         if sel.size:
             slope[sel] = sign * f.values(("q",), us[sel], vs[sel], dx=dx, dy=dy)[:, 0]
     sel = np.flatnonzero(kind_s == 3)
@@ -255,7 +257,7 @@ def _pieces(f, lines: list[tuple[int, np.ndarray, np.ndarray]],
     nrm = val[:, 6:9]
     nrm /= np.linalg.norm(nrm, axis=-1, keepdims=True)
     # (n, 3) samples of each line's segments, offset to the line's first sample
-    first = np.r_[0, np.cumsum([2 * n + 1 for n in ns])[:-1]]
+    first = np.concatenate(([0], np.cumsum([2 * n + 1 for n in ns])[:-1]))
     idx = np.concatenate([s0 + 2 * np.arange(n)[:, None] + np.arange(3)[None, :]
                           for s0, n in zip(first, ns, strict=True)])
     return FlankBoundary(np.repeat(kinds, ns), us[idx], vs[idx], val[:, 0][idx],
