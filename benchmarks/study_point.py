@@ -144,6 +144,17 @@ def measure(trees: list[Path], points: int) -> list[dict]:
                 p.kill()
 
 
+def prime_kernels(tree: Path) -> None:
+    """Fill the numba cache of an exported tree (``ltca compile`` run in it), so that its
+    child loads the compiled kernels from the cache as this tree's does. Without it the
+    child compiled them in its warm-up (a fresh ``git archive`` has no ``__pycache__``) and
+    its points ran 2–3 % slower than the same code's in this tree: an A/A run (``--before``
+    this tree's own commit) read a median per-point ratio of 0.98, 130,000 more objects
+    tracked by the collector in that child (docs/performance.md, helper study104)."""
+    subprocess.run([sys.executable, "-m", "contact.cli", "compile"], cwd=tree, check=True,
+                   env={**os.environ, "PYTHONPATH": str(tree)}, capture_output=True)
+
+
 def main(argv: list[str] | None = None) -> None:
     import statistics
 
@@ -157,6 +168,7 @@ def main(argv: list[str] | None = None) -> None:
         trees = [("this tree", ROOT)]
         if args.before:
             trees.insert(0, (args.before, export_tree(args.before, Path(tmp))))
+            prime_kernels(trees[0][1])
         res = dict(zip([name for name, _ in trees],
                        measure([tree for _, tree in trees], args.points), strict=True))
     names = [name for name, _ in trees]
