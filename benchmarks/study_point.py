@@ -16,14 +16,17 @@ both columns alike; the ratio row of the point is then also the median of the pe
 ratios. CPU time ``time.process_time`` (issue 75's measure: the machine
 is shared, wall times mean little); the point's median and mean over the points.
 
-The stages are those of ``benchmarks/stage_clock.py`` and, nested in them, the parts
-issue 75 item 4 names: the ease-off's node placement (Newton on the exact conjugate map),
-the LTCA's curve and edge segments, the shell mapping (contact points onto the shell
-model's parameters) and the shell matrices; the result datasets a point builds (the
-``/utca`` and ``/ltca`` Datasets, the result tree). Below the stages, the cyclic garbage
-collector's CPU per point (``gc.callbacks``; it runs inside the stages, so it is part of
-their times, not added to them), young generations and full collections apart: a full
-collection visits every tracked object of the process. Target (issue 75): a point ≤ 0.12 s.
+The stages are those of ``benchmarks/stage_clock.py`` and, nested in them, the parts issue
+75 item 4 names: the ease-off's node placement (Newton on the exact conjugate map), the
+LTCA's curve and edge segments (and in them the contact curves — the UTCA's iso-line
+searches —, the R_eq curvature solves, the flank boundary and the gear flank's foot under
+a pinion edge), the shell mapping (contact points onto the shell model's parameters; in it
+the foot on the mid-surface and the orthogonal trajectory) and the shell matrices; the
+result datasets a point builds (the ``/utca`` and ``/ltca`` Datasets, the result tree).
+Below the stages, the cyclic garbage collector's CPU per point (``gc.callbacks``; it runs
+inside the stages, so it is part of their times, not added to them), young generations and
+full collections apart: a full collection visits every tracked object of the process.
+Target (issue 75): a point ≤ 0.12 s.
 """
 
 from __future__ import annotations
@@ -48,8 +51,15 @@ TORQUE = 250.0
 EXTRA = (
     ("contact.utca.easeoff", "map_gear_nodes", "ease-off: node placement (Newton)"),
     ("contact.ltca.segments", "_curve_part_of", "LTCA curve segments"),
+    ("contact.ltca.segments", "contact_curves", "LTCA curve segments: contact curves"),
+    ("contact.ltca.segments", "_curve_r_eq", "LTCA curve segments: R_eq (curvatures)"),
+    ("contact.ltca.segments", "flank_boundary", "LTCA curve segments: flank boundary"),
     ("contact.ltca.segments", "edge_segments", "LTCA edge segments"),
+    ("contact.ltca.edges", "_edge_r_eq_of", "LTCA edge segments: R_eq (curvatures)"),
+    ("contact.ltca.edges", "gear_flank_under", "LTCA edge segments: gear flank foot"),
     ("contact.compliance.mesh", "_kept_mapping", "LTCA shell mapping"),
+    ("contact.compliance.tooth", "_project_to_mid", "LTCA shell mapping: foot (Newton)"),
+    ("contact.compliance.tooth", "trajectory", "LTCA shell mapping: trajectory (RK4)"),
     ("contact.compliance.mesh", "shell_matrices", "LTCA shell matrices"),
     ("contact.utca.datasets", "utca_dataset", "UTCA dataset"),
     ("contact.ltca.roll_loop", "ltca_dataset", "LTCA dataset"),
@@ -134,6 +144,17 @@ def measure(trees: list[Path], points: int) -> list[dict]:
                 p.kill()
 
 
+def prime_kernels(tree: Path) -> None:
+    """Fill the numba cache of an exported tree (``ltca compile`` run in it), so that its
+    child loads the compiled kernels from the cache as this tree's does. Without it the
+    child compiled them in its warm-up (a fresh ``git archive`` has no ``__pycache__``) and
+    its points ran 2–3 % slower than the same code's in this tree: an A/A run (``--before``
+    this tree's own commit) read a median per-point ratio of 0.98, 130,000 more objects
+    tracked by the collector in that child (docs/performance.md, helper study104)."""
+    subprocess.run([sys.executable, "-m", "contact.cli", "compile"], cwd=tree, check=True,
+                   env={**os.environ, "PYTHONPATH": str(tree)}, capture_output=True)
+
+
 def main(argv: list[str] | None = None) -> None:
     import statistics
 
@@ -147,6 +168,7 @@ def main(argv: list[str] | None = None) -> None:
         trees = [("this tree", ROOT)]
         if args.before:
             trees.insert(0, (args.before, export_tree(args.before, Path(tmp))))
+            prime_kernels(trees[0][1])
         res = dict(zip([name for name, _ in trees],
                        measure([tree for _, tree in trees], args.points), strict=True))
     names = [name for name, _ in trees]
