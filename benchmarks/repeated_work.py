@@ -47,8 +47,21 @@ memo and the count above did not see: on the 17x23 (main ``26b22062``, 2026-11-2
 of its 381 ease-offs, 4 of them repeated across developments (the window re-development's
 first four trials, the rated development's designs again: ≈ 0.2 s).
 
+``--fe`` (branch cpu104) wraps the FE coefficient requests
+(:func:`contact.compliance.fe.contact_compliance.shared_coefficients`, through which the
+root-stress checks and the FE compliance read them, keyed by the member's cache key, each
+recorded once answered) and each entry the builds write (``influence._cached``), with
+the CPU (this process and its FE solver workers,
+:func:`contact.compliance.fe.worker_cpu.cpu_seconds`) of each call of
+:func:`contact.optimize.development_root.both_flanks_built`: it prints each build, and the
+entries written that no request asked for afterwards nor ``ltca run`` of the case written
+reads (its members' drive and coast entries at the FE level it names) — work that only a
+build deferring an entry until it is asked for could save. Measured (cpu104, 2026-11-29;
+the FM hypoid 8x37 of benchmarks/data/unseen_designs): docs/performance.md, "The 8×37's
+`ltca synthesize`: where the CPU goes".
+
 Usage: ``python benchmarks/repeated_work.py BASIC.toml [-o CASE.toml] [--calls FILE]
-[--by-development]``.
+[--by-development] [--fe]``.
 One design takes 2–4 min of CPU; point ``HYPOID_LTCA_CACHE`` at an empty directory for a
 new design's FE builds.
 """
@@ -256,6 +269,94 @@ def _wrap_development(devs: Developments, record, record_ease_off) -> None:
     case_synthesis._unrelieved_flank = _unrelieved_flank
 
 
+def unread_entries(events: list[tuple[str, str, str]], final: set[str]
+                   ) -> list[tuple[str, str]]:
+    """The FE entries written and never asked for afterwards: ``events`` are ``("written",
+    member, key)`` and ``("asked", member, key)`` (a request answered: one that built its
+    entry comes after that entry's write) in the order made; ``final`` the keys
+    ``ltca run`` of the case written reads (counted as asked for at the end). Returns
+    (member, key) of each unread entry in the order written; a key written twice counts
+    once (its last write)."""
+    last: dict[str, tuple[int, str]] = {}
+    asked_at: dict[str, int] = {}
+    for i, (kind, member, key) in enumerate(events):
+        if kind == "written":
+            last[key] = (i, member)
+        elif kind == "asked":
+            asked_at[key] = i
+    return [(member, key) for key, (i, member) in sorted(last.items(), key=lambda kv: kv[1][0])
+            if key not in final and asked_at.get(key, -1) <= i]
+
+
+def _wrap_fe(events: list[tuple[str, str, str]], builds: list[tuple[float, list[str]]]
+             ) -> None:
+    """Record the FE requests and written entries in ``events`` (:func:`unread_entries`)
+    and each ``both_flanks_built`` call's CPU with the keys it wrote in ``builds``."""
+    import contact.compliance.fe.contact_compliance as contact_compliance
+    import contact.compliance.fe.influence as influence
+    import contact.optimize.development_root as development_root
+    from contact.compliance.fe.cache import cache_key
+    from contact.compliance.fe.options import FEOptions, member_flank
+    from contact.compliance.fe.worker_cpu import cpu_seconds
+
+    reader = contact_compliance.shared_coefficients
+
+    @functools.wraps(reader)
+    def shared_coefficients(case, member, flank="drive", options=None, *a, **kw):
+        # recorded once answered: a request that built its entry (a miss) read it
+        try:
+            return reader(case, member, flank, options, *a, **kw)
+        finally:
+            opt = options if options is not None else FEOptions()
+            events.append(("asked", member, cache_key(
+                case.member(member), member_flank(case, member, flank), opt)))
+
+    contact_compliance.shared_coefficients = shared_coefficients
+    cached = influence._cached
+
+    def _cached(ds, case, member, path, key, *a, **kw):
+        events.append(("written", member, key))
+        return cached(ds, case, member, path, key, *a, **kw)
+
+    influence._cached = _cached
+    built = development_root.both_flanks_built
+
+    @functools.wraps(built)
+    def both_flanks_built(*a, **kw):
+        c0, n0 = cpu_seconds(), len(events)
+        try:
+            return built(*a, **kw)
+        finally:
+            builds.append((cpu_seconds() - c0, [key for kind, _, key in events[n0:]
+                                                if kind == "written"]))
+
+    development_root.both_flanks_built = both_flanks_built
+
+
+def _written_case_keys(path: str) -> set[str]:
+    """The cache keys ``ltca run`` of the case file ``path`` reads: each member's drive and
+    coast entries at the FE level the case names."""
+    from contact.compliance.fe.cache import cache_key
+    from contact.compliance.fe.options import case_fe_options, member_flank
+    from geometry.case import load_case
+
+    case = load_case(path)
+    opt = case_fe_options(case)
+    return {cache_key(case.member(m), member_flank(case, m, f), opt)
+            for m in ("pinion", "gear") for f in ("drive", "coast")}
+
+
+def _print_fe(events: list[tuple[str, str, str]], builds: list[tuple[float, list[str]]],
+              final: set[str]) -> None:
+    print("FE builds (both_flanks_built), CPU s with the solver workers': entries written")
+    for seconds, keys in builds:
+        print(f"  {seconds:.1f}: {', '.join(k[:12] for k in keys) or 'none (cached)'}")
+    unread = unread_entries(events, final)
+    n = sum(1 for e in events if e[0] == "written")
+    print(f"FE entries written {n}; never asked for afterwards nor read by ltca run of the "
+          f"case written {len(unread)}: " + ", ".join(f"{m} {k[:12]}" for m, k in unread))
+
+
 def _print_by_development(devs: Developments, calls: list[tuple[str, str, float, str]],
                           eo_keys: list[str]) -> None:
     print("developments, CPU s: all / own (less those nested in it) / its check steps")
@@ -284,6 +385,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--calls", help="write one line per wrapped call to this file")
     parser.add_argument("--by-development", action="store_true",
                         help="each development's CPU and the repeats across developments")
+    parser.add_argument("--fe", action="store_true",
+                        help="the FE builds' CPU and the entries written but never read")
     args = parser.parse_args(argv)
 
     import contact.optimize.development_evaluate as evaluation
@@ -306,6 +409,10 @@ def main(argv: list[str] | None = None) -> int:
 
     if args.by_development:
         _wrap_development(devs, record, record_ease_off)
+    fe_events: list[tuple[str, str, str]] = []
+    fe_builds: list[tuple[float, list[str]]] = []
+    if args.fe:
+        _wrap_fe(fe_events, fe_builds)
     analyse = evaluation.analyse_design
     place = case_synthesis.tip_plane_on_root_cone
 
@@ -343,6 +450,7 @@ def main(argv: list[str] | None = None) -> int:
     with tempfile.TemporaryDirectory() as tmp:
         out = args.output or str(Path(tmp) / "case.toml")
         rc = ltca(["synthesize", args.basic, "-o", out, "--no-progress"])
+        final = _written_case_keys(out) if args.fe and not rc else set()
     seen: set[tuple[str, str]] = set()
     n, cpu = collections.Counter(), collections.Counter()
     n_rep, cpu_rep = collections.Counter(), collections.Counter()
@@ -362,6 +470,8 @@ def main(argv: list[str] | None = None) -> int:
     print(f"distinct cases analysed: {len(cases)}")
     if args.by_development:
         _print_by_development(devs, by_dev, eo_keys)
+    if args.fe:
+        _print_fe(fe_events, fe_builds, final)
     if args.calls:
         with open(args.calls, "w", encoding="utf-8") as f:
             for kind, key, case_key, seconds, flank, ts in calls:

@@ -96,3 +96,27 @@ def test_trial_ease_offs_are_recorded_once_each_and_keyed_by_their_inputs(counts
     # the repeat is told apart as the other kinds are (within its development here)
     out = counts.repeats_by_development([(k, key, 0.1, "1") for k, key, _ in recorded])
     assert out["ease-off (a trial)"][0] == 1
+
+
+def test_fe_entries_unread_are_those_no_request_asked_for_after_their_write(counts):
+    """``--fe`` (branch cpu104): an entry counts as read where a request asked for its key
+    after it was written (a request that built it on a miss is recorded once answered,
+    after the write), or where ``ltca run`` of the case written reads it; the rest, in the
+    order written, are unread. Counted on stand-in events (exact: a list of keys)."""
+    events = [
+        ("written", "pinion", "p1d"), ("written", "pinion", "p1c"),  # a build of both flanks
+        ("written", "gear", "g1d"), ("written", "gear", "g1c"),
+        ("asked", "pinion", "p1d"), ("asked", "gear", "g1d"),  # the drive check reads
+        ("asked", "pinion", "p2d"),  # asked before its write: the build that follows
+        ("written", "pinion", "p2d"), ("written", "pinion", "p2c"),
+        ("written", "pinion", "p3c"), ("asked", "pinion", "p3c"),  # built on a miss
+        ("asked", "gear", "g1c"),  # the coast check reads the gear's coast entry
+    ]
+    assert counts.unread_entries(events, final=set()) == [
+        ("pinion", "p1c"), ("pinion", "p2d"), ("pinion", "p2c")]
+    # the written case's entries are read by ltca run
+    assert counts.unread_entries(events, final={"p2d", "p2c"}) == [("pinion", "p1c")]
+    # an entry written again after its last request is unread again (its last write counts)
+    again = [*events, ("written", "gear", "g1d")]
+    assert counts.unread_entries(again, final=set())[-1] == ("gear", "g1d")
+    assert counts.unread_entries([], final={"x"}) == []
