@@ -224,3 +224,30 @@ def test_a_generated_gear_that_fails_leaves_the_formate_kept(basic):
     assert kept.report.gear.settings.process == "Formate"
     assert kept.gear_process_text.startswith("Gear process (auto): Formate. The Formate")
     assert "the generated gear's fails too (design torque cut to 1000" in kept.gear_process_text
+
+
+@pytest.mark.parametrize("path", [
+    pytest.param(Path(__file__).resolve().parent / "data" / "designs" / "pc_hypoid_10x43.toml",
+                 id="pc_hypoid_10x43 (delta2 73.9 deg)"),
+    pytest.param(Path(__file__).resolve().parents[1] / "cases" / "basic"
+                 / "kolivand2009_fm_11x41.toml", id="kolivand2009_fm_11x41 (delta2 72.9 deg)"),
+])
+def test_a_pair_auto_does_not_generate_is_developed_once(monkeypatch, path):
+    """The pairs whose gear pitch angle is at or above the Formate limit (63°) keep the one
+    development whatever their Formate design misses (gear_processes: ("Formate",)), so
+    their written case is the development's as before: the stand-in missing the 20x31's
+    pattern is returned after one call."""
+    from geometry.synthesis.case_synthesis import FORMATE_PITCH_ANGLE_LIMIT, gear_processes
+
+    monkeypatch.setattr(capacity, "with_design_torque", lambda case, t: (case, RATED, ""))
+    pair = load_basic(path)
+    assert math.degrees(pair.blank().pitch.delta2) >= FORMATE_PITCH_ANGLE_LIMIT
+    assert gear_processes(pair) == ("Formate",)
+    formate = _formate()
+    calls: list[str] = []
+
+    def run(b, **kw):
+        calls.append(b.options.gear_process)
+        return _generated() if b.options.gear_process == "Generate" else formate
+
+    assert with_generated_gear(run, pair) is formate and calls == ["auto"]
