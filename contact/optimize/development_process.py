@@ -15,23 +15,24 @@ capacity's 251.4 N·m, and with a generated gear to 171 of 276.7 N·m, no FAIL
 of the two kept (:func:`better_outcome`), and likewise where it fails nothing but misses a
 drive pattern target (:data:`PATTERN_TARGETS`, :func:`pattern_missed`: Round 40's FM spiral
 bevel 20x31 at Σ 70° kept a Formate gear 0.65 long, centre v 0.64, at 1471 of 2542 N·m
-beside a generated gear meeting every drive target at 2720 N·m, issue 71); that generated
-development stops as soon as its design torque falls below the Formate design's where that
-keeps the LTE limit (:func:`kept_torque`). Every design whose Formate development neither
-fails nor misses its pattern is the first development's, unchanged. Where both fail, the one
-of the higher design torque is kept (a spiral bevel 16x24 kept a Formate gear cut to 5.8 of
-230.8 N m beside a generated gear at 112 N m whose coast LTE spread failed: issue 71). Where
-the Formate design's torque is cut, the generated gear's development stops as soon as its
-design torque falls below the Formate design's (:class:`Outclassed`): it could only rank
-below it (issue 75). And the Formate development itself stops at its static-capacity step
-where the upper estimate of its bearing's local pitting capacity (no FE) is already below
-:data:`FORESEEN_CUT_MARGIN` × :data:`TORQUE_CUT_FRACTION` × the rated torque
-(:class:`CutForeseen`): its outcome would be a design torque cut, and the generated gear is
-developed at once — as where the static-capacity step has lowered the design torque below
-half the rated one already (:func:`static_cut_foreseen`: the torque is only lowered from
-there; the FM miter 18x18, branch cpu95); only where that fails too is the Formate
-development run in full, so the design kept is the one the two full developments rank first
-(issue 71/75: the spiral bevel 14x36 at Σ 70°). A design torque the drive LTE window lowered
+beside a generated gear at its rated 2720 N·m, LTE 15 / 33 µrad against 54 / 59, issue 71);
+that generated development stops as soon as its design torque falls below the Formate
+design's where that keeps the LTE limit (:func:`kept_torque`). Every design whose Formate
+development neither fails nor misses its pattern is the first development's, unchanged.
+Where both fail, the one of the higher design torque is kept (a spiral bevel 16x24 kept a
+Formate gear cut to 5.8 of 230.8 N m beside a generated gear at 112 N m whose coast LTE
+spread failed: issue 71). Where the Formate design's torque is cut, the generated gear's
+development stops as soon as its design torque falls below the Formate design's
+(:class:`Outclassed`): it could only rank below it (issue 75). And the Formate development
+itself stops at its static-capacity step where the upper estimate of its bearing's local
+pitting capacity (no FE) is already below :data:`FORESEEN_CUT_MARGIN` ×
+:data:`TORQUE_CUT_FRACTION` × the rated torque (:class:`CutForeseen`): its outcome would be
+a design torque cut, and the generated gear is developed at once — as where the
+static-capacity step has lowered the design torque below half the rated one already
+(:func:`static_cut_foreseen`: the torque is only lowered from there; the FM miter 18x18,
+branch cpu95); only where that fails too is the Formate development run in full, so the
+design kept is the one the two full developments rank first (issue 71/75: the spiral bevel
+14x36 at Σ 70°). A design torque the drive LTE window lowered
 (:mod:`contact.optimize.development_written_lte`) is the contact ratio's, not the gear
 process's: a cut is judged against it (:func:`cut_reference`), and a design within ``ltca
 run``'s LTE limit ranks above one beyond it (:func:`lte_over`; the FM spiral bevel 17x23,
@@ -113,8 +114,9 @@ _RULE = ("(contact.optimize.development_process.better_outcome: no failed outcom
 #: whose miss by a Formate design that fails nothing has ``gear_process = "auto"`` develop
 #: the generated gear too (:func:`pattern_missed`): the light-load pattern's length, its
 #: centre and its clearance to the flank's ends, which the gear's flank form sets (Round
-#: 40's FM spiral bevel 20x31 at Σ 70°: its Formate gear 0.65 long, centre v 0.64, at 1471
-#: of 2542 N·m; its generated gear every drive target met at 2720 N·m, docs/own_gear_set.md).
+#: 40's FM spiral bevel 20x31 at Σ 70°: its Formate gear 0.65 long, centre v 0.64, LTE 54 /
+#: 59 µrad at 1471 of 2542 N·m; its generated gear 0.65 long, centre v 0.63, LTE 15 / 33 µrad
+#: at its rated 2720 N·m, docs/own_gear_set.md).
 #: Not the LTE alone (the face contact ratio's, which both gear processes of a pair share:
 #: :func:`flank_fails`' reason), not the relief's targets alone (edge share, plastic share,
 #: flank pressure) nor the tolerance: the same levers act on either gear
