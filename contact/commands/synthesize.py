@@ -43,8 +43,8 @@ def register(sub) -> None:
         description="Read a basic design file (cases/basic/*.toml: ISO 23509 inputs, "
         "targets, synthesis options), compute the blanks, the Formate gear settings (a "
         "generated gear where a low-ratio pair's Formate gear has no solution or its "
-        "developed design fails, [synthesis] gear_process) and the generated pinion by "
-        "local synthesis, and write a "
+        "developed design fails or misses its drive pattern, [synthesis] gear_process) "
+        "and the generated pinion by local synthesis, and write a "
         "complete case file. The process follows the design's blade groups z0: 0 face "
         "milling, >= 1 face hobbing.",
     )

@@ -271,7 +271,8 @@ log = logging.getLogger(__name__)
 def _wrapped(basic: BasicDesign, apply_remedy: bool, **kw: Any) -> DevelopmentResult:
     """:func:`develop` with ``apply_remedy`` (the design as given, its remedies checked,
     the best applied: :func:`contact.optimize.development_remedy.developed_with_remedy`)
-    or ``gear_fallback`` (the generated gear too where the Formate gear's design fails:
+    or ``gear_fallback`` (the generated gear too where the Formate gear's design fails or
+    misses its drive pattern:
     :func:`contact.optimize.development_process.with_generated_gear`)."""
     if apply_remedy:
         from contact.optimize.development_remedy import developed_with_remedy
@@ -331,7 +332,9 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
         Default True: where ``gear_process = "auto"`` synthesised a Formate gear that it
         could have generated (face milled, δ2 < 63°) and the developed design fails (a
         FAIL criterion of ``ltca run``'s verdict, or the design torque cut below half the
-        rated one), the pair is developed with a generated gear too and the better kept
+        rated one) or misses a drive pattern target (its length, centre or clearance:
+        :data:`~contact.optimize.development_process.PATTERN_TARGETS`), the pair is
+        developed with a generated gear too and the better kept
         (:func:`contact.optimize.development_process.with_generated_gear`). False: the
         one development.
     outclassed_below : float, optional — [N·m]

@@ -1,5 +1,6 @@
 """The gear process of a development: the generated gear where the Formate gear's developed
-design fails (:func:`contact.optimize.development.develop`, issue 71).
+design fails or misses its drive pattern (:func:`contact.optimize.development.develop`,
+issue 71).
 
 ``[synthesis] gear_process = "auto"`` (the default) synthesises a Formate gear and tries the
 generated one only where the Formate synthesis has no solution
@@ -7,21 +8,27 @@ generated one only where the Formate synthesis has no solution
 of its first successful trial. A low-ratio pair's Formate gear may synthesise and still
 develop into a design its own check fails: the spiral bevel 20x30 of
 tests/data/generated_gear (δ2 56.3°) developed with its Formate gear to an LTE spread of
-0.58 at the light torque (``ltca run`` FAILs it) and a design torque cut to 64.1 of its
-ISO capacity's 251.4 N·m, and with a generated gear to 171 of 276.7 N·m, no FAIL (docs/synthesis.md,
-"Generated gear"). Here the development is run again with ``gear_process = "Generate"``
-where the first one's outcome fails (:func:`failed_outcome`) and the better of the two kept
-(:func:`better_outcome`); every design whose Formate development does not fail is the
-first development's, unchanged. Where both fail, the one of the higher design torque is
-kept (a spiral bevel 16x24 kept a Formate gear cut to 5.8 of 230.8 N m beside a generated
-gear at 112 N m whose coast LTE spread failed: issue 71). Where the Formate design's torque
-is cut, the generated gear's development stops as soon as its design torque falls below the
-Formate design's (:class:`Outclassed`): it could only rank below it (issue 75). And the
-Formate development itself stops at its static-capacity step where the upper estimate of its
-bearing's local pitting capacity (no FE) is already below :data:`FORESEEN_CUT_MARGIN` ×
-:data:`TORQUE_CUT_FRACTION` × the rated torque (:class:`CutForeseen`): its outcome would be a
-design torque cut, and the generated gear is developed at once — as where the static-capacity
-step has lowered the design torque below half the rated one already
+0.58 at the light torque (``ltca run`` FAILs it) and a design torque cut to 64.1 of its ISO
+capacity's 251.4 N·m, and with a generated gear to 171 of 276.7 N·m, no FAIL
+(docs/synthesis.md, "Generated gear"). Here the development is run again with ``gear_process
+= "Generate"`` where the first one's outcome fails (:func:`failed_outcome`) and the better
+of the two kept (:func:`better_outcome`), and likewise where it fails nothing but misses a
+drive pattern target (:data:`PATTERN_TARGETS`, :func:`pattern_missed`: Round 40's FM spiral
+bevel 20x31 at Σ 70° kept a Formate gear 0.65 long, centre v 0.64, at 1471 of 2542 N·m
+beside a generated gear at its rated 2720 N·m, LTE 15 / 33 µrad against 54 / 59, issue 71);
+that generated development stops as soon as its design torque falls below the Formate
+design's where that keeps the LTE limit (:func:`kept_torque`). Every design whose Formate
+development neither fails nor misses its pattern is the first development's, unchanged.
+Where both fail, the one of the higher design torque is kept (a spiral bevel 16x24 kept a
+Formate gear cut to 5.8 of 230.8 N m beside a generated gear at 112 N m whose coast LTE
+spread failed: issue 71). Where the Formate design's torque is cut, the generated gear's
+development stops as soon as its design torque falls below the Formate design's
+(:class:`Outclassed`): it could only rank below it (issue 75). And the Formate development
+itself stops at its static-capacity step where the upper estimate of its bearing's local
+pitting capacity (no FE) is already below :data:`FORESEEN_CUT_MARGIN` ×
+:data:`TORQUE_CUT_FRACTION` × the rated torque (:class:`CutForeseen`): its outcome would be
+a design torque cut, and the generated gear is developed at once — as where the
+static-capacity step has lowered the design torque below half the rated one already
 (:func:`static_cut_foreseen`: the torque is only lowered from there; the FM miter 18x18,
 branch cpu95); only where that fails too is the Formate development run in full, so the
 design kept is the one the two full developments rank first (issue 71/75: the spiral bevel
@@ -40,13 +47,17 @@ flank_fails           the verdict's FAIL criteria a flank's (light, design) metr
 static_cut_foreseen   whether the flank's static capacity foresees it (an upper bound)
 CutForeseen           a Formate development stopped there
 failed_outcome        why a developed design fails its own check (empty where it does not)
+PATTERN_TARGETS       the drive targets whose miss has "auto" develop the generated gear too
+pattern_missed        those a developed design misses, in words
 cut_reference         the torque a cut is judged against: the rated one or the LTE window's
 cut_below             whether a design torque is below the cut fraction of that reference
 lte_over              the written design's LTE p-p above ltca run's limit, in words
 outclassing_torque    the design torque below which a second development cannot win
+kept_torque           the same where the Formate design fails nothing but misses its pattern
 Outclassed            a development stopped there
 better_outcome        the better of two developed designs, and which
 with_generated_gear   a development, then the generated gear's where the first one fails
+                      or misses its drive pattern
 """
 
 from __future__ import annotations
@@ -64,9 +75,10 @@ from geometry.core.errors import InputError
 from geometry.core.text import plain_number
 
 __all__ = ["AT_CHECK", "AT_CHECK_MARGIN", "AT_STATIC", "FORESEEN_CUT_MARGIN",
-           "TORQUE_CUT_FRACTION", "CutForeseen", "Outclassed", "better_outcome", "cut_below",
-           "cut_foreseen", "cut_reference", "failed_outcome", "flank_fails", "lte_over",
-           "outclassing_torque", "static_cut_foreseen", "with_generated_gear"]
+           "PATTERN_TARGETS", "TORQUE_CUT_FRACTION", "CutForeseen", "Outclassed",
+           "better_outcome", "cut_below", "cut_foreseen", "cut_reference", "failed_outcome",
+           "flank_fails", "kept_torque", "lte_over", "outclassing_torque", "pattern_missed",
+           "static_cut_foreseen", "with_generated_gear"]
 
 log = logging.getLogger(__name__)
 
@@ -95,8 +107,25 @@ FORESEEN_CUT_MARGIN = 0.9
 
 #: the rule of :func:`better_outcome`, as the case's ``gear_process_text`` says it
 _RULE = ("(contact.optimize.development_process.better_outcome: no failed outcome, then the "
-         "LTE p-p within ltca run's limit, then the higher design torque, then the "
-         "development's objective).")
+         "LTE p-p within ltca run's limit up to the torques the other design carries, then "
+         "the higher design torque, then the development's objective).")
+
+#: the drive targets of :func:`contact.optimize.development_targets.development_score`
+#: whose miss by a Formate design that fails nothing has ``gear_process = "auto"`` develop
+#: the generated gear too (:func:`pattern_missed`): the light-load pattern's length, its
+#: centre and its clearance to the flank's ends, which the gear's flank form sets (Round
+#: 40's FM spiral bevel 20x31 at Σ 70°: its Formate gear 0.65 long, centre v 0.64, LTE 54 /
+#: 59 µrad at 1471 of 2542 N·m; its generated gear 0.65 long, centre v 0.63, LTE 15 / 33 µrad
+#: at its rated 2720 N·m, docs/own_gear_set.md).
+#: Not the LTE alone (the face contact ratio's, which both gear processes of a pair share:
+#: :func:`flank_fails`' reason), not the relief's targets alone (edge share, plastic share,
+#: flank pressure) nor the tolerance: the same levers act on either gear
+PATTERN_TARGETS = ("length", "centre_u", "centre_v", "toe", "heel", "root", "tip")
+
+#: each of :data:`PATTERN_TARGETS` in words (:func:`pattern_missed`)
+_PATTERN_WORDS = {"length": "pattern length", "centre_u": "centre u", "centre_v": "centre v",
+                  "toe": "toe clearance", "heel": "heel clearance", "root": "root clearance",
+                  "tip": "tip clearance"}
 
 
 def flank_fails(metrics: Any, torques: tuple[float, ...], flank: str) -> list[str]:
@@ -156,6 +185,60 @@ def failed_outcome(result: Any, rated: float) -> str:
         the light torque.
     """
     return "; ".join(r for r in (_verdict_fails(result), _torque_cut(result, rated)) if r)
+
+
+def pattern_missed(result: Any) -> str:
+    """The drive pattern targets (:data:`PATTERN_TARGETS`) a developed design misses, in
+    words; empty where it meets them all or its score is not known.
+
+    Parameters
+    ----------
+    result : DevelopmentResult
+        Its chosen drive design's ``best.full`` (``development_score``'s triple: the
+        shortfalls of the written design's final check) and ``best.metrics`` (the light
+        torque's pattern) are read; a ``best`` without ``full`` (not checked): empty.
+
+    Returns
+    -------
+    str
+        ``", "``-joined: ``"pattern length 0.65"``, ``"centre u 0.44"``, ``"centre v
+        0.64"`` (the light torque's value, 2 decimals) or ``"toe clearance"`` … for each
+        target of :data:`PATTERN_TARGETS` whose shortfall is above 0 (an infinite one, a
+        failed analysis, included).
+
+    Notes
+    -----
+    Source: issue 71 ("meets every drive development target"), Round 40's FM spiral bevel
+    20x31 at Σ 70° (docs/own_gear_set.md): :func:`with_generated_gear` develops the
+    generated gear where a Formate design that does not fail (:func:`failed_outcome`)
+    misses one of these targets.
+    """
+    full = getattr(result.best, "full", None)
+    if full is None:
+        return ""
+    metrics = getattr(result.best, "metrics", None) or {}
+    out = []
+    for name in PATTERN_TARGETS:
+        if not float(full[1].get(name, 0.0)) > 0.0:
+            continue
+        value = _light_value(metrics, name)
+        out.append(_PATTERN_WORDS[name] + (f" {value:.2f}" if math.isfinite(value) else ""))
+    return ", ".join(out)
+
+
+def _light_value(metrics: Mapping[str, Any], name: str) -> float:
+    """The light torque's pattern length or centre of ``metrics`` [1] for a target of
+    :data:`PATTERN_TARGETS` (NaN for a clearance or a metric not known:
+    :func:`pattern_missed`)."""
+    def light(key: str) -> float:
+        values = np.asarray(metrics.get(key, (math.nan,)), float).ravel()
+        return float(values[0]) if values.size else math.nan
+
+    if name == "length":
+        return light("pattern_heel_u") - light("pattern_toe_u")
+    if name in ("centre_u", "centre_v"):
+        return light("pattern_" + name)
+    return math.nan
 
 
 def _verdict_fails(result: Any) -> str:
@@ -567,9 +650,10 @@ def _carried(result: Any) -> tuple[float, float]:
 
 def with_generated_gear(run: Callable[[Any], Any], basic: Any,
                         say: Callable[[str], None] | None = None) -> Any:
-    """A development of ``basic`` (``run(basic)``) and, where its outcome fails with a
-    Formate gear that ``gear_process = "auto"`` could have generated, the development
-    with ``gear_process = "Generate"``, the better of the two kept.
+    """A development of ``basic`` (``run(basic)``) and, where its outcome fails or misses a
+    drive pattern target with a Formate gear that ``gear_process = "auto"`` could have
+    generated, the development with ``gear_process = "Generate"``, the better of the two
+    kept.
 
     Parameters
     ----------
@@ -589,8 +673,12 @@ def with_generated_gear(run: Callable[[Any], Any], basic: Any,
         not ``"auto"`` or the pair not one ``"auto"`` generates
         (:func:`geometry.synthesis.case_synthesis.gear_processes`: face milled, δ2 below
         :data:`~geometry.synthesis.case_synthesis.FORMATE_PITCH_ANGLE_LIMIT`), or where
-        its outcome does not fail (:func:`failed_outcome`); else the better of the two
-        (:func:`better_outcome`), its ``gear_process_text`` saying which and why. Where
+        its outcome neither fails (:func:`failed_outcome`) nor misses a drive pattern
+        target (:func:`pattern_missed`); else the better of the two
+        (:func:`better_outcome`), its ``gear_process_text`` saying which and why. The
+        generated development is given the torque below which it cannot win
+        (``outclassed_below=``: :func:`outclassing_torque` after a failed outcome,
+        :func:`kept_torque` after a pattern miss). Where
         the Formate development stops on a foreseen cut (:class:`CutForeseen`), the
         generated gear's design where it does not fail; else the Formate gear is developed
         in full and the two ranked as above (the same design kept as without the stop,
@@ -630,42 +718,91 @@ def with_generated_gear(run: Callable[[Any], Any], basic: Any,
         return first
     rated = with_design_torque(first.case, basic.options.design_torque)[1]
     why = failed_outcome(first, rated)
-    if not why:
+    missed = "" if why else pattern_missed(first)
+    if not why and not missed:
         return first
-    below = outclassing_torque(first, rated)
+    # where the Formate design fails nothing but misses its drive pattern, a generated
+    # design lowered below its torque ranks below it (kept_torque)
+    below = outclassing_torque(first, rated) if why else kept_torque(first)
+    state = (f"fails ({why})" if why else
+             f"fails nothing but misses its drive pattern targets ({missed})")
     if second is None or (isinstance(second, Outclassed)
-                          and not float(first.torque[1]) > second.torque):
+                          and not (float(first.torque[1]) > second.torque
+                                   and (bool(why) or math.isfinite(below)))):
         # (a generated development stopped below the Formate's bound, not below its design
         # torque: developed again as it is without the foresight)
         if second is None:
-            say(f"development: the Formate gear's design fails ({why}); developing the pair "
+            say(f"development: the Formate gear's design {state}; developing the pair "
                 "with a generated gear too (gear_process 'auto')")
         second = _developed(run, _generated(basic), below)
     if isinstance(second, Outclassed):
-        text = (f"Gear process (auto): Formate. The Formate gear's developed design fails "
-                f"({why}) at {plain_number(first.torque[1])} N m; the generated gear's development "
+        text = (f"Gear process (auto): Formate. The Formate gear's developed design {state} "
+                f"at {plain_number(first.torque[1])} N m; the generated gear's development "
                 f"was stopped where its design torque fell to {plain_number(second.torque)} N m, "
                 f"below the Formate gear's (it is only lowered from there: "
-                "contact.optimize.development_process.outclassing_torque); kept the Formate "
+                "contact.optimize.development_process."
+                + ("outclassing_torque" if why else "kept_torque") + "); kept the Formate "
                 "gear " + _RULE)
         say("development: " + text)
         return dataclasses.replace(first, gear_process_text=text)
     if isinstance(second, InputError):
         log.info("development: the generated gear has no developed design: %s", second)
         return dataclasses.replace(first, gear_process_text=(
-            f"Gear process (auto): Formate; its design fails ({why}), the generated gear "
+            f"Gear process (auto): Formate; its design {state}, the generated gear "
             f"was developed too and failed ({second})."))
     kept, which = better_outcome(first, second, rated)
     other = failed_outcome(second, rated)
     text = (f"Gear process (auto): {'generated' if which == 'second' else 'Formate'}. The "
-            f"Formate gear's developed design fails ({why}) at {plain_number(first.torque[1])} N "
+            f"Formate gear's developed design {state} at {plain_number(first.torque[1])} N "
             f"m; the generated gear's "
             + (f"fails too ({other})" if other else "does not fail")
-            + f" at {plain_number(second.torque[1])} N m; kept the "
-            + ("generated" if which == "second" else "Formate")
+            + f" at {plain_number(second.torque[1])} N m"
+            + _generated_pattern_said(second, why)
+            + "; kept the " + ("generated" if which == "second" else "Formate")
             + " gear " + _RULE)
     say("development: " + text)
     return dataclasses.replace(kept, gear_process_text=text)
+
+
+def kept_torque(first: Any) -> float:
+    """[N·m] The design torque below which a generated development cannot rank above a
+    Formate design ``first`` that fails nothing (:func:`better_outcome`), NaN where there
+    is none: ``first``'s design torque where its LTE p-p keeps ``ltca run``'s limit
+    (:func:`lte_over` empty), else NaN.
+
+    Parameters
+    ----------
+    first : DevelopmentResult
+        A design :func:`failed_outcome` finds nothing in; its ``torque`` and what
+        :func:`lte_over` reads are read.
+
+    Returns
+    -------
+    float — [N·m]
+
+    Notes
+    -----
+    :func:`better_outcome` ranks by (failed, LTE over the limit up to the other's torques,
+    −design torque, objective). ``first`` fails nothing and keeps the LTE limit at every
+    torque, so it ranks (False, False, −T1, ·); a second design at T2 < T1 ranks at best
+    (False, False, −T2, ·), below it. The development only lowers its design torque once
+    it is lowered (:func:`outclassing_torque`), so it stops there (:class:`Outclassed`),
+    as after a cut. Where ``first`` breaks the LTE limit, a second design that keeps it at
+    a lower torque ranks above it: no stop. Source: issue 71 (Round 40's FM 20x31 at
+    Σ 70°, docs/own_gear_set.md).
+    """
+    return math.nan if lte_over(first) else float(first.torque[1])
+
+
+def _generated_pattern_said(second: Any, why: str) -> str:
+    """Where the generated gear was developed for the Formate's drive pattern (``why``
+    empty): whether it meets those targets, in words (:func:`with_generated_gear`)."""
+    if why:
+        return ""
+    missed = pattern_missed(second)
+    return (f", missing {missed}" if missed else
+            ", its drive pattern targets met" if getattr(second.best, "full", None) is not None
+            else "")
 
 
 def _generated(basic: Any) -> Any:

@@ -340,7 +340,8 @@ class SynthesisOptions:
         pitch angle δ2 is at least
         :data:`geometry.synthesis.case_synthesis.FORMATE_PITCH_ANGLE_LIMIT` or the gear is
         face hobbed, Generate below it where the Formate synthesis has no solution, and,
-        under the development, where the Formate gear's developed design fails:
+        under the development, where the Formate gear's developed design fails or misses
+        a drive pattern target:
         :func:`contact.optimize.development_process.with_generated_gear`); pinion
         ``"Generate"``.
     cutter_radius : float or None — [mm]
