@@ -56,7 +56,7 @@ from geometry.core.errors import raise_if_interrupted
 
 log = logging.getLogger("contact.optimize.development")
 
-__all__ = ["REFUTED_KEYS", "REFUTED_STOPS", "confirmer"]
+__all__ = ["REFUTED_KEYS", "REFUTED_STOPS", "confirmer", "refuted_share"]
 
 #: the targets on which a check at the default sampling refutes a coarse "all met" stop:
 #: the loads at the flank's edges, which the coarse search's case (no tip planes) and its
@@ -147,7 +147,7 @@ def confirmer(targets: DevelopmentTargets, setup: Mapping[str, Any], teeth: Kept
                 "search's stop confirmed")
             return None
         refuted.append(e.index)
-        shares = ", ".join(f"{k} {100.0 * _share(checked.metrics, k):.1f} %" for k in missed)
+        shares = ", ".join(f"{k} {100.0 * refuted_share(checked.metrics, k):.1f} %" for k in missed)
         say(f"  check of {what} {e.index + 1} at the default sampling: {line}; its coarse "
             f"'all targets met' refuted ({shares} as written: the coarse search's case has no "
             f"tip planes and 8 rolls): the search goes on "
@@ -158,7 +158,7 @@ def confirmer(targets: DevelopmentTargets, setup: Mapping[str, Any], teeth: Kept
     return confirm
 
 
-def _share(metrics: Mapping[str, Any], key: str) -> float:
+def refuted_share(metrics: Mapping[str, Any], key: str) -> float:
     """The share [1] a refuted target reads: the plastic share's worst torque, the edge
     share's at the design torque (as :func:`~contact.optimize.development_targets.
     development_score` scores them)."""
