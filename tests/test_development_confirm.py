@@ -13,6 +13,8 @@ wall clock.
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 from development_stand_ins import FLANK_GRID, metrics
 
@@ -196,3 +198,93 @@ def test_a_bearing_met_is_confirmed_where_the_relief_stage_reaches_it(monkeypatc
     assert asked == [] and evals[-1].full[2]
     e = evaluate(values, "relief", lambda: "case", 36, ())
     assert asked == [0] and not e.met and e.objective == 200.0 and len(evals) == 1
+
+
+# --- the coast flank's search (branch coast104) -------------------------------------------
+
+DESIGNS = Path(__file__).parent / "data" / "designs"
+
+
+def _coast_search(monkeypatch, refuted_below: float):
+    """``coast_development`` of the passenger-car hypoid (coast flank convex) with
+    stand-ins: the synthesis returns the basic design (``placed`` and the coarse ``make``
+    alike), the coarse analysis (8 rolls, no tip planes) meets every target on every
+    design, and the check at the default sampling (CHECK_LTCA) reads the case as written:
+    1.0 % of the design torque on plastic segments (the 10x51's design 6) where the coast
+    root relief is below ``refuted_below`` [mm] and on the flank as synthesised (so that it
+    is developed), every target met otherwise. Returns the outcome, the check's analyses
+    at the development's torques as (root relief [mm] or None for the flank as synthesised,
+    pinion key, the coast flank's options' repr) and the lines."""
+    import geometry.synthesis.case_synthesis as cs
+    from contact.optimize import development_coast_flank as dcoast
+    from geometry.synthesis.basic_design import load_basic
+
+    checks: list[tuple] = []
+
+    def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
+             flank="drive"):
+        assert flank == "coast"
+        if options is not CHECK_LTCA:
+            return metrics(), _grid()
+        relief = None if isinstance(case, str) else case.options.convex.root_relief
+        if list(torques) == [50.0, 330.0]:  # (not the LTE between the torques)
+            checks.append((relief, tuple(pinion_key),
+                           None if isinstance(case, str) else repr(case.options.convex)))
+        if misalignment is None and (relief is None or relief < refuted_below):
+            return metrics(plastic_share=[0.0, 0.010]), _grid()
+        return metrics(), _grid()
+
+    monkeypatch.setattr(development_evaluate, "analyse_design", fake)
+    monkeypatch.setattr(cs, "synthesize", lambda b, memo=None, **kw: (b, None))
+    basic = load_basic(DESIGNS / "pc_hypoid_10x43.toml")
+    drive = DevelopmentEvaluation(0, {"tip_relief": 20.0}, metrics(), 0.0, {}, True, "",
+                                  0.0, "as synthesised", checked=True)
+    setup = {"torques": [50.0, 330.0], "centre_v": 0.6, "source": "s", "lowered": False,
+             "pressure_limit": STRENGTH}
+    lines: list[str] = []
+    out = dcoast.coast_development(basic, drive, DevelopmentTargets(coast_max_evaluations=20),
+                                   setup, None, {}, lines.append, lambda b: b)
+    return out, checks, lines
+
+
+def test_the_coast_search_does_not_stop_on_a_coarse_all_met_the_check_refutes(monkeypatch):
+    """The coast flank's search (development_coast_flank.coast_development) stopped at its
+    first coarse "all targets met" as the drive's did before plastic102: here every design
+    is met on the coarse read and the check refutes those with a coast root relief below
+    a level no design of the search reaches (1 mm), so before the rule the search ended at
+    its first design (1 evaluation); now each coarse "all met" is checked, refuted at
+    most REFUTED_STOPS times, and the search ends at the next one (REFUTED_STOPS + 1
+    designs). The refuted designs carry the check's objective (plastic 1.0 %: a
+    shortfall of 10 units of 0.1 %), and the check's analyses are keyed as the coast
+    check's (the drive bearing's key, then "coast"), so ``checked_best`` reads them back
+    from its memo: each design analysed once at the default sampling (counted calls)."""
+    out, checks, lines = _coast_search(monkeypatch, refuted_below=1.0)
+    refuted = [e for e in out.evaluations if e.shortfalls.get("plastic", 0.0) > 0.0]
+    # the first design met the bearing stage's fewer targets (not confirmed: no plastic,
+    # no edge scored there); its relief-stage copy, designs 2 and 3 refuted; design 4's
+    # coarse "all met" past REFUTED_STOPS refutations stops the search, as before
+    assert len(out.evaluations) == REFUTED_STOPS + 1
+    assert out.evaluations[0].stage == "bearing" and out.evaluations[-1].met
+    assert len([x for x in lines if "refuted" in x]) == REFUTED_STOPS
+    assert len(refuted) == REFUTED_STOPS - 1 and not any(e.met for e in refuted)
+    for e in refuted:
+        assert e.shortfalls["plastic"] == pytest.approx(10.0)  # (1.0 - 0) % / 0.1 %
+    said = [x for x in lines if "its coarse 'all targets met'" in x]
+    assert len(said) == REFUTED_STOPS and all("refuted (plastic 1.0 %" in x for x in said)
+    # the check's analyses: the flank as synthesised, then the designs of the search and
+    # the check steps' variants, under the coast's key (the drive bearing's key, here
+    # empty: a tip relief only, then "coast"), so that checked_best reads each confirmed
+    # design back from its memo: none analysed twice (counted calls)
+    searched = [c for c in checks if c[0] is not None]
+    assert searched and all(c[1][:1] == ("coast",) for c in searched)
+    flanks = [c[2] for c in searched]
+    assert len(flanks) == len(set(flanks))
+
+
+def test_the_coast_search_stops_on_a_confirmed_all_met(monkeypatch):
+    """The check confirms the coast search's coarse "all met" (every design met as
+    written): the search stops at its first design, as before, the line saying so."""
+    out, _, lines = _coast_search(monkeypatch, refuted_below=-1.0)
+    assert len(out.evaluations) == 1 and out.evaluations[0].met
+    assert any("check of coast design 1 at the default sampling" in x
+               and "stop confirmed" in x for x in lines)

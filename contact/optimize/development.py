@@ -168,6 +168,7 @@ from contact.optimize.development_coast_light_edge import (
 )
 from contact.optimize.development_coast_lte_torque import coast_lte_torque
 from contact.optimize.development_confirm import confirmer
+from contact.optimize.development_drive_at_cut import redeveloped_drive_at_cut
 from contact.optimize.development_edge_peak import checked_edge_peak
 from contact.optimize.development_evaluate import (  # noqa: F401
     CHECK_LTCA,
@@ -200,6 +201,7 @@ from contact.optimize.development_result import (  # noqa: F401
 )
 from contact.optimize.development_root import (
     at_decided_level,
+    capacity_holds,
     design_torque_kept,
     given_torque_root,
 )
@@ -533,6 +535,9 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
                          confirm=confirmer(targets, setup, teeth, say, placed))
     ok = search_flank(evaluate, evals, lambda values: with_flank_options(basic, flank, values),
                       make, targets, start, basic, targets.max_evaluations)
+    # the torque the search scored its designs at (a cut below it may ask the drive's
+    # plastic and edge again there: development_drive_at_cut)
+    searched_at = float(setup.get("torques", (math.nan, math.nan))[1])
     if not ok:
         reasons = "; ".join(sorted({e.reason for e in evals}))
         try:  # the basic data as given: its own error is the one to fix, not the bounds
@@ -677,7 +682,11 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
         # no lower torque keeps the limit with this bearing: the drive developed again at
         # the window's upper end, as before a cut, kept where both flanks keep the limit
         # and its own capacity holds there
-        redone = _redeveloped_after_cut(window, basic, root_text, say, rerun)
+        # else, where the design torque was cut well below the torque the search ran at,
+        # the drive's plastic and edge asked there, the drive developed again where it
+        # misses them (coast_at_its_torque on the drive: development_drive_at_cut)
+        redone = _redone_after_cut(window, basic, root_text, say, rerun, best, setup,
+                                   searched_at)
         if redone is not None:
             return dataclasses.replace(redone, seconds=cpu_seconds() - t0)
     else:
@@ -1214,6 +1223,22 @@ def _pitting_tried_said(setup: dict[str, Any], root_text: str) -> None:
     ``setup["pitting_tried"]`` where that is set (:func:`develop`, after the cut)."""
     if root_text and setup.get("pitting_tried") and "pitting" in setup["source"]:
         setup["source"] = f"{setup['source']}; {setup['pitting_tried']}"
+
+
+def _redone_after_cut(window: dict[str, Any], basic: BasicDesign, root_text: str,
+                      say: Callable[[str], None], rerun: Callable[..., DevelopmentResult],
+                      best: DevelopmentEvaluation, setup: dict[str, Any],
+                      searched_at: float) -> DevelopmentResult | None:
+    """The drive developed again after a capacity cut: in the LTE window where the window
+    rule found no torque (:func:`_redeveloped_after_cut`), else at the cut torque where it
+    is below 0.9 of ``searched_at`` [N·m] (the torque the drive's search ran at) and the
+    drive misses its plastic or edge target there
+    (:func:`~contact.optimize.development_drive_at_cut.redeveloped_drive_at_cut`, its
+    capacity checked by :func:`~contact.optimize.development_root.capacity_holds`); None
+    where neither is kept."""
+    return (_redeveloped_after_cut(window, basic, root_text, say, rerun)
+            or redeveloped_drive_at_cut(best, setup, searched_at, say, rerun,
+                                        functools.partial(capacity_holds, say=say)))
 
 
 def _redeveloped_after_cut(window: dict[str, Any], basic: BasicDesign, root_text: str,

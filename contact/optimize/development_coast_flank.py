@@ -35,6 +35,7 @@ from contact.optimize.development_check import (
     checked_long,
 )
 from contact.optimize.development_coast import CoastCapacity, CoastCheck, coast_capacity
+from contact.optimize.development_confirm import confirmer
 from contact.optimize.development_evaluate import (
     CHECK_LTCA,
     MEMO_DECIMALS,
@@ -585,18 +586,23 @@ def coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
             "designs, coarse LTCA)")
     evals: list[DevelopmentEvaluation] = []
     prefix = (*drive_key, "coast")
-    evaluate = evaluator(developed, targets, setup, teeth, say, evals, "coast", n_max,
-                         key_prefix=prefix)
 
     def basic_of(values: dict[str, float]) -> BasicDesign:
         return with_flank_options(developed, side, values)
 
+    def placed(values):
+        return synthesize(basic_of(values), memo=memo)[0]
+
+    # a coarse "all met" stop confirmed at the default sampling before it ends the coast
+    # search, as the drive's (development_confirm; the check below reads it back: the same
+    # `placed`, the same kept-teeth key)
+    evaluate = evaluator(developed, targets, setup, teeth, say, evals, "coast", n_max,
+                         key_prefix=prefix,
+                         confirm=confirmer(targets, setup, teeth, say, placed, side="coast",
+                                           n_max=n_max, key_prefix=prefix))
     chosen = synthesised
     if search_flank(evaluate, evals, basic_of, make, targets, start, developed, n_max,
                     COAST_BEARING_DESIGNS):
-        def placed(values):
-            return synthesize(basic_of(values), memo=memo)[0]
-
         best = checked_best(evals, targets, setup, teeth, say, placed, side="coast",
                             key_prefix=prefix, n_max=n_max, slopes=evaluate.slopes)
         # a pattern off its centre along the face: the coast flank's own M placed off the

@@ -56,7 +56,7 @@ from geometry.core.errors import raise_if_interrupted
 
 log = logging.getLogger("contact.optimize.development")
 
-__all__ = ["REFUTED_KEYS", "REFUTED_STOPS", "confirmer"]
+__all__ = ["REFUTED_KEYS", "REFUTED_STOPS", "confirmer", "refuted_share"]
 
 #: the targets on which a check at the default sampling refutes a coarse "all met" stop:
 #: the loads at the flank's edges, which the coarse search's case (no tip planes) and its
@@ -75,7 +75,7 @@ REFUTED_STOPS = 3
 def confirmer(targets: DevelopmentTargets, setup: Mapping[str, Any], teeth: KeptTeeth,
               say: Callable[[str], None],
               placed: Callable[[Mapping[str, float]], Case], *, side: str = "drive",
-              n_max: int | None = None
+              n_max: int | None = None, key_prefix: tuple = ()
               ) -> Callable[[DevelopmentEvaluation], DevelopmentEvaluation | None]:
     """The confirmation of a coarse "all targets met" stop, for
     :func:`~contact.optimize.development_evaluate.evaluator`'s ``confirm``.
@@ -97,6 +97,11 @@ def confirmer(targets: DevelopmentTargets, setup: Mapping[str, Any], teeth: Kept
         The flank (``"drive"`` or ``"coast"``).
     n_max : int, optional
         The budget the lines name (default ``targets.max_evaluations``).
+    key_prefix : tuple, optional
+        The kept pinion teeth's key before the design's bearing (:class:`KeptTeeth`): the
+        coast search's (the drive bearing's key and ``"coast"``), as its check's
+        (:func:`~contact.optimize.development_check.checked_best`'s ``key_prefix``), so
+        that the check reads the confirmation back from its memo; default () (the drive's).
 
     Returns
     -------
@@ -127,7 +132,8 @@ def confirmer(targets: DevelopmentTargets, setup: Mapping[str, Any], teeth: Kept
             if values != e.values:  # the check analyses another design: not this one's
                 return None
             _, ms, grid = checked_analysis(setup, placed, values, teeth,
-                                           bearing_key(values), side, case=case)
+                                           (*key_prefix, *bearing_key(values)), side,
+                                           case=case)
         except Exception as exc:  # the check's own failure is the check's to say
             raise_if_interrupted(exc)
             log.info("development: confirmation of %s %d failed: %s", what, e.index + 1, exc)
@@ -141,7 +147,7 @@ def confirmer(targets: DevelopmentTargets, setup: Mapping[str, Any], teeth: Kept
                 "search's stop confirmed")
             return None
         refuted.append(e.index)
-        shares = ", ".join(f"{k} {100.0 * _share(checked.metrics, k):.1f} %" for k in missed)
+        shares = ", ".join(f"{k} {100.0 * refuted_share(checked.metrics, k):.1f} %" for k in missed)
         say(f"  check of {what} {e.index + 1} at the default sampling: {line}; its coarse "
             f"'all targets met' refuted ({shares} as written: the coarse search's case has no "
             f"tip planes and 8 rolls): the search goes on "
@@ -152,7 +158,7 @@ def confirmer(targets: DevelopmentTargets, setup: Mapping[str, Any], teeth: Kept
     return confirm
 
 
-def _share(metrics: Mapping[str, Any], key: str) -> float:
+def refuted_share(metrics: Mapping[str, Any], key: str) -> float:
     """The share [1] a refuted target reads: the plastic share's worst torque, the edge
     share's at the design torque (as :func:`~contact.optimize.development_targets.
     development_score` scores them)."""
