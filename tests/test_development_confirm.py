@@ -288,3 +288,35 @@ def test_the_coast_search_stops_on_a_confirmed_all_met(monkeypatch):
     assert len(out.evaluations) == 1 and out.evaluations[0].met
     assert any("check of coast design 1 at the default sampling" in x
                and "stop confirmed" in x for x in lines)
+
+
+def test_the_check_does_not_print_a_confirmed_design_line_twice(monkeypatch):
+    """The 10x51's log printed design 13's check line twice: once by the confirmation of
+    the coarse stop, once by checked_best reading the same analysis back. The
+    confirmation records the design it said (``said_lines``); checked_best then says a
+    short line for it (same analysis, same numbers), and the full line for a design the
+    confirmation did not check."""
+    from contact.optimize.development_check import checked_best
+
+    _checked_law(monkeypatch)  # the check meets every target: the stop confirmed
+    lines: list[str] = []
+    said: set[int] = set()
+    setup = dict(SETUP)
+    confirm = confirmer(DevelopmentTargets(), setup, None, lines.append,
+                        lambda values: "case as written", said_lines=said)
+    e = _design(0.0)
+    assert confirm(e) is None and said == {e.index}
+    assert lines[-1].endswith("the coarse search's stop confirmed")
+    first = len(lines)
+    best = checked_best([e], DevelopmentTargets(), setup, None, lines.append,
+                        lambda values: "case as written", said_lines=said)
+    assert best.index == e.index
+    checks = [s for s in lines[first:] if s.startswith(f"  check of design {e.index + 1}")]
+    assert checks == [f"  check of design {e.index + 1} at the default sampling: as "
+                      "confirmed above"]
+    # without the record (a design the confirmation did not check): the full line
+    lines.clear()
+    checked_best([e], DevelopmentTargets(), dict(SETUP), None, lines.append,
+                 lambda values: "case as written")
+    full = [s for s in lines if s.startswith(f"  check of design {e.index + 1}")]
+    assert len(full) == 1 and "pattern" in full[0] and "as confirmed" not in full[0]

@@ -530,9 +530,11 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
     # the check's `placed` (its memo keyed by it): a coarse "all met" stop confirmed at
     # the default sampling before it ends the search (development_confirm)
     placed = functools.partial(placed_case, basic, flank, memo)
+    confirmed_lines: set[int] = set()  # the designs whose check line the confirmation said
     evaluate = evaluator(basic, targets, setup, teeth, say, evals, "drive",
                          targets.max_evaluations, torque_name=torque_name,
-                         confirm=confirmer(targets, setup, teeth, say, placed))
+                         confirm=confirmer(targets, setup, teeth, say, placed,
+                                           said_lines=confirmed_lines))
     ok = search_flank(evaluate, evals, lambda values: with_flank_options(basic, flank, values),
                       make, targets, start, basic, targets.max_evaluations)
     # the torque the search scored its designs at (a cut below it may ask the drive's
@@ -570,7 +572,7 @@ def develop(basic: BasicDesign | str | os.PathLike[str], *,
     c_check = cpu_seconds()
     others: list = []  # the checked designs not chosen: their steps may repair them
     best = checked_best(evals, targets, setup, teeth, say, placed, slopes=evaluate.slopes,
-                        others=others)
+                        others=others, said_lines=confirmed_lines)
     steps = functools.partial(check_steps, targets=targets, setup=setup, teeth=teeth,
                               say=say, placed=placed, level=start[TE_NAME],
                               slopes=evaluate.slopes)

@@ -59,7 +59,7 @@ from __future__ import annotations
 import dataclasses
 import logging
 import math
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Collection, Mapping
 from typing import Any
 
 import numpy as np
@@ -542,7 +542,8 @@ def checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTargets
                  placed: Callable[[Mapping[str, float]], Case] | None = None, *,
                  side: str = "drive", key_prefix: tuple = (), n_max: int | None = None,
                  slopes: Mapping[tuple, float] | None = None,
-                 others: list[DevelopmentEvaluation] | None = None) -> DevelopmentEvaluation:
+                 others: list[DevelopmentEvaluation] | None = None,
+                 said_lines: Collection[int] = ()) -> DevelopmentEvaluation:
     """The chosen design: the best of the coarse search checked in turn at
     :data:`CHECK_LTCA` (at most :data:`VERIFIED_DESIGNS`) until one meets every target
     there, then the best by its checked score (every target met first). ``placed``: the
@@ -587,8 +588,12 @@ def checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTargets
             log.info("development check of %s %d failed: %s", what, e.index + 1, exc)
             return False
         checked.append(scored(e, ms, grid, targets, setup["centre_v"], checked=True))
-        say(f"  check of {what} {e.index + 1} at the default sampling: "
-            + evaluation_line(checked[-1], n_max).split(": ", 2)[-1])
+        if e.index in said_lines:  # its line printed by the confirmation, same analysis
+            say(f"  check of {what} {e.index + 1} at the default sampling: as confirmed "
+                "above")
+        else:
+            say(f"  check of {what} {e.index + 1} at the default sampling: "
+                + evaluation_line(checked[-1], n_max).split(": ", 2)[-1])
         return bool(checked[-1].met)
 
     for e in ranked[:VERIFIED_DESIGNS]:

@@ -596,15 +596,18 @@ def coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
     # a coarse "all met" stop confirmed at the default sampling before it ends the coast
     # search, as the drive's (development_confirm; the check below reads it back: the same
     # `placed`, the same kept-teeth key)
+    confirmed_lines: set[int] = set()  # the designs whose check line the confirmation said
     evaluate = evaluator(developed, targets, setup, teeth, say, evals, "coast", n_max,
                          key_prefix=prefix,
                          confirm=confirmer(targets, setup, teeth, say, placed, side="coast",
-                                           n_max=n_max, key_prefix=prefix))
+                                           n_max=n_max, key_prefix=prefix,
+                                           said_lines=confirmed_lines))
     chosen = synthesised
     if search_flank(evaluate, evals, basic_of, make, targets, start, developed, n_max,
                     COAST_BEARING_DESIGNS):
         best = checked_best(evals, targets, setup, teeth, say, placed, side="coast",
-                            key_prefix=prefix, n_max=n_max, slopes=evaluate.slopes)
+                            key_prefix=prefix, n_max=n_max, slopes=evaluate.slopes,
+                            said_lines=confirmed_lines)
         # a pattern off its centre along the face: the coast flank's own M placed off the
         # mean cone distance (the drive flank's M stays where it is)
         best = checked_centre_u(best, targets, setup, teeth, say, placed, flank="coast",

@@ -75,7 +75,8 @@ REFUTED_STOPS = 3
 def confirmer(targets: DevelopmentTargets, setup: Mapping[str, Any], teeth: KeptTeeth,
               say: Callable[[str], None],
               placed: Callable[[Mapping[str, float]], Case], *, side: str = "drive",
-              n_max: int | None = None, key_prefix: tuple = ()
+              n_max: int | None = None, key_prefix: tuple = (),
+              said_lines: set[int] | None = None
               ) -> Callable[[DevelopmentEvaluation], DevelopmentEvaluation | None]:
     """The confirmation of a coarse "all targets met" stop, for
     :func:`~contact.optimize.development_evaluate.evaluator`'s ``confirm``.
@@ -102,6 +103,10 @@ def confirmer(targets: DevelopmentTargets, setup: Mapping[str, Any], teeth: Kept
         coast search's (the drive bearing's key and ``"coast"``), as its check's
         (:func:`~contact.optimize.development_check.checked_best`'s ``key_prefix``), so
         that the check reads the confirmation back from its memo; default () (the drive's).
+    said_lines : set of int, optional
+        Filled with the index of each design whose check line this confirmation printed
+        (given to :func:`~contact.optimize.development_check.checked_best` as its
+        ``said_lines``, so that the check does not print the same line again).
 
     Returns
     -------
@@ -142,6 +147,8 @@ def confirmer(targets: DevelopmentTargets, setup: Mapping[str, Any], teeth: Kept
         short = checked.full[1]
         missed = [k for k in REFUTED_KEYS if short.get(k, 0.0) > 0.0]
         line = evaluation_line(checked, n_max).split(": ", 2)[-1]
+        if said_lines is not None:
+            said_lines.add(e.index)
         if not missed:
             say(f"  check of {what} {e.index + 1} at the default sampling: {line}; the coarse "
                 "search's stop confirmed")
