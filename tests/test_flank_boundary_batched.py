@@ -5,10 +5,10 @@ its boundary lines together (one call per field group) instead of line by line. 
 splines are evaluated point by point (each place's own knot cell; FITPACK's ``ev`` or the
 compiled piecewise-polynomial kernel), so the batch must give every sample the numbers the
 per-line calls gave, bit for bit: the reference below is the per-line loop the library had
-(``_piece``, with the lines it was given), kept here and not in the library. Checked on
-two designs whose boundaries have all four kinds of line, the default case's and the
-face-milled 11×41 of the edge tests, at two segment lengths; on the NumPy kernels
-(``LTCA_KERNELS=numpy``: FITPACK) too.
+(``_piece``, applied to the library's own boundary lines), kept here and not in the
+library. Checked on two designs whose boundaries have all four kinds of line, the default
+case's and the face-milled 11×41 of the edge tests, at two segment lengths; on the NumPy
+kernels (``LTCA_KERNELS=numpy``: FITPACK) too.
 """
 
 from __future__ import annotations
@@ -18,20 +18,11 @@ import math
 from functools import cache
 from pathlib import Path
 
-import contourpy
 import numpy as np
 import pytest
 
 from contact.catalogue import SEED_TABLE_3_1, bundled_case_path
-from contact.ltca.edges import (
-    _CONTOUR_GRID,
-    _FINE,
-    EDGE_KINDS,
-    FlankBoundary,
-    _margin_crossing,
-    _onto_grid,
-    flank_boundary,
-)
+from contact.ltca.edges import EDGE_KINDS, FlankBoundary, _boundary_lines, flank_boundary
 from contact.utca import EaseOffFields
 from contact.utca.easeoff import ease_off
 from geometry.case import load_case
@@ -77,36 +68,11 @@ def _piece(f, kind: int, uu: np.ndarray, vv: np.ndarray, step: float):
             f.gap_at(us, vs)[idx], val[:, 2][idx], slope[idx], xyz[idx], nrm[idx])
 
 
-def _runs(ok: np.ndarray) -> list[tuple[int, int]]:
-    """(first, last) index of each run of True: the library's former code."""
-    edge = np.diff(np.r_[0, ok.astype(np.int8), 0])
-    return list(zip(np.flatnonzero(edge == 1), np.flatnonzero(edge == -1) - 1, strict=True))
-
-
 def _per_line(f, step: float) -> FlankBoundary:
-    """The boundary by the library's former code, verbatim: its lines, then line by line
-    (``np.r_`` where the library now concatenates)."""
-    u0, u1, v0, v1 = (float(x) for x in (f.u[0], f.u[-1], f.v[0], f.v[-1]))
-    lines: list[tuple[int, np.ndarray, np.ndarray]] = []
-    s = np.linspace(0.0, 1.0, _FINE)
-    for kind, uu, vv in (
-        (0, u0 + (u1 - u0) * s, np.full(_FINE, v1)),
-        (1, np.full(_FINE, u1), v0 + (v1 - v0) * s),
-        (2, np.full(_FINE, u0), v0 + (v1 - v0) * s),
-    ):
-        m = f.margin.ev(uu, vv)
-        for a, b in _runs(f.good_cell(uu, vv) & (m >= 0.0)):
-            ua, va = _margin_crossing(uu, vv, m, a, a - 1)
-            ub, vb = _margin_crossing(uu, vv, m, b, b + 1)
-            lines.append((kind, np.r_[ua, uu[a + 1:b], ub], np.r_[va, vv[a + 1:b], vb]))
-    ug = np.linspace(u0, u1, _CONTOUR_GRID[0])
-    vg = np.linspace(v0, v1, _CONTOUR_GRID[1])
-    zg = f.margin(ug, vg).T  # (nv, nu)
-    for line in contourpy.contour_generator(ug, vg, zg).lines(0.0):
-        uu, vv = line[:, 0], line[:, 1]
-        for a, b in _runs(f.good_cell(_onto_grid(uu, f.u), _onto_grid(vv, f.v))):
-            if b > a:
-                lines.append((3, uu[a:b + 1], vv[a:b + 1]))
+    """The boundary by the library's former per-line evaluation (:func:`_piece`, the
+    reference) of the library's own lines (:func:`contact.ltca.edges._boundary_lines`:
+    the lines are not what the batch changed)."""
+    lines = _boundary_lines(f)
     pieces = [_piece(f, kind, uu, vv, step) for kind, uu, vv in lines]
     pieces = [p for p in pieces if p is not None]
     return FlankBoundary(*(np.concatenate(a) for a in zip(*pieces, strict=True)))
